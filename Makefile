@@ -1,0 +1,43 @@
+# Thin wrapper over CMake. `make demo` and `make test` work on a fresh Debian 12 machine as root.
+BUILD      ?= build
+SANITIZE_BUILD ?= build-sanitize
+JOBS       ?= $(shell nproc)
+PACKAGES   := cmake g++ make libopenvdb-dev libboost-iostreams-dev liblua5.4-dev libopenmesh-dev libvtk9-dev \
+              libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev python3-vtk9 xvfb xauth librsvg2-bin
+
+.PHONY: deps build demo test sanitize bench clean
+
+# Installs only what is missing: one dpkg query when everything is there.
+deps:
+	@missing=$$(for p in $(PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
+	  echo "installing:" $$missing; \
+	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+
+$(BUILD)/CMakeCache.txt:
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+
+build: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS)
+
+demo: deps build
+	rm -rf out
+	$(BUILD)/selfsim run examples/gallery.lua -o out
+	@echo "Open the .vtp files in out/ with ParaView, the .svg files with a browser."
+
+test: deps build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+sanitize: deps
+	cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSELFSIM_SANITIZE=ON
+	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
+	cd $(SANITIZE_BUILD) && ctest --output-on-failure -j $(JOBS) -LE viewer
+
+bench: deps
+	cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DSELFSIM_BENCH=ON
+	cmake --build build-bench -j $(JOBS)
+	build-bench/bench/selfsim_bench
+
+clean:
+	rm -rf $(BUILD) $(SANITIZE_BUILD) build-bench out

@@ -1,0 +1,105 @@
+// save(value, "file.ext", opts?) and param(name, default): the recipe's only ways out and in.
+#include <charconv>
+#include <cmath>
+
+#include "interpreter/bindings.h"
+#include "interpreter/curve_value.h"
+#include "interpreter/lua_support.h"
+#include "interpreter/options_reader.h"
+#include "interpreter/run_context.h"
+#include "kernels/io/save.h"
+
+namespace selfsim::interp {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The target inside the output folder, refusing anything that would land outside it.
+fs::path output_path(const fs::path& out_dir, const std::string& name) {
+  const fs::path rel = fs::path(name).lexically_normal();
+  if (name.empty() || rel.is_absolute() || rel.empty() || *rel.begin() == ".." || rel.filename().empty())
+    throw Error("path '" + name + "' is outside the output folder (give a relative file name such as 'curve.vtp')");
+  return out_dir / rel;
+}
+
+io::SaveOptions read_save_options(lua_State* L, int index) {
+  Options o(L, index);
+  io::SaveOptions s;
+  s.compress = o.boolean("compress", s.compress);
+  s.stroke = o.string("stroke", s.stroke);
+  s.stroke_width = o.number("stroke_width", s.stroke_width);
+  s.fill = o.string("fill", s.fill);
+  s.size = o.number("size", s.size);
+  o.finish();
+  if (!(s.stroke_width > 0)) throw Error("option 'stroke_width' must be positive");
+  if (!(s.size >= 16 && s.size <= 100000)) throw Error("option 'size' must be in [16, 100000] pixels");
+  return s;
+}
+
+int save(lua_State* L) {
+  return call_kernel(L, "save", [&] {
+    RunContext& run = RunContext::of(L);
+    const Polyline* c = test_curve(L, 1);
+    if (c == nullptr) throw Error("argument 1 must be a curve, got " + describe(L, 1));
+    if (lua_type(L, 2) != LUA_TSTRING) throw Error("argument 2 must be a file name, got " + describe(L, 2));
+    const std::string name = lua_tostring(L, 2);
+    const io::SaveOptions opt = read_save_options(L, 3);
+    const fs::path target = output_path(run.config.out_dir, name);
+    std::error_code ec;
+    fs::create_directories(target.parent_path(), ec);
+    if (ec) throw Error("cannot create folder '" + target.parent_path().string() + "': " + ec.message());
+    io::save_curve(*c, target, opt, run);
+    run.finish_bar();
+    run.saved.push_back(target.string() + " (" + std::to_string(c->points.size()) + " points)");
+    return 0;
+  });
+}
+
+// param(name, default): the --set value for name, read with the default's type, or the default.
+int param(lua_State* L) {
+  return call_kernel(L, "param", [&] {
+    RunContext& run = RunContext::of(L);
+    if (lua_type(L, 1) != LUA_TSTRING) throw Error("argument 1 must be a parameter name, got " + describe(L, 1));
+    const std::string name = lua_tostring(L, 1);
+    const int type = lua_type(L, 2);
+    if (type != LUA_TNUMBER && type != LUA_TSTRING && type != LUA_TBOOLEAN)
+      throw Error("default of '" + name + "' must be a number, string or boolean, got " + describe(L, 2));
+    run.used_params.insert(name);
+    const auto it = run.config.sets.find(name);
+    if (it == run.config.sets.end()) {
+      lua_pushvalue(L, 2);
+      return 1;
+    }
+    const std::string& text = it->second;
+    const char* first = text.data();
+    const char* last = first + text.size();
+    if (type == LUA_TSTRING) {
+      lua_pushlstring(L, text.data(), text.size());
+    } else if (type == LUA_TBOOLEAN) {
+      if (text != "true" && text != "false") throw Error("--set " + name + "=" + text + ": expected true or false");
+      lua_pushboolean(L, text == "true");
+    } else if (lua_isinteger(L, 2)) {
+      long long v = 0;
+      auto r = std::from_chars(first, last, v);
+      if (r.ec != std::errc() || r.ptr != last) throw Error("--set " + name + "=" + text + ": expected an integer");
+      lua_pushinteger(L, v);
+    } else {
+      double v = 0;
+      auto r = std::from_chars(first, last, v);
+      if (r.ec != std::errc() || r.ptr != last || !std::isfinite(v))
+        throw Error("--set " + name + "=" + text + ": expected a finite number");
+      lua_pushnumber(L, v);
+    }
+    return 1;
+  });
+}
+
+}  // namespace
+
+void open_io(lua_State* L) {
+  lua_register(L, "save", save);
+  lua_register(L, "param", param);
+}
+
+}  // namespace selfsim::interp

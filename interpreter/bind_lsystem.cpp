@@ -1,0 +1,150 @@
+// lsystem{ axiom, rules, angle, angles, start_angle, shrink, draw, move } -> grammar with methods
+// g:curve{ level, normalize }, g:string(level), g:count(level). A thin adapter over kernels/lsystem.
+#include "interpreter/bindings.h"
+#include "interpreter/curve_value.h"
+#include "interpreter/lua_support.h"
+#include "interpreter/options_reader.h"
+#include "interpreter/run_context.h"
+#include "kernels/lsystem/production_count.h"
+#include "kernels/lsystem/turtle.h"
+
+namespace selfsim::interp {
+
+namespace {
+
+using lsystem::Grammar;
+constexpr const char* grammar_type = "selfsim.LSystem";
+
+char symbol_key(lua_State* L, int index, const char* table) {
+  if (lua_type(L, index) != LUA_TSTRING || lua_rawlen(L, index) != 1)
+    throw Error(std::string("option '") + table + "' keys must be single symbols, got " + describe(L, index));
+  return lua_tostring(L, index)[0];
+}
+
+// Calls f(symbol) for each key of the table on top of the stack, with the value on top.
+template <class F>
+void each_symbol(lua_State* L, const char* table, F&& f) {
+  if (lua_type(L, -1) != LUA_TTABLE) throw Error(std::string("option '") + table + "' must be a table, got " + describe(L, -1));
+  lua_pushnil(L);
+  while (lua_next(L, -2) != 0) {
+    try {
+      f(symbol_key(L, -2, table));
+    } catch (...) {
+      lua_pop(L, 2);
+      throw;
+    }
+    lua_pop(L, 1);
+  }
+}
+
+Grammar read_grammar(lua_State* L, int index) {
+  Options o(L, index);
+  Grammar g;
+  if (!o.has("axiom")) throw Error("option 'axiom' is required");
+  g.axiom = o.string("axiom", "");
+  if (o.push("rules") != LUA_TNIL) {
+    each_symbol(L, "rules", [&](char s) {
+      if (lua_type(L, -1) != LUA_TSTRING)
+        throw Error(std::string("option 'rules': rule for '") + s + "' must be a string, got " + describe(L, -1));
+      g.rules[s] = lua_tostring(L, -1);
+    });
+  }
+  lua_pop(L, 1);
+  g.angle = o.number("angle", g.angle);
+  if (o.push("angles") != LUA_TNIL)
+    each_symbol(L, "angles", [&](char s) { g.angles[s] = finite_number(L, -1, std::string("option 'angles' value for '") + s + "'"); });
+  lua_pop(L, 1);
+  const int t = o.push("start_angle");
+  if (t == LUA_TTABLE) {
+    g.start_angles.clear();
+    for (lua_Integer i = 1; i <= static_cast<lua_Integer>(lua_rawlen(L, -1)); ++i) {
+      lua_rawgeti(L, -1, i);
+      const double a = finite_number(L, -1, "option 'start_angle' entry " + std::to_string(i));
+      lua_pop(L, 1);
+      g.start_angles.push_back(a);
+    }
+  } else if (t != LUA_TNIL) {
+    g.start_angles = {finite_number(L, -1, "option 'start_angle'")};
+  }
+  lua_pop(L, 1);
+  g.shrink = o.number("shrink", g.shrink);
+  g.draw = o.string("draw", g.draw);
+  g.move = o.string("move", g.move);
+  o.finish();
+  g.validate();
+  return g;
+}
+
+Grammar& self(lua_State* L) { return *static_cast<Grammar*>(luaL_checkudata(L, 1, grammar_type)); }
+
+// The level argument of g:string(n) / g:count(n).
+int level_argument(lua_State* L, int index) {
+  if (!lua_isinteger(L, index)) throw Error("level must be an integer, got " + describe(L, index));
+  const lua_Integer n = lua_tointeger(L, index);
+  if (n < 0 || n > lsystem::max_level)
+    throw Error("level must be an integer in [0, " + std::to_string(lsystem::max_level) + "], got " + std::to_string(n));
+  return static_cast<int>(n);
+}
+
+int grammar_curve(lua_State* L) {
+  Grammar& g = self(L);
+  return call_kernel(L, "curve", [&] {
+    RunContext& run = RunContext::of(L);
+    lsystem::CurveOptions opt;
+    opt.max_points = run.config.max_points;
+    if (lua_type(L, 2) == LUA_TNUMBER) {
+      opt.level = level_argument(L, 2);
+    } else {
+      Options o(L, 2);
+      if (!o.has("level")) throw Error("option 'level' is required");
+      opt.level = static_cast<int>(o.integer("level", 0, 0, lsystem::max_level));
+      opt.normalize = o.boolean("normalize", opt.normalize);
+      o.finish();
+    }
+    push_curve(L, lsystem::curve(g, opt, run));
+    run.finish_bar();
+    return 1;
+  });
+}
+
+int grammar_string(lua_State* L) {
+  Grammar& g = self(L);
+  return call_kernel(L, "string", [&] {
+    const std::string s = lsystem::expand_string(g, level_argument(L, 2), 1e7);
+    lua_pushlstring(L, s.data(), s.size());
+    return 1;
+  });
+}
+
+int grammar_count(lua_State* L) {
+  Grammar& g = self(L);
+  return call_kernel(L, "count", [&] {
+    const double n = lsystem::predict_counts(g, level_argument(L, 2)).segments;
+    if (n < 9e15) lua_pushinteger(L, static_cast<lua_Integer>(n));
+    else lua_pushnumber(L, n);
+    return 1;
+  });
+}
+
+int grammar_tostring(lua_State* L) {
+  lua_pushfstring(L, "LSystem(axiom '%s', %d rules)", self(L).axiom.c_str(), static_cast<int>(self(L).rules.size()));
+  return 1;
+}
+
+int make_lsystem(lua_State* L) {
+  return call_kernel(L, "lsystem", [&] {
+    push_value(L, grammar_type, read_grammar(L, 1));
+    return 1;
+  });
+}
+
+}  // namespace
+
+void open_lsystem(lua_State* L) {
+  static const luaL_Reg methods[] = {
+      {"curve", grammar_curve}, {"string", grammar_string}, {"count", grammar_count}, {nullptr, nullptr}};
+  register_type<Grammar>(L, grammar_type, methods, grammar_tostring);
+  lua_register(L, "lsystem", make_lsystem);
+}
+
+}  // namespace selfsim::interp

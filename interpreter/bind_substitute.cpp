@@ -1,0 +1,65 @@
+// substitute{ path, generator, levels, transforms } -> Curve. A thin adapter over kernels/substitute.
+#include <algorithm>
+
+#include "interpreter/bindings.h"
+#include "interpreter/curve_value.h"
+#include "interpreter/lua_support.h"
+#include "interpreter/options_reader.h"
+#include "interpreter/run_context.h"
+#include "kernels/substitute/substitute.h"
+
+namespace selfsim::interp {
+
+namespace {
+
+using substitute::SegmentTransform;
+
+const std::vector<std::string> transform_names{"identity", "reflect_segment", "reflect_bisector", "half_turn"};
+
+std::vector<SegmentTransform> read_transforms(lua_State* L) {
+  std::vector<SegmentTransform> out;
+  if (lua_type(L, -1) != LUA_TTABLE) throw Error("option 'transforms' must be a list of names, got " + describe(L, -1));
+  for (lua_Integer i = 1; i <= static_cast<lua_Integer>(lua_rawlen(L, -1)); ++i) {
+    lua_rawgeti(L, -1, i);
+    const std::string name = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : describe(L, -1);
+    lua_pop(L, 1);
+    const auto it = std::find(transform_names.begin(), transform_names.end(), name);
+    if (it == transform_names.end()) {
+      std::string list;
+      for (const auto& n : transform_names) list += (list.empty() ? "'" : ", '") + n + "'";
+      throw Error("invalid transform '" + name + "' (entry " + std::to_string(i) + "), expected one of: " + list);
+    }
+    out.push_back(static_cast<SegmentTransform>(it - transform_names.begin()));
+  }
+  return out;
+}
+
+int make_substitute(lua_State* L) {
+  return call_kernel(L, "substitute", [&] {
+    RunContext& run = RunContext::of(L);
+    Options o(L, 1);
+    for (const char* required : {"path", "generator", "levels"})
+      if (!o.has(required)) throw Error(std::string("option '") + required + "' is required");
+    o.push("path");
+    const Polyline path = to_polyline(L, -1, "option 'path'");
+    lua_pop(L, 1);
+    o.push("generator");
+    const Polyline generator = to_polyline(L, -1, "option 'generator'");
+    lua_pop(L, 1);
+    substitute::SubstituteOptions opt;
+    opt.levels = static_cast<int>(o.integer("levels", 1, 0, 64));
+    opt.max_points = run.config.max_points;
+    if (o.push("transforms") != LUA_TNIL) opt.transforms = read_transforms(L);
+    lua_pop(L, 1);
+    o.finish();
+    push_curve(L, substitute::substitute(path, generator, opt, run));
+    run.finish_bar();
+    return 1;
+  });
+}
+
+}  // namespace
+
+void open_substitute(lua_State* L) { lua_register(L, "substitute", make_substitute); }
+
+}  // namespace selfsim::interp

@@ -1,0 +1,24 @@
+// The `selfsim` subcommands. Each returns the process exit code: 0 success, 1 recipe error (or, for diff,
+// files that differ), 2 usage error.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "interpreter/run_context.h"
+
+namespace selfsim::interp {
+
+// A mistake on the command line; main prints it with a pointer to --help and exits 2.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+int run_command(const RunConfig& config);
+int diff_command(const std::string& a, const std::string& b, double tol);
+int info_command(const std::string& file);
+
+// Parses the arguments after `selfsim run`. Throws UsageError.
+RunConfig parse_run_arguments(const std::vector<std::string>& args);
+
+}  // namespace selfsim::interp

@@ -1,0 +1,126 @@
+#include "interpreter/curve_value.h"
+
+#include <cstdio>
+
+#include "interpreter/lua_support.h"
+#include "interpreter/options_reader.h"
+
+namespace selfsim::interp {
+
+namespace {
+
+Polyline& self(lua_State* L) { return *static_cast<Polyline*>(luaL_checkudata(L, 1, curve_type)); }
+
+void push_point(lua_State* L, Vec2 p) {
+  lua_createtable(L, 2, 0);
+  lua_pushnumber(L, p.x);
+  lua_rawseti(L, -2, 1);
+  lua_pushnumber(L, p.y);
+  lua_rawseti(L, -2, 2);
+}
+
+int curve_points(lua_State* L) {
+  lua_pushinteger(L, static_cast<lua_Integer>(self(L).points.size()));
+  return 1;
+}
+int curve_segments(lua_State* L) {
+  lua_pushinteger(L, static_cast<lua_Integer>(self(L).segments()));
+  return 1;
+}
+int curve_paths(lua_State* L) {
+  lua_pushinteger(L, static_cast<lua_Integer>(self(L).paths()));
+  return 1;
+}
+int curve_length(lua_State* L) {
+  lua_pushnumber(L, self(L).length());
+  return 1;
+}
+int curve_level(lua_State* L) {
+  lua_pushinteger(L, self(L).level);
+  return 1;
+}
+// {min = {x, y}, max = {x, y}}
+int curve_bbox(lua_State* L) {
+  const BBox2 b = self(L).bbox();
+  lua_createtable(L, 0, 2);
+  push_point(L, b.min);
+  lua_setfield(L, -2, "min");
+  push_point(L, b.max);
+  lua_setfield(L, -2, "max");
+  return 1;
+}
+// c:point(i): the i-th point (1-based) as {x, y}, for checks in recipes; no bulk export to Lua.
+int curve_point(lua_State* L) {
+  const Polyline& c = self(L);
+  const lua_Integer i = luaL_checkinteger(L, 2);
+  if (i < 1 || i > static_cast<lua_Integer>(c.points.size()))
+    return luaL_error(L, "point: index %d out of range [1, %d]", static_cast<int>(i), static_cast<int>(c.points.size()));
+  push_point(L, c.points[static_cast<std::size_t>(i - 1)]);
+  return 1;
+}
+int curve_tostring(lua_State* L) {
+  const Polyline& c = self(L);
+  lua_pushfstring(L, "Curve(%d points, %d paths, level %d)", static_cast<int>(c.points.size()), static_cast<int>(c.paths()), c.level);
+  return 1;
+}
+
+std::vector<Vec2> read_points(lua_State* L, int index, const std::string& what) {
+  if (lua_type(L, index) != LUA_TTABLE)
+    throw Error((what.empty() ? "argument" : what) + " must be a curve or a table of {x, y} points, got " + describe(L, index));
+  std::vector<Vec2> pts;
+  const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, index));
+  for (lua_Integer i = 1; i <= n; ++i) {
+    lua_rawgeti(L, index, i);
+    const std::string at = (what.empty() ? "" : what + " ") + "point " + std::to_string(i);
+    if (lua_type(L, -1) != LUA_TTABLE || lua_rawlen(L, -1) != 2) {
+      const std::string got = describe(L, -1);
+      lua_pop(L, 1);
+      throw Error(at + " must be {x, y}, got " + got);
+    }
+    Vec2 p;
+    lua_rawgeti(L, -1, 1);
+    lua_rawgeti(L, -2, 2);
+    try {
+      p = {finite_number(L, -2, at + " x"), finite_number(L, -1, at + " y")};
+    } catch (...) {
+      lua_pop(L, 3);
+      throw;
+    }
+    lua_pop(L, 3);
+    pts.push_back(p);
+  }
+  return pts;
+}
+
+int make_polyline(lua_State* L, const char* fn, bool closed) {
+  return call_kernel(L, fn, [&] {
+    std::vector<Vec2> pts = read_points(L, 1, "");
+    if (pts.size() < (closed ? 3u : 2u))
+      throw Error(std::string("needs at least ") + (closed ? "3" : "2") + " points, got " + std::to_string(pts.size()));
+    if (closed && !(pts.front() == pts.back())) pts.push_back(pts.front());
+    push_curve(L, Polyline::single(std::move(pts)));
+    return 1;
+  });
+}
+
+}  // namespace
+
+void push_curve(lua_State* L, Polyline&& c) { push_value(L, curve_type, std::move(c)); }
+
+Polyline* test_curve(lua_State* L, int index) { return test_value<Polyline>(L, index, curve_type); }
+
+Polyline to_polyline(lua_State* L, int index, const std::string& what) {
+  if (const Polyline* c = test_curve(L, index)) return *c;
+  return Polyline::single(read_points(L, lua_absindex(L, index), what));
+}
+
+void open_curve(lua_State* L) {
+  static const luaL_Reg methods[] = {{"points", curve_points}, {"segments", curve_segments}, {"paths", curve_paths},
+                                     {"length", curve_length}, {"level", curve_level},       {"bbox", curve_bbox},
+                                     {"point", curve_point},   {nullptr, nullptr}};
+  register_type<Polyline>(L, curve_type, methods, curve_tostring);
+  lua_register(L, "polyline", [](lua_State* S) { return make_polyline(S, "polyline", false); });
+  lua_register(L, "polygon", [](lua_State* S) { return make_polyline(S, "polygon", true); });
+}
+
+}  // namespace selfsim::interp

@@ -1,0 +1,23 @@
+// Curves as Lua values: a userdata holding a Polyline, with methods; and small paths read from tables.
+#pragma once
+
+#include <lua.hpp>
+
+#include <string>
+
+#include "kernels/geom/polyline.h"
+
+namespace selfsim::interp {
+
+inline constexpr const char* curve_type = "selfsim.Curve";
+
+void push_curve(lua_State* L, Polyline&& c);
+// The curve at index, or nullptr if the value is not a curve.
+Polyline* test_curve(lua_State* L, int index);
+// A curve userdata, or a table of {x, y} points read as one open path. Throws Error naming `what`.
+Polyline to_polyline(lua_State* L, int index, const std::string& what);
+
+// Registers the Curve type and the polyline{} / polygon{} constructors.
+void open_curve(lua_State* L);
+
+}  // namespace selfsim::interp

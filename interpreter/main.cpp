@@ -1,0 +1,76 @@
+// The `selfsim` executable: dispatches to run / diff / info.
+#include <charconv>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "interpreter/commands.h"
+
+namespace {
+
+const char* const help = R"(selfsim — fractal geometry from Lua recipes
+
+usage:
+  selfsim run RECIPE.lua [options]   run a recipe; outputs go to the output folder
+      -o, --output DIR      output folder (default: out)
+      --set KEY=VALUE       override param(KEY, default) in the recipe (repeatable)
+      --max-points N        refuse any curve predicted to need more points (default 268435456)
+      --timeout S           stop the run after S seconds (default: none)
+      --seed N              seed for math.random (default 0): same seed, same files
+      -q, --quiet           print nothing but errors
+  selfsim diff A B [--tol T] compare two geometry files (.vtp, .svg) point by point and field by
+                             field; T is relative (default 1e-9). Exit 0 same, 1 different, 2 error
+  selfsim info FILE          points, cells, bounding box and fields of a .vtp or .svg file
+  selfsim --help | --version
+
+exit codes: 0 success, 1 recipe error, 2 usage error, 130 interrupted
+)";
+
+int usage_error(const std::string& message) {
+  std::fprintf(stderr, "selfsim: %s (see selfsim --help)\n", message.c_str());
+  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace selfsim::interp;
+  std::vector<std::string> args(argv + 1, argv + argc);
+  try {
+    if (args.empty()) throw UsageError("expected a command: run, diff or info");
+    const std::string command = args[0];
+    const std::vector<std::string> rest(args.begin() + 1, args.end());
+    if (command == "--help" || command == "-h" || command == "help") {
+      std::fputs(help, stdout);
+      return 0;
+    }
+    if (command == "--version") {
+      std::printf("selfsim %s\n", SELFSIM_VERSION);
+      return 0;
+    }
+    if (command == "run") return run_command(parse_run_arguments(rest));
+    if (command == "info") {
+      if (rest.size() != 1) throw UsageError("info expects one file");
+      return info_command(rest[0]);
+    }
+    if (command == "diff") {
+      std::vector<std::string> files;
+      double tol = 1e-9;
+      for (std::size_t i = 0; i < rest.size(); ++i) {
+        if (rest[i] == "--tol") {
+          if (i + 1 >= rest.size()) throw UsageError("--tol expects a value");
+          const std::string& t = rest[++i];
+          auto r = std::from_chars(t.data(), t.data() + t.size(), tol);
+          if (r.ec != std::errc() || r.ptr != t.data() + t.size() || !(tol >= 0)) throw UsageError("--tol expects a number >= 0, got '" + t + "'");
+        } else {
+          files.push_back(rest[i]);
+        }
+      }
+      if (files.size() != 2) throw UsageError("diff expects two files");
+      return diff_command(files[0], files[1], tol);
+    }
+    throw UsageError("unknown command '" + command + "'");
+  } catch (const UsageError& e) {
+    return usage_error(e.what());
+  }
+}

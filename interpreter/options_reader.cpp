@@ -1,0 +1,166 @@
+#include "interpreter/options_reader.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "interpreter/lua_support.h"
+#include "kernels/geom/error.h"
+
+namespace selfsim::interp {
+
+namespace {
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string option(const char* key) { return std::string("option '") + key + "'"; }
+
+}  // namespace
+
+std::string suggestion(const std::string& word, const std::vector<std::string>& candidates) {
+  std::string best;
+  std::size_t best_distance = std::max<std::size_t>(2, word.size() / 3) + 1;
+  for (const auto& c : candidates) {
+    const std::size_t d = edit_distance(word, c);
+    if (d < best_distance) best_distance = d, best = c;
+  }
+  return best;
+}
+
+double finite_number(lua_State* L, int index, const std::string& what) {
+  if (lua_type(L, index) != LUA_TNUMBER) throw Error(what + " must be a number, got " + describe(L, index));
+  const double v = lua_tonumber(L, index);
+  if (!std::isfinite(v)) throw Error(what + " must be a finite number, got " + describe(L, index));
+  return v;
+}
+
+Options::Options(lua_State* state, int index) : L(state), index_(lua_absindex(state, index)) {
+  const int t = lua_type(L, index_);
+  if (t != LUA_TTABLE && t != LUA_TNIL && t != LUA_TNONE)
+    throw Error("expected a table of options, got " + describe(L, index_));
+}
+
+int Options::push(const char* key) {
+  read_.insert(key);
+  if (lua_type(L, index_) != LUA_TTABLE) {
+    lua_pushnil(L);
+    return LUA_TNIL;
+  }
+  return lua_getfield(L, index_, key);
+}
+
+bool Options::has(const char* key) {
+  const bool present = push(key) != LUA_TNIL;
+  lua_pop(L, 1);
+  return present;
+}
+
+double Options::number(const char* key, double fallback) {
+  if (push(key) == LUA_TNIL) {
+    lua_pop(L, 1);
+    return fallback;
+  }
+  const double v = finite_number(L, -1, option(key));
+  lua_pop(L, 1);
+  return v;
+}
+
+long long Options::integer(const char* key, long long fallback, long long lo, long long hi) {
+  if (push(key) == LUA_TNIL) {
+    lua_pop(L, 1);
+    return fallback;
+  }
+  const std::string range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  // Whole floats (3.0) are accepted too: recipes compute levels with arithmetic.
+  const bool whole = lua_isinteger(L, -1) ||
+                     (lua_type(L, -1) == LUA_TNUMBER && std::floor(lua_tonumber(L, -1)) == lua_tonumber(L, -1) &&
+                      std::abs(lua_tonumber(L, -1)) < 1e18);
+  if (!whole) {
+    const std::string got = describe(L, -1);
+    lua_pop(L, 1);
+    throw Error(option(key) + " must be an integer in " + range + ", got " + got);
+  }
+  const long long v = lua_isinteger(L, -1) ? lua_tointeger(L, -1) : static_cast<long long>(lua_tonumber(L, -1));
+  lua_pop(L, 1);
+  if (v < lo || v > hi) throw Error(option(key) + " must be an integer in " + range + ", got " + std::to_string(v));
+  return v;
+}
+
+bool Options::boolean(const char* key, bool fallback) {
+  const int t = push(key);
+  if (t == LUA_TNIL) {
+    lua_pop(L, 1);
+    return fallback;
+  }
+  if (t != LUA_TBOOLEAN) {
+    const std::string got = describe(L, -1);
+    lua_pop(L, 1);
+    throw Error(option(key) + " must be true or false, got " + got);
+  }
+  const bool v = lua_toboolean(L, -1);
+  lua_pop(L, 1);
+  return v;
+}
+
+std::string Options::string(const char* key, const std::string& fallback) {
+  const int t = push(key);
+  if (t == LUA_TNIL) {
+    lua_pop(L, 1);
+    return fallback;
+  }
+  if (t != LUA_TSTRING) {
+    const std::string got = describe(L, -1);
+    lua_pop(L, 1);
+    throw Error(option(key) + " must be a string, got " + got);
+  }
+  std::size_t n = 0;
+  const char* s = lua_tolstring(L, -1, &n);
+  std::string v(s, n);
+  lua_pop(L, 1);
+  return v;
+}
+
+int Options::choice(const char* key, const std::vector<std::string>& names, int fallback) {
+  if (!has(key)) return fallback;
+  const std::string v = string(key, "");
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i] == v) return static_cast<int>(i);
+  std::string list;
+  for (const auto& n : names) list += (list.empty() ? "'" : ", '") + n + "'";
+  throw Error("invalid " + std::string(key) + " '" + v + "', expected one of: " + list);
+}
+
+void Options::finish() {
+  if (lua_type(L, index_) != LUA_TTABLE) return;
+  const std::vector<std::string> known(read_.begin(), read_.end());
+  lua_pushnil(L);
+  while (lua_next(L, index_) != 0) {
+    std::string key;
+    if (lua_type(L, -2) == LUA_TSTRING) key = lua_tostring(L, -2);
+    else {
+      const std::string got = describe(L, -2);
+      lua_pop(L, 2);
+      throw Error("options must be named (key = value), got a value at key " + got);
+    }
+    lua_pop(L, 1);
+    if (!read_.contains(key)) {
+      lua_pop(L, 1);
+      const std::string near = suggestion(key, known);
+      throw Error("unknown option '" + key + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
+    }
+  }
+}
+
+}  // namespace selfsim::interp

@@ -1,0 +1,44 @@
+// Reads a Lua options table into C++ values, pbrt-style: every key a binding reads is recorded, and
+// finish() rejects the rest with a suggestion ("unknown option 'multiplicty' (did you mean
+// 'multiplicity'?)") so a typo is never silently ignored. Errors are thrown as selfsim::Error (not Lua
+// errors) so they can pass through C++ frames; call_kernel turns them into recipe errors.
+#pragma once
+
+#include <lua.hpp>
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace selfsim::interp {
+
+class Options {
+ public:
+  // Reads the table at `index`; nil or none gives an empty table. Throws Error if it is something else.
+  Options(lua_State* L, int index);
+
+  bool has(const char* key);
+  double number(const char* key, double fallback);
+  long long integer(const char* key, long long fallback, long long lo, long long hi);
+  bool boolean(const char* key, bool fallback);
+  std::string string(const char* key, const std::string& fallback);
+  // One of `names`, returned as its index.
+  int choice(const char* key, const std::vector<std::string>& names, int fallback);
+  // Pushes the value at key (marking it read) and returns its Lua type; the caller pops it.
+  int push(const char* key);
+  // Throws Error naming the first key that no reader asked for.
+  void finish();
+
+ private:
+  lua_State* L;
+  int index_;
+  std::set<std::string> read_;
+};
+
+// A number read from the value on top of the stack, checked finite; `what` names it in errors.
+double finite_number(lua_State* L, int index, const std::string& what);
+
+// The closest of `candidates` to `word` by edit distance, if close enough to be a likely typo.
+std::string suggestion(const std::string& word, const std::vector<std::string>& candidates);
+
+}  // namespace selfsim::interp

@@ -1,0 +1,55 @@
+#include "kernels/geom/polyline.h"
+
+namespace selfsim {
+
+Polyline Polyline::single(std::vector<Vec2> pts, int level) {
+  Polyline c;
+  c.points = std::move(pts);
+  c.level = level;
+  c.close_path();
+  return c;
+}
+
+std::size_t Polyline::segments() const {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < paths(); ++i) {
+    const std::size_t k = path(i).size();
+    n += k > 0 ? k - 1 : 0;
+  }
+  return n;
+}
+
+double Polyline::length() const {
+  double total = 0;
+  for (std::size_t i = 0; i < paths(); ++i) {
+    const auto p = path(i);
+    for (std::size_t j = 1; j < p.size(); ++j) total += norm(p[j] - p[j - 1]);
+  }
+  return total;
+}
+
+bool Polyline::finite() const {
+  for (Vec2 p : points)
+    if (!is_finite(p)) return false;
+  return true;
+}
+
+void Polyline::close_path() {
+  const std::size_t begin = path_ends.empty() ? 0 : path_ends.back();
+  if (points.size() > begin) path_ends.push_back(points.size());
+}
+
+std::vector<double> arclength(const Polyline& c) {
+  std::vector<double> s(c.points.size());
+  for (std::size_t i = 0; i < c.paths(); ++i) {
+    const std::size_t b = c.path_begin(i), e = c.path_ends[i];
+    double run = 0;
+    for (std::size_t j = b; j < e; ++j) {
+      if (j > b) run += norm(c.points[j] - c.points[j - 1]);
+      s[j] = run;
+    }
+  }
+  return s;
+}
+
+}  // namespace selfsim

@@ -1,0 +1,22 @@
+// Orientation-preserving similarity of the plane, T(z) = a·z + b on complex numbers (seed 003 §1).
+#pragma once
+
+#include "kernels/geom/vec2.h"
+
+namespace selfsim {
+
+struct Similarity2 {
+  Vec2 a{1, 0}, b{0, 0};
+
+  Vec2 operator()(Vec2 z) const { return a * z + b; }
+
+  // The similarity taking 0 to p and 1 to q (p != q).
+  static Similarity2 from_segment(Vec2 p, Vec2 q) { return {q - p, p}; }
+  // The similarity taking p to 0 and q to 1 (p != q): the inverse of from_segment.
+  static Similarity2 to_unit(Vec2 p, Vec2 q) {
+    const Vec2 a = Vec2{1, 0} / (q - p);
+    return {a, -(a * p)};
+  }
+};
+
+}  // namespace selfsim

@@ -1,0 +1,63 @@
+#include "kernels/io/save.h"
+
+#include <algorithm>
+#include <unistd.h>
+
+#include "kernels/geom/error.h"
+
+namespace selfsim::io {
+
+namespace {
+
+std::string list(const std::vector<std::string>& items) {
+  std::string s;
+  for (const auto& i : items) s += (s.empty() ? "'" : ", '") + i + "'";
+  return s;
+}
+
+// Removes the temporary file unless the write got as far as renaming it.
+struct TemporaryFile {
+  std::filesystem::path path;
+  bool kept = false;
+  ~TemporaryFile() {
+    if (!kept) {
+      std::error_code ignored;
+      std::filesystem::remove(path, ignored);
+    }
+  }
+};
+
+}  // namespace
+
+const std::vector<std::string>& curve_extensions() {
+  static const std::vector<std::string> ext{".svg", ".vtp"};
+  return ext;
+}
+
+void save_curve(const Polyline& c, const std::filesystem::path& file, const SaveOptions& opt, Progress& progress) {
+  const std::string ext = file.extension().string();
+  const auto& known = curve_extensions();
+  if (std::find(known.begin(), known.end(), ext) == known.end())
+    throw Error("cannot save a curve as '" + ext + "' (file '" + file.filename().string() + "'), expected one of: " + list(known));
+  if (c.points.empty()) throw Error("cannot save an empty curve to '" + file.filename().string() + "'");
+  if (!c.finite()) throw Error("cannot save '" + file.filename().string() + "': the curve has non-finite coordinates");
+  progress.start("writing");
+  TemporaryFile tmp{file.string() + ".part-" + std::to_string(::getpid())};
+  if (ext == ".vtp") write_vtp(c, tmp.path, opt);
+  else write_svg(c, tmp.path, opt);
+  if (progress.cancelled()) throw Cancelled();
+  std::error_code ec;
+  std::filesystem::rename(tmp.path, file, ec);
+  if (ec) throw Error("cannot write '" + file.string() + "': " + ec.message());
+  tmp.kept = true;
+}
+
+Dataset read_dataset(const std::filesystem::path& file) {
+  if (!std::filesystem::exists(file)) throw Error("no such file: '" + file.string() + "'");
+  const std::string ext = file.extension().string();
+  if (ext == ".vtp") return read_vtp(file);
+  if (ext == ".svg") return read_svg(file);
+  throw Error("cannot read '" + file.string() + "': expected a .vtp or .svg file");
+}
+
+}  // namespace selfsim::io

@@ -1,0 +1,59 @@
+#include "kernels/lsystem/grammar.h"
+
+#include <cmath>
+
+#include "kernels/geom/error.h"
+
+namespace selfsim::lsystem {
+
+namespace {
+
+std::string shown(char c) {
+  if (c >= 33 && c < 127) return std::string(1, c);
+  return "\\" + std::to_string(static_cast<unsigned char>(c));
+}
+
+// A ']' before its '[' would pop an empty turtle stack (every level expands each string in one piece).
+void require_balanced(const std::string& s, const std::string& what) {
+  int depth = 0;
+  for (char c : s) {
+    depth += c == '[' ? 1 : c == ']' ? -1 : 0;
+    if (depth < 0) throw Error(what + " has a ']' without a matching '['");
+  }
+}
+
+void require_finite(double v, const std::string& what) {
+  if (!std::isfinite(v)) throw Error("option '" + what + "' must be a finite number, got " + std::to_string(v));
+}
+
+}  // namespace
+
+void Grammar::validate() const {
+  if (axiom.empty()) throw Error("option 'axiom' must be a non-empty string");
+  require_balanced(axiom, "option 'axiom'");
+  for (const auto& [symbol, replacement] : rules) {
+    if (symbol == '[' || symbol == ']')
+      throw Error("option 'rules': the branch symbol '" + shown(symbol) + "' cannot have a rule");
+    require_balanced(replacement, "option 'rules': the rule for '" + shown(symbol) + "'");
+  }
+  require_finite(angle, "angle");
+  for (const auto& [symbol, degrees] : angles) require_finite(degrees, "angles['" + shown(symbol) + "']");
+  if (start_angles.empty()) throw Error("option 'start_angle' must be a number or a non-empty list of numbers");
+  for (double a : start_angles) require_finite(a, "start_angle");
+  require_finite(shrink, "shrink");
+  if (!(shrink > 0)) throw Error("option 'shrink' must be a positive number, got " + std::to_string(shrink));
+  for (char c : draw)
+    if (moves(c)) throw Error("option 'draw': symbol '" + shown(c) + "' is also in 'move'");
+}
+
+double Grammar::turn_of(char c) const {
+  if (auto it = angles.find(c); it != angles.end()) return it->second;
+  switch (c) {
+    case '+': return angle;
+    case '-': return -angle;
+    case '|': return 180;
+    default: return 0;
+  }
+}
+
+}  // namespace selfsim::lsystem

@@ -1,0 +1,36 @@
+// An L-system grammar with its turtle interpretation (seed 002 §1 and Table 1; seed 001).
+// Symbols are single bytes. '+' turns left (counterclockwise) by `angle`, '-' turns right, '|' turns
+// around, '[' and ']' push and pop the turtle; per-symbol angles override these turns and may give any
+// symbol a turn. Symbols in `draw` step forward drawing, those in `move` step without drawing; every other
+// symbol only takes part in rewriting.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace selfsim::lsystem {
+
+struct Grammar {
+  std::string axiom;                      // level 0; must not be empty
+  std::map<char, std::string> rules;      // symbol -> replacement; symbols without a rule stay as they are
+  double angle = 90;                      // degrees turned by '+' (left) and '-' (right)
+  std::map<char, double> angles;          // degrees turned by a symbol, positive = left; overrides angle
+  std::vector<double> start_angles{0.0};  // initial heading in degrees, cycled by level (level % size)
+  double shrink = 1;                      // step length is shrink^level (used when a curve is not normalised)
+  std::string draw = "FG";                // symbols that step forward drawing a segment
+  std::string move = "f";                 // symbols that step forward without drawing
+
+  // Throws selfsim::Error naming the first bad field.
+  void validate() const;
+  // Degrees turned by symbol c, or 0 if c does not turn.
+  double turn_of(char c) const;
+  bool draws(char c) const { return draw.find(c) != std::string::npos; }
+  bool moves(char c) const { return move.find(c) != std::string::npos; }
+  double start_angle(int level) const { return start_angles[static_cast<std::size_t>(level) % start_angles.size()]; }
+};
+
+// Highest level any kernel accepts: depth-first expansion keeps one frame per level.
+constexpr int max_level = 256;
+
+}  // namespace selfsim::lsystem

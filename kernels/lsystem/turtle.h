@@ -1,0 +1,33 @@
+// Turtle interpretation of an L-system level, streamed: the level's string is never built. A stack of
+// rule positions (one frame per level) expands depth-first straight into the turtle, and the output is
+// reserved from the production-matrix prediction, so memory is the vertex array and nothing more.
+#pragma once
+
+#include <string>
+
+#include "kernels/geom/polyline.h"
+#include "kernels/geom/progress.h"
+#include "kernels/lsystem/grammar.h"
+
+namespace selfsim::lsystem {
+
+struct CurveOptions {
+  int level = 0;               // rewriting steps applied to the axiom, in [0, max_level]
+  bool normalize = true;       // open curves run from (0,0) to (1,0); see below
+  double max_points = 1 << 28; // refuse (before any work) a level predicted to need more points
+
+  void validate() const;
+};
+
+// The curve of grammar g at opt.level.
+// Normalisation: when the turtle ends away from where it started, the direct similarity taking its start
+// to (0,0) and its end to (1,0) is applied, so every level of an open curve spans the same unit segment.
+// A closed curve (turtle back at its start) is left where the turtle drew it: starting at (0,0), heading
+// start_angle, with steps of length shrink^level. With normalize = false every curve is left that way.
+// Branches '[' ']' and move symbols start new paths. Throws Error if the level is over opt.max_points.
+Polyline curve(const Grammar& g, const CurveOptions& opt, Progress& progress);
+
+// The string of level `level`, for small levels; refuses one predicted longer than max_symbols.
+std::string expand_string(const Grammar& g, int level, double max_symbols);
+
+}  // namespace selfsim::lsystem

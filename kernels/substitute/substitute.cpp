@@ -1,0 +1,104 @@
+#include "kernels/substitute/substitute.h"
+
+#include <cmath>
+#include <string>
+
+#include "kernels/geom/error.h"
+
+namespace selfsim::substitute {
+
+namespace {
+
+// A similarity that may reverse orientation: z -> a·z + b, or a·conj(z) + b when mirrored.
+struct Map {
+  Vec2 a{1, 0}, b{};
+  bool mirrored = false;
+
+  Vec2 operator()(Vec2 z) const { return a * (mirrored ? conj(z) : z) + b; }
+  // this ∘ m
+  Map then_inner(const Map& m) const {
+    const Vec2 ma = mirrored ? conj(m.a) : m.a;
+    return {a * ma, (*this)(m.b), mirrored != m.mirrored};
+  }
+};
+
+Map transform_map(SegmentTransform t) {
+  switch (t) {
+    case SegmentTransform::Identity: return {};
+    case SegmentTransform::ReflectSegment: return {{1, 0}, {0, 0}, true};
+    case SegmentTransform::ReflectBisector: return {{-1, 0}, {1, 0}, true};
+    case SegmentTransform::HalfTurn: return {{-1, 0}, {1, 0}, false};
+  }
+  return {};
+}
+
+bool reverses(SegmentTransform t) { return t == SegmentTransform::ReflectBisector || t == SegmentTransform::HalfTurn; }
+
+struct Substitution {
+  std::vector<Map> child;         // generator segment i as a map of the unit segment, transform included
+  std::vector<bool> child_reversed;
+  std::vector<Vec2>& out;
+  Progress& progress;
+  double total;
+
+  // Appends the end points of M's copy, `level` rounds deep, walking it forwards or backwards.
+  void emit(const Map& m, int level, bool forward) {
+    if (level == 0) {
+      out.push_back(m(forward ? Vec2{1, 0} : Vec2{0, 0}));
+      if (out.size() % (1u << 20) == 0) progress.step(static_cast<double>(out.size()) / total);
+      return;
+    }
+    const std::size_t n = child.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t i = forward ? k : n - 1 - k;
+      emit(m.then_inner(child[i]), level - 1, forward != child_reversed[i]);
+    }
+  }
+};
+
+}  // namespace
+
+void SubstituteOptions::validate(std::size_t generator_segments) const {
+  if (levels < 0 || levels > 64) throw Error("option 'levels' must be an integer in [0, 64], got " + std::to_string(levels));
+  if (!transforms.empty() && transforms.size() != generator_segments)
+    throw Error("option 'transforms' must have one entry per generator segment (" + std::to_string(generator_segments) +
+                "), got " + std::to_string(transforms.size()));
+}
+
+Polyline substitute(const Polyline& path, const Polyline& generator, const SubstituteOptions& opt, Progress& progress) {
+  if (path.paths() != 1 || path.segments() < 1) throw Error("option 'path' must be a single path with at least one segment");
+  if (generator.paths() != 1 || generator.segments() < 1)
+    throw Error("option 'generator' must be a single path with at least one segment");
+  const auto g = generator.path(0);
+  const Vec2 g0 = g.front(), g1 = g.back();
+  if (norm(g0) > 1e-9 || norm(g1 - Vec2{1, 0}) > 1e-9)
+    throw Error("option 'generator' must run from (0,0) to (1,0)");
+  if (!path.finite() || !generator.finite()) throw Error("option 'path'/'generator' has non-finite coordinates");
+  const std::size_t n = g.size() - 1;
+  opt.validate(n);
+
+  const double segments = static_cast<double>(path.segments()) * std::pow(static_cast<double>(n), opt.levels);
+  if (segments + 1 > opt.max_points)
+    throw Error("levels " + std::to_string(opt.levels) + " would make " + std::to_string(std::llround(segments + 1)) +
+                " points, over the limit of " + std::to_string(std::llround(opt.max_points)) + " (raise it with --max-points)");
+
+  Polyline result;
+  result.level = opt.levels;
+  result.points.reserve(static_cast<std::size_t>(segments) + 1);
+  progress.start("substitute");
+  Substitution s{{}, {}, result.points, progress, segments + 1};
+  for (std::size_t i = 0; i < n; ++i) {
+    const SegmentTransform t = opt.transforms.empty() ? SegmentTransform::Identity : opt.transforms[i];
+    const Map segment{g[i + 1] - g[i], g[i], false};
+    s.child.push_back(segment.then_inner(transform_map(t)));
+    s.child_reversed.push_back(reverses(t));
+  }
+  const auto p = path.path(0);
+  result.points.push_back(p.front());
+  for (std::size_t k = 0; k + 1 < p.size(); ++k) s.emit(Map{p[k + 1] - p[k], p[k], false}, opt.levels, true);
+  result.close_path();
+  if (!result.finite()) throw Error("substitution produced non-finite coordinates");
+  return result;
+}
+
+}  // namespace selfsim::substitute

@@ -1,0 +1,34 @@
+// Similarity path substitution (seed 003 §1; seed 000 §1): every segment of a path is replaced by the
+// image of a generator path running from 0 to 1, under the similarity taking 0 and 1 to the segment's ends,
+// repeated `levels` times. Each generator segment may also carry one of the four transforms of seed 000
+// Figure 2, which then applies at every deeper level, as in Kaplan's recursive KOCH(T∘Ti, level−1).
+#pragma once
+
+#include <vector>
+
+#include "kernels/geom/polyline.h"
+#include "kernels/geom/progress.h"
+
+namespace selfsim::substitute {
+
+// How a copy of the generator sits on a segment, in the segment's own frame (0 at its start, 1 at its end).
+enum class SegmentTransform {
+  Identity,         // z -> z
+  ReflectSegment,   // z -> conj(z): mirrored across the segment
+  ReflectBisector,  // z -> 1 - conj(z): mirrored across the segment's perpendicular bisector
+  HalfTurn,         // z -> 1 - z: turned half a circle about the segment's midpoint
+};
+
+struct SubstituteOptions {
+  int levels = 1;                           // rounds of substitution, in [0, 64]
+  std::vector<SegmentTransform> transforms; // one per generator segment, or empty for all Identity
+  double max_points = 1 << 28;              // refuse (before any work) results predicted to be larger
+
+  void validate(std::size_t generator_segments) const;
+};
+
+// The substituted path. `path` is any polyline (closed if its ends coincide); `generator` must start at
+// (0,0) and end at (1,0) with at least one segment. The result is one path; its level is opt.levels.
+Polyline substitute(const Polyline& path, const Polyline& generator, const SubstituteOptions& opt, Progress& progress);
+
+}  // namespace selfsim::substitute

@@ -1,0 +1,2 @@
+-- args: --set level=abc
+local level = param("level", 3)

@@ -1,0 +1,2 @@
+local curves = require "selfsim.curves"
+local c = curves.dragon():curve { level = 2.5 }

@@ -1,0 +1,3 @@
+local curves = require "selfsim.curves"
+local c = curves.dragon():curve { level = 3 }
+print(c:nope())

@@ -1,0 +1,2 @@
+-- args: --timeout 0.5
+while true do end

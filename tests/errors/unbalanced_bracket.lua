@@ -1,0 +1,1 @@
+local c = lsystem { axiom = "F]F" }:curve { level = 1 }

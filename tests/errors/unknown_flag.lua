@@ -1,0 +1,3 @@
+-- args: --levl 3
+-- exit: 2
+local x = 1

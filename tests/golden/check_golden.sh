@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# One golden case: run a recipe at a small size, then compare every output with the expected file using
+# `selfsim diff` (geometry-aware, relative tolerance). The output folder must hold exactly the expected
+# files. With SELFSIM_REGENERATE_GOLDEN=1 the expected files are replaced instead: review them with
+# `git diff` before committing, never regenerate to make a failure go away.
+# usage: check_golden.sh SELFSIM SOURCE_DIR CASE RECIPE [selfsim run args...]
+set -euo pipefail
+selfsim=$1 src=$2 case=$3 recipe=$4
+shift 4
+expected="$src/tests/golden/$case"
+actual=$(mktemp -d)
+trap 'rm -rf "$actual"' EXIT
+
+"$selfsim" run "$src/$recipe" -o "$actual" -q "$@"
+
+if [ "${SELFSIM_REGENERATE_GOLDEN:-0}" = 1 ]; then
+  mkdir -p "$expected"
+  find "$expected" -maxdepth 1 -type f ! -name points.txt -delete
+  cp "$actual"/* "$expected"/
+  echo "regenerated $expected"
+  exit 0
+fi
+
+status=0
+want=$(cd "$expected" && ls | grep -v '^points.txt$' | sort)
+got=$(cd "$actual" && ls | sort)
+if [ "$want" != "$got" ]; then
+  echo "output files differ from $expected:"
+  diff <(echo "$want") <(echo "$got") || true
+  status=1
+fi
+for f in $want; do
+  [ -f "$actual/$f" ] || continue
+  if ! out=$("$selfsim" diff "$expected/$f" "$actual/$f" --tol 1e-9); then
+    echo "$case/$f:"
+    echo "$out"
+    status=1
+  fi
+done
+[ $status = 0 ] && echo "$case: $(echo $want | wc -w) files match"
+exit $status

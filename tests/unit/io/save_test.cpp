@@ -1,0 +1,108 @@
+#include "kernels/io/save.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "kernels/analysis/dataset_diff.h"
+#include "kernels/geom/error.h"
+
+using namespace selfsim;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct TempDir {
+  fs::path path = fs::temp_directory_path() / ("selfsim_io_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+                                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  TempDir() { fs::create_directories(path); }
+  ~TempDir() { fs::remove_all(path); }
+};
+
+Polyline two_paths() {
+  Polyline c;
+  c.points = {{0, 0}, {1, 0}, {1, 1}, {2, 2}, {3, 2.5}};
+  c.path_ends = {3, 5};
+  c.level = 7;
+  return c;
+}
+
+}  // namespace
+
+TEST(SaveVtp, RoundTripKeepsPointsCellsAndFields) {
+  TempDir dir;
+  const Polyline c = two_paths();
+  for (bool compress : {false, true}) {
+    const fs::path f = dir.path / "c.vtp";
+    io::save_curve(c, f, {.compress = compress}, no_progress());
+    const io::Dataset d = io::read_dataset(f);
+    ASSERT_EQ(d.points.size(), 5u);
+    EXPECT_EQ(d.points[4], (std::array<double, 3>{3, 2.5, 0}));
+    EXPECT_EQ(d.cell_ends, (std::vector<std::size_t>{3, 5}));
+    EXPECT_EQ(d.point_fields.at("level").values, std::vector<double>(5, 7));
+    EXPECT_EQ(d.point_fields.at("arclength").values[2], 2);
+    EXPECT_EQ(d.point_fields.at("arclength").values[3], 0);
+    EXPECT_EQ(d.cell_fields.at("path").values, (std::vector<double>{0, 1}));
+  }
+}
+
+TEST(SaveSvg, PathDataKeepsTheCurvesCoordinates) {
+  TempDir dir;
+  const Polyline c = two_paths();
+  const fs::path f = dir.path / "c.svg";
+  io::save_curve(c, f, {.fill = "#ff0000"}, no_progress());
+  const io::Dataset d = io::read_dataset(f);
+  ASSERT_EQ(d.points.size(), 5u);
+  EXPECT_EQ(d.points[3], (std::array<double, 3>{2, 2, 0}));
+  EXPECT_EQ(d.cell_ends, (std::vector<std::size_t>{3, 5}));
+  std::ifstream in(f);
+  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(text.find("fill-rule=\"evenodd\""), std::string::npos);
+  EXPECT_NE(text.find("fill=\"#ff0000\""), std::string::npos);
+  // The 800 px drawing of a 3.12-unit-wide curve: a 1 px stroke is 3.12/800 units wide.
+  EXPECT_NE(text.find("stroke-width=\"0.0039\""), std::string::npos) << text.substr(0, 400);
+}
+
+TEST(Save, UnknownExtensionIsRefusedAndLeavesNothing) {
+  TempDir dir;
+  try {
+    io::save_curve(two_paths(), dir.path / "c.dxf", {}, no_progress());
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), "cannot save a curve as '.dxf' (file 'c.dxf'), expected one of: '.svg', '.vtp'");
+  }
+  EXPECT_TRUE(fs::is_empty(dir.path));
+}
+
+TEST(Save, CancelledWriteKeepsTheOldFileAndNoTemporary) {
+  TempDir dir;
+  const fs::path f = dir.path / "c.svg";
+  { std::ofstream(f) << "old"; }
+  struct StopAtOnce : Progress {
+    bool cancelled() override { return true; }
+  } stop;
+  EXPECT_THROW(io::save_curve(two_paths(), f, {}, stop), Cancelled);
+  std::ifstream in(f);
+  std::string text;
+  in >> text;
+  EXPECT_EQ(text, "old");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator()), 1);
+}
+
+TEST(DatasetDiff, FindsMovedPointsAndMissingFields) {
+  io::Dataset a;
+  a.points = {{0, 0, 0}, {1, 0, 0}};
+  a.cell_ends = {2};
+  a.cell_points = {0, 1};
+  a.point_fields["level"] = {1, {3, 3}};
+  io::Dataset b = a;
+  EXPECT_TRUE(analysis::dataset_diff(a, b, 1e-9).empty());
+  b.points[1][1] = 1e-12;  // inside the tolerance
+  EXPECT_TRUE(analysis::dataset_diff(a, b, 1e-9).empty());
+  b.points[1][1] = 1e-6;
+  b.point_fields.erase("level");
+  const auto d = analysis::dataset_diff(a, b, 1e-9);
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_NE(d[0].find("point 1 differs"), std::string::npos);
+  EXPECT_NE(d[1].find("'level' only in the first file"), std::string::npos);
+}
