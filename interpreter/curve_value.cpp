@@ -1,5 +1,6 @@
 #include "interpreter/curve_value.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "interpreter/lua_support.h"
@@ -105,7 +106,13 @@ int make_polyline(lua_State* L, const char* fn, bool closed) {
 
 }  // namespace
 
-void push_curve(lua_State* L, Polyline&& c) { push_value(L, curve_type, std::move(c)); }
+void push_curve(lua_State* L, Polyline&& c) {
+  const std::size_t bytes = c.points.capacity() * sizeof(Vec2) + c.path_ends.capacity() * sizeof(std::size_t);
+  push_value(L, curve_type, std::move(c));
+  // Lua only sees the userdata's few bytes; tell its collector about the arrays, so that curves a recipe
+  // has dropped are freed before the next big one instead of piling up.
+  lua_gc(L, LUA_GCSTEP, static_cast<int>(std::min<std::size_t>(bytes / 1024, 1 << 30)));
+}
 
 Polyline* test_curve(lua_State* L, int index) { return test_value<Polyline>(L, index, curve_type); }
 

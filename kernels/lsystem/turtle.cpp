@@ -4,84 +4,25 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <type_traits>
 
 #include "kernels/geom/error.h"
+#include "kernels/geom/huge_pages.h"
 #include "kernels/geom/similarity.h"
+#include "kernels/lsystem/compiled_grammar.h"
 #include "kernels/lsystem/production_count.h"
 
 namespace selfsim::lsystem {
 
 namespace {
 
-enum class Action : std::uint8_t { None, Draw, Move, Turn, Push, Pop };
-
-constexpr double degree = std::numbers::pi / 180;
-
-// The grammar as flat tables indexed by symbol byte, for the hot loop.
-struct Compiled {
-  std::array<Action, 256> action{};
-  std::array<double, 256> turn{};          // degrees
-  std::array<int, 256> rule{};             // index into rules, or -1
-  std::vector<std::string> rules;
-
-  explicit Compiled(const Grammar& g) {
-    rule.fill(-1);
-    for (int s = 0; s < 256; ++s) {
-      const char c = static_cast<char>(s);
-      turn[s] = g.turn_of(c);
-      action[s] = g.draws(c) ? Action::Draw
-                  : g.moves(c) ? Action::Move
-                  : c == '[' ? Action::Push
-                  : c == ']' ? Action::Pop
-                  : turn[s] != 0 ? Action::Turn
-                                 : Action::None;
-    }
-    for (const auto& [symbol, replacement] : g.rules) {
-      rule[static_cast<unsigned char>(symbol)] = static_cast<int>(rules.size());
-      rules.push_back(replacement);
-    }
-  }
-
-  // Smallest N <= 7200 such that every turn is a whole number of 360/N degree steps, or 0 if none.
-  int lattice() const {
-    for (int n = 1; n <= 7200; ++n) {
-      bool all = true;
-      for (int s = 0; s < 256 && all; ++s) {
-        const double k = turn[s] * n / 360;
-        all = std::abs(k - std::round(k)) < 1e-9;
-      }
-      if (all) return n;
-    }
-    return 0;
-  }
-};
-
-// Direction tables shared by every copy of a heading (the turtle stack copies headings).
-struct LatticeTable {
-  std::vector<Vec2> step;       // step vector for each of the n lattice directions
-  std::array<int, 256> turn{};  // lattice steps turned left by each symbol, in [0, n)
-  int n = 1;
-
-  LatticeTable(const Compiled& c, int lattice, double start_deg, double length) : n(lattice) {
-    for (int i = 0; i < n; ++i) step.push_back(length * polar(start_deg * degree + 2 * std::numbers::pi * i / n));
-    for (int s = 0; s < 256; ++s) {
-      const long t = std::lround(c.turn[s] * n / 360) % n;
-      turn[s] = static_cast<int>(t < 0 ? t + n : t);  // in [0, n): a turn is one add and one wrap
-    }
-  }
-};
-
-// Heading as a whole number of lattice steps: one table look-up per segment, and no drift from
-// accumulating rounded angles however long the curve.
+// A heading on the lattice.
 struct LatticeHeading {
   const LatticeTable* table;
   int k = 0;
 
   Vec2 forward() const { return table->step[static_cast<std::size_t>(k)]; }
-  void rotate(std::uint8_t s) {
-    k += table->turn[s];
-    if (k >= table->n) k -= table->n;
-  }
+  void rotate(std::uint8_t s) { k = table->rotate(k, table->turn[s]); }
 };
 
 // Heading as an angle, for turns that fit no lattice (irrational fractions of a circle).
@@ -100,18 +41,20 @@ struct Frame {
 
 const std::uint8_t* bytes(const std::string& s) { return reinterpret_cast<const std::uint8_t*>(s.data()); }
 
-// Expands depth-first into out; returns the turtle's final position.
+// Expands depth-first into out and returns the turtle's final position. With lattice headings, a symbol
+// reaching the blocks' depth is drawn by copying its precomputed block.
 template <class Heading>
-Vec2 run_turtle(const Compiled& c, const std::string& axiom, int level, Heading heading, double predicted_segments,
-                Polyline& out, Progress& progress) {
+Vec2 run_turtle(const Compiled& c, const std::string& axiom, int level, Heading heading, const LatticeBlocks* blocks,
+                double predicted_segments, Polyline& out, Progress& progress) {
   std::vector<Frame> frames;
   frames.reserve(static_cast<std::size_t>(level) + 1);
   frames.push_back({bytes(axiom), bytes(axiom) + axiom.size()});
   std::vector<std::pair<Vec2, Heading>> saved;
   Vec2 pos{};
   bool path_open = false;
-  std::size_t drawn = 0;
   constexpr std::size_t report_every = std::size_t{1} << 20;
+  std::size_t next_report = report_every;
+  const int block_level = blocks ? level - blocks->depth : -1;  // rewritings done when blocks take over
 
   while (!frames.empty()) {
     Frame& f = frames.back();
@@ -121,7 +64,26 @@ Vec2 run_turtle(const Compiled& c, const std::string& axiom, int level, Heading 
     }
     const std::uint8_t s = *f.pos++;
     const int r = c.rule[s];
-    if (r >= 0 && static_cast<int>(frames.size()) <= level) {
+    const int done = static_cast<int>(frames.size()) - 1;
+    if (r >= 0 && done < level) {
+      if constexpr (std::is_same_v<Heading, LatticeHeading>) {
+        if (done == block_level && blocks->block[s] >= 0) {
+          const LatticeBlocks::Block& b = blocks->blocks[static_cast<std::size_t>(blocks->block[s])];
+          const std::vector<Vec2>& pts = b.points[static_cast<std::size_t>(heading.k)];
+          if (!pts.empty()) {
+            if (!path_open) out.points.push_back(pos);
+            path_open = true;
+            for (const Vec2& p : pts) out.points.push_back(pos + p);
+            pos = out.points.back();
+          }
+          heading.k = heading.table->rotate(heading.k, b.turn);
+          if (out.points.size() >= next_report) {
+            progress.step(static_cast<double>(out.points.size()) / predicted_segments);
+            next_report += report_every;
+          }
+          continue;
+        }
+      }
       const std::string& rule = c.rules[static_cast<std::size_t>(r)];
       frames.push_back({bytes(rule), bytes(rule) + rule.size()});
       continue;
@@ -135,7 +97,10 @@ Vec2 run_turtle(const Compiled& c, const std::string& axiom, int level, Heading 
         }
         pos += heading.forward();
         out.points.push_back(pos);
-        if (++drawn % report_every == 0) progress.step(static_cast<double>(drawn) / predicted_segments);
+        if (out.points.size() >= next_report) {
+          progress.step(static_cast<double>(out.points.size()) / predicted_segments);
+          next_report += report_every;
+        }
         break;
       case Action::Move:
         out.close_path();
@@ -167,6 +132,12 @@ void CurveOptions::validate() const {
 }
 
 Polyline curve(const Grammar& g, const CurveOptions& opt, Progress& progress) {
+  Polyline out;
+  curve_into(g, opt, progress, out);
+  return out;
+}
+
+void curve_into(const Grammar& g, const CurveOptions& opt, Progress& progress, Polyline& out) {
   g.validate();
   opt.validate();
   const LevelCounts counts = predict_counts(g, opt.level);
@@ -175,9 +146,11 @@ Polyline curve(const Grammar& g, const CurveOptions& opt, Progress& progress) {
                 " points, over the limit of " + std::to_string(std::llround(opt.max_points)) +
                 " (raise it with --max-points)");
 
-  Polyline out;
+  out.points.clear();
+  out.path_ends.clear();
   out.level = opt.level;
   out.points.reserve(static_cast<std::size_t>(std::min(counts.max_points(), opt.max_points)));
+  advise_huge_pages(out.points);
   progress.start("L-system");
 
   const Compiled c(g);
@@ -187,19 +160,27 @@ Polyline curve(const Grammar& g, const CurveOptions& opt, Progress& progress) {
   Vec2 end;
   if (lattice > 0) {
     const LatticeTable table(c, lattice, start, length);
-    end = run_turtle(c, g.axiom, opt.level, LatticeHeading{&table}, counts.segments, out, progress);
+    const LatticeBlocks blocks(c, table, opt.level);
+    end = run_turtle(c, g.axiom, opt.level, LatticeHeading{&table}, &blocks, counts.segments, out, progress);
   } else {
-    end = run_turtle(c, g.axiom, opt.level, FreeHeading{&c, start * degree, length}, counts.segments, out, progress);
+    end = run_turtle(c, g.axiom, opt.level, FreeHeading{&c, start * degree, length}, nullptr, counts.segments, out,
+                     progress);
   }
   progress.fraction(1);
 
-  const double extent = std::max(out.bbox().size().x, out.bbox().size().y);
-  if (opt.normalize && norm(end) > 1e-9 * extent) {
+  // Closed when the turtle ends within a tiny fraction of the distance it walked.
+  const bool closed = norm(end) <= 1e-9 * length * (counts.segments + counts.breaks);
+  bool finite = true;
+  if (opt.normalize && !closed) {
     const Similarity2 t = Similarity2::to_unit({0, 0}, end);
-    for (Vec2& p : out.points) p = t(p);
+    for (Vec2& p : out.points) {
+      p = t(p);
+      finite = finite && is_finite(p);
+    }
+  } else {
+    finite = out.finite();
   }
-  if (!out.finite()) throw Error("level " + std::to_string(opt.level) + " has non-finite coordinates (shrink too small?)");
-  return out;
+  if (!finite) throw Error("level " + std::to_string(opt.level) + " has non-finite coordinates (shrink too small?)");
 }
 
 std::string expand_string(const Grammar& g, int level, double max_symbols) {

@@ -26,6 +26,8 @@ struct CurveOptions {
 // start_angle, with steps of length shrink^level. With normalize = false every curve is left that way.
 // Branches '[' ']' and move symbols start new paths. Throws Error if the level is over opt.max_points.
 Polyline curve(const Grammar& g, const CurveOptions& opt, Progress& progress);
+// The same into `out`, reusing its memory (for repeated runs; benches).
+void curve_into(const Grammar& g, const CurveOptions& opt, Progress& progress, Polyline& out);
 
 // The string of level `level`, for small levels; refuses one predicted longer than max_symbols.
 std::string expand_string(const Grammar& g, int level, double max_symbols);
