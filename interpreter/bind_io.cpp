@@ -26,7 +26,6 @@ fs::path output_path(const fs::path& out_dir, const std::string& name) {
 io::SaveOptions read_save_options(lua_State* L, int index) {
   Options o(L, index);
   io::SaveOptions s;
-  s.compress = o.boolean("compress", s.compress);
   s.stroke = o.string("stroke", s.stroke);
   s.stroke_width = o.number("stroke_width", s.stroke_width);
   s.fill = o.string("fill", s.fill);

@@ -25,7 +25,7 @@ int run_command(const RunConfig& config) {
     throw UsageError("cannot open recipe '" + config.recipe.string() + "'");
   RunContext run(config);
   run.scripts_dir = find_scripts_dir();
-  std::signal(SIGINT, on_interrupt);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, on_interrupt);  // stop cleanly: no partial files
 
   lua_State* L = new_sandbox(run);
   if (L == nullptr) {

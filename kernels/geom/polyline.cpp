@@ -39,17 +39,4 @@ void Polyline::close_path() {
   if (points.size() > begin) path_ends.push_back(points.size());
 }
 
-std::vector<double> arclength(const Polyline& c) {
-  std::vector<double> s(c.points.size());
-  for (std::size_t i = 0; i < c.paths(); ++i) {
-    const std::size_t b = c.path_begin(i), e = c.path_ends[i];
-    double run = 0;
-    for (std::size_t j = b; j < e; ++j) {
-      if (j > b) run += norm(c.points[j] - c.points[j - 1]);
-      s[j] = run;
-    }
-  }
-  return s;
-}
-
 }  // namespace selfsim

@@ -35,7 +35,4 @@ struct Polyline {
   void close_path();
 };
 
-// Distance along each path from its start, one value per point (restarts at 0 on every path).
-std::vector<double> arclength(const Polyline& c);
-
 }  // namespace selfsim

@@ -41,10 +41,11 @@ void save_curve(const Polyline& c, const std::filesystem::path& file, const Save
     throw Error("cannot save a curve as '" + ext + "' (file '" + file.filename().string() + "'), expected one of: " + list(known));
   if (c.points.empty()) throw Error("cannot save an empty curve to '" + file.filename().string() + "'");
   if (!c.finite()) throw Error("cannot save '" + file.filename().string() + "': the curve has non-finite coordinates");
-  progress.start("writing");
+  const std::string task = "writing " + file.filename().string();
+  progress.start(task.c_str());
   TemporaryFile tmp{file.string() + ".part-" + std::to_string(::getpid())};
-  if (ext == ".vtp") write_vtp(c, tmp.path, opt);
-  else write_svg(c, tmp.path, opt);
+  if (ext == ".vtp") write_vtp(c, tmp.path, opt, progress);
+  else write_svg(c, tmp.path, opt, progress);
   if (progress.cancelled()) throw Cancelled();
   std::error_code ec;
   std::filesystem::rename(tmp.path, file, ec);

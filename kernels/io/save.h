@@ -14,7 +14,6 @@
 namespace selfsim::io {
 
 struct SaveOptions {
-  bool compress = false;          // .vtp: zlib-compress the arrays (smaller, slower)
   std::string stroke = "#1d3557"; // .svg: stroke colour
   double stroke_width = 1;        // .svg: stroke width in screen pixels, whatever the curve's scale
   std::string fill;               // .svg: fill colour with the even-odd rule; empty for no fill
@@ -31,8 +30,8 @@ void save_curve(const Polyline& c, const std::filesystem::path& file, const Save
 Dataset read_dataset(const std::filesystem::path& file);
 
 // Format-specific writers and readers; `file` is the temporary name save_curve renames.
-void write_vtp(const Polyline& c, const std::filesystem::path& file, const SaveOptions& opt);
-void write_svg(const Polyline& c, const std::filesystem::path& file, const SaveOptions& opt);
+void write_vtp(const Polyline& c, const std::filesystem::path& file, const SaveOptions& opt, Progress& progress);
+void write_svg(const Polyline& c, const std::filesystem::path& file, const SaveOptions& opt, Progress& progress);
 Dataset read_vtp(const std::filesystem::path& file);
 Dataset read_svg(const std::filesystem::path& file);
 

@@ -23,7 +23,7 @@ void put(std::string& s, double v) {
 
 }  // namespace
 
-void write_svg(const Polyline& c, const std::filesystem::path& file, const SaveOptions& opt) {
+void write_svg(const Polyline& c, const std::filesystem::path& file, const SaveOptions& opt, Progress& progress) {
   const BBox2 b = c.bbox();
   Vec2 extent = b.size();
   const double big = std::max({extent.x, extent.y, 1e-300});
@@ -48,9 +48,11 @@ void write_svg(const Polyline& c, const std::filesystem::path& file, const SaveO
        "\" fill-rule=\"evenodd\" stroke=\"" + opt.stroke + "\" stroke-width=\"";
   put(s, opt.stroke_width / px);
   s += "\" stroke-linejoin=\"round\" stroke-linecap=\"round\" d=\"";
+  std::size_t written = 0;
   for (std::size_t i = 0; i < c.paths(); ++i) {
     char cmd = 'M';
     for (Vec2 p : c.path(i)) {
+      if (++written % (1u << 20) == 0) progress.step(0.9 * static_cast<double>(written) / static_cast<double>(c.points.size()));
       s += cmd;
       put(s, p.x);
       s += ' ';

@@ -1,19 +1,16 @@
 // VTK XML PolyData (.vtp): what ParaView opens. Polylines are cells; point fields `level` and `arclength`
 // and cell field `path` let a user colour by construction level, by distance along the curve, or by path.
-#include <numeric>
+
+#include <cstdint>
+#include <fstream>
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
-#include <vtkDoubleArray.h>
-#include <vtkIdTypeArray.h>
-#include <vtkIntArray.h>
-#include <vtkNew.h>
 #include <vtkPointData.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkNew.h>
 #include <vtkXMLPolyDataReader.h>
-#include <vtkXMLPolyDataWriter.h>
 
 #include "kernels/geom/error.h"
 #include "kernels/io/save.h"
@@ -34,62 +31,100 @@ Field field_of(vtkDataArray* a) {
 
 }  // namespace
 
-void write_vtp(const Polyline& c, const std::filesystem::path& file, const SaveOptions& opt) {
-  const vtkIdType n = static_cast<vtkIdType>(c.points.size());
-  vtkNew<vtkDoubleArray> xyz;
-  xyz->SetNumberOfComponents(3);
-  xyz->SetNumberOfTuples(n);
-  double* out = xyz->GetPointer(0);
-  for (const Vec2& p : c.points) {
-    *out++ = p.x;
-    *out++ = p.y;
-    *out++ = 0;
+namespace {
+
+// Appended raw arrays are written in chunks: bounded memory whatever the curve, and a progress report
+// and cancellation check per chunk.
+constexpr std::size_t chunk_points = std::size_t{1} << 16;
+
+struct ArrayWriter {
+  std::ofstream& out;
+  Progress& progress;
+  double total_bytes, written = 0;
+
+  void header(std::uint64_t bytes) { out.write(reinterpret_cast<const char*>(&bytes), sizeof bytes); }
+  template <class T>
+  void chunk(const std::vector<T>& values) {
+    out.write(reinterpret_cast<const char*>(values.data()), static_cast<std::streamsize>(values.size() * sizeof(T)));
+    written += static_cast<double>(values.size() * sizeof(T));
+    progress.step(written / total_bytes);
   }
-  vtkNew<vtkPoints> points;
-  points->SetData(xyz);
+  // Writes one appended array of n values, produced chunk by chunk by fill(begin, end, buffer).
+  template <class T, class Fill>
+  void array(std::size_t n, Fill fill) {
+    header(n * sizeof(T));
+    std::vector<T> buffer;
+    for (std::size_t begin = 0; begin < n; begin += chunk_points) {
+      buffer.clear();
+      fill(begin, std::min(n, begin + chunk_points), buffer);
+      chunk(buffer);
+    }
+  }
+};
 
-  vtkNew<vtkIdTypeArray> offsets, connectivity;
-  offsets->SetNumberOfTuples(static_cast<vtkIdType>(c.paths()) + 1);
-  offsets->SetValue(0, 0);
-  for (std::size_t i = 0; i < c.paths(); ++i) offsets->SetValue(static_cast<vtkIdType>(i) + 1, static_cast<vtkIdType>(c.path_ends[i]));
-  connectivity->SetNumberOfTuples(n);
-  std::iota(connectivity->GetPointer(0), connectivity->GetPointer(0) + n, vtkIdType{0});
-  vtkNew<vtkCellArray> lines;
-  lines->SetData(offsets, connectivity);
+}  // namespace
 
-  vtkNew<vtkPolyData> poly;
-  poly->SetPoints(points);
-  poly->SetLines(lines);
+// Written directly rather than through vtkXMLPolyDataWriter: VTK would first copy the curve into its own
+// arrays (about 3.5 GiB more for a level-26 dragon) and cannot be interrupted while it writes. The
+// format is VTK's XML PolyData, version 1.0, appended raw little-endian data with UInt64 block headers;
+// VTK's reader (and so ParaView) reads it back, which the viewer test checks.
+void write_vtp(const Polyline& c, const std::filesystem::path& file, const SaveOptions&, Progress& progress) {
+  const std::size_t n = c.points.size(), paths = c.paths();
+  const std::size_t sizes[] = {n * 4, n * 8, paths * 4, n * 24, n * 8, paths * 8};  // in the order written below
+  std::size_t offsets[6], at = 0;
+  for (int i = 0; i < 6; ++i) {
+    offsets[i] = at;
+    at += sizes[i] + sizeof(std::uint64_t);
+  }
+  std::ofstream out(file, std::ios::binary);
+  if (!out) throw Error("cannot write '" + file.string() + "'");
+  auto array = [&](const char* type, const char* name, int components, int i) {
+    out << "        <DataArray type=\"" << type << "\" Name=\"" << name << "\" NumberOfComponents=\"" << components
+        << "\" format=\"appended\" offset=\"" << offsets[i] << "\"/>\n";
+  };
+  out << "<?xml version=\"1.0\"?>\n"
+      << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+      << "  <PolyData>\n"
+      << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"0\" NumberOfLines=\"" << paths
+      << "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
+      << "      <PointData Scalars=\"arclength\">\n";
+  array("Int32", "level", 1, 0);
+  array("Float64", "arclength", 1, 1);
+  out << "      </PointData>\n      <CellData>\n";
+  array("Int32", "path", 1, 2);
+  out << "      </CellData>\n      <Points>\n";
+  array("Float64", "Points", 3, 3);
+  out << "      </Points>\n      <Lines>\n";
+  array("Int64", "connectivity", 1, 4);
+  array("Int64", "offsets", 1, 5);
+  out << "      </Lines>\n    </Piece>\n  </PolyData>\n  <AppendedData encoding=\"raw\">\n   _";
 
-  vtkNew<vtkIntArray> level;
-  level->SetName("level");
-  level->SetNumberOfTuples(n);
-  std::fill(level->GetPointer(0), level->GetPointer(0) + n, c.level);
-  poly->GetPointData()->AddArray(level);
-
-  vtkNew<vtkDoubleArray> arc;
-  arc->SetName("arclength");
-  arc->SetNumberOfTuples(n);
-  const std::vector<double> s = arclength(c);
-  std::copy(s.begin(), s.end(), arc->GetPointer(0));
-  poly->GetPointData()->AddArray(arc);
-  poly->GetPointData()->SetActiveScalars("arclength");
-
-  vtkNew<vtkIntArray> path;
-  path->SetName("path");
-  path->SetNumberOfTuples(static_cast<vtkIdType>(c.paths()));
-  std::iota(path->GetPointer(0), path->GetPointer(0) + c.paths(), 0);
-  poly->GetCellData()->AddArray(path);
-
-  vtkNew<vtkXMLPolyDataWriter> writer;
-  writer->SetFileName(file.c_str());
-  writer->SetInputData(poly);
-  writer->SetDataModeToAppended();
-  writer->EncodeAppendedDataOff();  // raw bytes: several times faster to write and read than base64
-  writer->SetHeaderTypeToUInt64();  // arrays over 4 GiB
-  if (opt.compress) writer->SetCompressorTypeToZLib();
-  else writer->SetCompressorTypeToNone();
-  if (writer->Write() != 1) throw Error("cannot write '" + file.string() + "'");
+  ArrayWriter w{out, progress, static_cast<double>(at)};
+  w.array<std::int32_t>(n, [&](std::size_t begin, std::size_t end, auto& b) { b.assign(end - begin, c.level); });
+  std::size_t path = 0;
+  double run = 0;
+  w.array<double>(n, [&](std::size_t begin, std::size_t end, auto& b) {
+    for (std::size_t i = begin; i < end; ++i) {
+      if (i == c.path_begin(path)) run = 0;  // arclength restarts on every path
+      else run += norm(c.points[i] - c.points[i - 1]);
+      b.push_back(run);
+      if (i + 1 == c.path_ends[path]) ++path;
+    }
+  });
+  w.array<std::int32_t>(paths, [](std::size_t begin, std::size_t end, auto& b) {
+    for (std::size_t i = begin; i < end; ++i) b.push_back(static_cast<std::int32_t>(i));
+  });
+  w.array<double>(n * 3, [&](std::size_t begin, std::size_t end, auto& b) {
+    for (std::size_t i = begin; i < end; ++i) b.push_back(i % 3 == 0 ? c.points[i / 3].x : i % 3 == 1 ? c.points[i / 3].y : 0.0);
+  });
+  w.array<std::int64_t>(n, [](std::size_t begin, std::size_t end, auto& b) {
+    for (std::size_t i = begin; i < end; ++i) b.push_back(static_cast<std::int64_t>(i));
+  });
+  w.array<std::int64_t>(paths, [&](std::size_t begin, std::size_t end, auto& b) {
+    for (std::size_t i = begin; i < end; ++i) b.push_back(static_cast<std::int64_t>(c.path_ends[i]));
+  });
+  out << "\n  </AppendedData>\n</VTKFile>\n";
+  if (!out.flush()) throw Error("cannot write '" + file.string() + "' (disk full?)");
 }
 
 Dataset read_vtp(const std::filesystem::path& file) {

@@ -32,9 +32,9 @@ Polyline two_paths() {
 TEST(SaveVtp, RoundTripKeepsPointsCellsAndFields) {
   TempDir dir;
   const Polyline c = two_paths();
-  for (bool compress : {false, true}) {
+  {
     const fs::path f = dir.path / "c.vtp";
-    io::save_curve(c, f, {.compress = compress}, no_progress());
+    io::save_curve(c, f, {}, no_progress());
     const io::Dataset d = io::read_dataset(f);
     ASSERT_EQ(d.points.size(), 5u);
     EXPECT_EQ(d.points[4], (std::array<double, 3>{3, 2.5, 0}));
