@@ -21,10 +21,14 @@ $(BUILD)/CMakeCache.txt:
 build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)
 
+# Runs the gallery, then renders each SVG to a PNG beside it (librsvg) for a quick look.
 demo: deps build
 	rm -rf out
 	$(BUILD)/selfsim run examples/gallery.lua -o out
-	@echo "Open the .vtp files in out/ with ParaView, the .svg files with a browser."
+	@for f in out/*.svg; do rsvg-convert -w 400 -b white "$$f" -o "$${f%.svg}.png"; done
+	@echo
+	@echo "Done: out/ holds .vtp files (open them in ParaView, colour by 'arclength'), .svg files (any"
+	@echo "browser) and .png previews of each: $$(ls out | wc -l) files in $$(pwd)/out"
 
 test: deps build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)

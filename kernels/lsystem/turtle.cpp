@@ -6,6 +6,7 @@
 #include <numbers>
 #include <type_traits>
 
+#include "kernels/geom/count_text.h"
 #include "kernels/geom/error.h"
 #include "kernels/geom/huge_pages.h"
 #include "kernels/geom/similarity.h"
@@ -142,9 +143,8 @@ void curve_into(const Grammar& g, const CurveOptions& opt, Progress& progress, P
   opt.validate();
   const LevelCounts counts = predict_counts(g, opt.level);
   if (counts.segments + 1 > opt.max_points)
-    throw Error("level " + std::to_string(opt.level) + " would make " + std::to_string(std::llround(counts.segments + 1)) +
-                " points, over the limit of " + std::to_string(std::llround(opt.max_points)) +
-                " (raise it with --max-points)");
+    throw Error("level " + std::to_string(opt.level) + " would make " + count_text(counts.segments + 1) +
+                " points, over the limit of " + count_text(opt.max_points) + " (raise it with --max-points)");
 
   out.points.clear();
   out.path_ends.clear();
@@ -156,31 +156,27 @@ void curve_into(const Grammar& g, const CurveOptions& opt, Progress& progress, P
   const Compiled c(g);
   const int lattice = c.lattice();
   const double start = g.start_angle(opt.level);
-  const double length = std::pow(g.shrink, opt.level);
-  Vec2 end;
+  Vec2 end;  // the turtle walks unit steps; the step length shrink^level is applied below
   if (lattice > 0) {
-    const LatticeTable table(c, lattice, start, length);
+    const LatticeTable table(c, lattice, start, 1);
     const LatticeBlocks blocks(c, table, opt.level);
     end = run_turtle(c, g.axiom, opt.level, LatticeHeading{&table}, &blocks, counts.segments, out, progress);
   } else {
-    end = run_turtle(c, g.axiom, opt.level, FreeHeading{&c, start * degree, length}, nullptr, counts.segments, out,
-                     progress);
+    end = run_turtle(c, g.axiom, opt.level, FreeHeading{&c, start * degree, 1}, nullptr, counts.segments, out, progress);
   }
   progress.fraction(1);
 
-  // Closed when the turtle ends within a tiny fraction of the distance it walked.
-  const bool closed = norm(end) <= 1e-9 * length * (counts.segments + counts.breaks);
+  // Closed when the turtle ends within a tiny fraction of the distance it walked. Open curves are
+  // normalised, so shrink never matters to them (nor can shrink^level underflow them to a point).
+  const bool closed = norm(end) <= 1e-9 * (counts.segments + counts.breaks);
+  const Similarity2 place = opt.normalize && !closed ? Similarity2::to_unit({0, 0}, end)
+                                                     : Similarity2{{std::pow(g.shrink, opt.level), 0}, {0, 0}};
   bool finite = true;
-  if (opt.normalize && !closed) {
-    const Similarity2 t = Similarity2::to_unit({0, 0}, end);
-    for (Vec2& p : out.points) {
-      p = t(p);
-      finite = finite && is_finite(p);
-    }
-  } else {
-    finite = out.finite();
+  for (Vec2& p : out.points) {
+    p = place(p);
+    finite = finite && is_finite(p);
   }
-  if (!finite) throw Error("level " + std::to_string(opt.level) + " has non-finite coordinates (shrink too small?)");
+  if (!finite) throw Error("level " + std::to_string(opt.level) + " has non-finite coordinates (shrink^level overflows)");
 }
 
 std::string expand_string(const Grammar& g, int level, double max_symbols) {
@@ -188,8 +184,8 @@ std::string expand_string(const Grammar& g, int level, double max_symbols) {
   CurveOptions{.level = level}.validate();
   const double n = predict_counts(g, level).symbols;
   if (n > max_symbols)
-    throw Error("level " + std::to_string(level) + " has " + std::to_string(std::llround(n)) +
-                " symbols, over the limit of " + std::to_string(std::llround(max_symbols)) + " for a string");
+    throw Error("level " + std::to_string(level) + " has " + count_text(n) + " symbols, over the limit of " +
+                count_text(max_symbols) + " for a string");
   std::string s = g.axiom;
   for (int d = 0; d < level; ++d) {
     std::string next;

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "kernels/geom/error.h"
+#include "kernels/geom/count_text.h"
 
 namespace selfsim::substitute {
 
@@ -79,8 +80,8 @@ Polyline substitute(const Polyline& path, const Polyline& generator, const Subst
 
   const double segments = static_cast<double>(path.segments()) * std::pow(static_cast<double>(n), opt.levels);
   if (segments + 1 > opt.max_points)
-    throw Error("levels " + std::to_string(opt.levels) + " would make " + std::to_string(std::llround(segments + 1)) +
-                " points, over the limit of " + std::to_string(std::llround(opt.max_points)) + " (raise it with --max-points)");
+    throw Error("levels " + std::to_string(opt.levels) + " would make " + count_text(segments + 1) +
+                " points, over the limit of " + count_text(opt.max_points) + " (raise it with --max-points)");
 
   Polyline result;
   result.level = opt.levels;
