@@ -47,6 +47,7 @@ namespace {
 
 // Blocks stay small enough to live in cache and to cost little to build.
 constexpr double max_block_points = 1024;
+constexpr double max_block_symbols = 16384;
 constexpr double max_table_bytes = 16 << 20;
 
 // Symbols of `s` rewritten d times, appended to out.
@@ -58,10 +59,10 @@ void expand(const Compiled& c, unsigned char s, int d, std::string& out) {
   for (char t : c.rules[static_cast<std::size_t>(c.rule[s])]) expand(c, static_cast<unsigned char>(t), d - 1, out);
 }
 
-// Drawn segments of every symbol rewritten d times.
-std::array<double, 256> segments_at(const Compiled& c, int d) {
+// Drawn segments (or all symbols) of every symbol rewritten d times.
+std::array<double, 256> count_at(const Compiled& c, int d, bool segments) {
   std::array<double, 256> w{};
-  for (int s = 0; s < 256; ++s) w[s] = c.action[s] == Action::Draw ? 1 : 0;
+  for (int s = 0; s < 256; ++s) w[s] = !segments || c.action[s] == Action::Draw ? 1 : 0;
   for (int k = 1; k <= d; ++k) {
     std::array<double, 256> next = w;
     for (int s = 0; s < 256; ++s)
@@ -80,14 +81,15 @@ LatticeBlocks::LatticeBlocks(const Compiled& c, const LatticeTable& t, int level
   block.fill(-1);
   // The deepest d whose blocks all fit the limits.
   for (int d = 1; d <= level; ++d) {
-    const auto w = segments_at(c, d);
-    double biggest = 0, bytes = 0;
+    const auto w = count_at(c, d, true), symbols = count_at(c, d, false);
+    double biggest = 0, longest = 0, bytes = 0;
     for (int s = 0; s < 256; ++s)
       if (c.rule[s] >= 0) {
         biggest = std::max(biggest, w[s]);
+        longest = std::max(longest, symbols[s]);
         bytes += w[s] * t.n * sizeof(Vec2);
       }
-    if (biggest > max_block_points || bytes > max_table_bytes) break;
+    if (biggest > max_block_points || longest > max_block_symbols || bytes > max_table_bytes) break;
     depth = d;
   }
   if (depth == 0) return;

@@ -40,6 +40,8 @@ struct Frame {
   const std::uint8_t* end;
 };
 
+constexpr double symbols_per_point = 64;
+
 const std::uint8_t* bytes(const std::string& s) { return reinterpret_cast<const std::uint8_t*>(s.data()); }
 
 // Expands depth-first into out and returns the turtle's final position. With lattice headings, a symbol
@@ -53,8 +55,10 @@ Vec2 run_turtle(const Compiled& c, const std::string& axiom, int level, Heading 
   std::vector<std::pair<Vec2, Heading>> saved;
   Vec2 pos{};
   bool path_open = false;
+  // Progress and cancellation every 2^20 points drawn, and every 2^22 rules expanded: a grammar that
+  // rewrites much and draws little must be stoppable too.
   constexpr std::size_t report_every = std::size_t{1} << 20;
-  std::size_t next_report = report_every;
+  std::size_t next_report = report_every, rewrites = 0;
   const int block_level = blocks ? level - blocks->depth : -1;  // rewritings done when blocks take over
 
   while (!frames.empty()) {
@@ -87,6 +91,7 @@ Vec2 run_turtle(const Compiled& c, const std::string& axiom, int level, Heading 
       }
       const std::string& rule = c.rules[static_cast<std::size_t>(r)];
       frames.push_back({bytes(rule), bytes(rule) + rule.size()});
+      if (++rewrites % (report_every << 2) == 0) progress.step(static_cast<double>(out.points.size()) / predicted_segments);
       continue;
     }
     switch (c.action[s]) {
@@ -145,6 +150,11 @@ void curve_into(const Grammar& g, const CurveOptions& opt, Progress& progress, P
   if (counts.segments + 1 > opt.max_points)
     throw Error("level " + std::to_string(opt.level) + " would make " + count_text(counts.segments + 1) +
                 " points, over the limit of " + count_text(opt.max_points) + " (raise it with --max-points)");
+  // Symbols that draw nothing still cost time: refuse levels that would rewrite far more than they draw.
+  if (counts.symbols > symbols_per_point * opt.max_points)
+    throw Error("level " + std::to_string(opt.level) + " would rewrite " + count_text(counts.symbols) + " symbols, over the limit of " +
+                count_text(symbols_per_point * opt.max_points) + " (" + std::to_string(static_cast<int>(symbols_per_point)) +
+                " x --max-points)");
 
   out.points.clear();
   out.path_ends.clear();

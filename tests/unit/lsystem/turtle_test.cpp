@@ -137,6 +137,16 @@ TEST(Turtle, CancellationStopsTheKernel) {
   EXPECT_THROW(curve(table1::dragon(), {.level = 22}, stop), Cancelled);
 }
 
+TEST(Turtle, RewritingWithoutDrawingIsStillCancellable) {
+  struct StopAtOnce : Progress {
+    bool cancelled() override { return true; }
+  } stop;
+  // 2^25 rules expanded and not one segment: only the rewrite count can notice the cancellation (the
+  // brackets keep X out of the precomputed blocks, which would otherwise make this instant).
+  EXPECT_THROW(curve(Grammar{.axiom = "X", .rules = {{'X', "X[]X"}}}, {.level = 25}, stop), Cancelled);
+  EXPECT_THROW(curve(Grammar{.axiom = "X", .rules = {{'X', "XX"}}}, {.level = 60}, no_progress()), Error);
+}
+
 TEST(Turtle, ExpandStringOfTheDragon) {
   EXPECT_EQ(expand_string(table1::dragon(), 2, 100), "FX-YF-FX+YF");
   EXPECT_THROW(expand_string(table1::dragon(), 30, 1e6), Error);
