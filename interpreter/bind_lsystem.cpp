@@ -13,7 +13,7 @@ namespace selfsim::interp {
 namespace {
 
 using lsystem::Grammar;
-constexpr const char* grammar_type = "selfsim.LSystem";
+constexpr const char* grammar_type = "selfsim.Grammar";
 
 char symbol_key(lua_State* L, int index, const char* table) {
   if (lua_type(L, index) != LUA_TSTRING || lua_rawlen(L, index) != 1)
@@ -75,7 +75,7 @@ Grammar read_grammar(lua_State* L, int index) {
   return g;
 }
 
-Grammar& self(lua_State* L) { return *static_cast<Grammar*>(luaL_checkudata(L, 1, grammar_type)); }
+Grammar& self(lua_State* L, const char* method) { return check_self<Grammar>(L, grammar_type, method); }
 
 // The level argument of g:string(n) / g:count(n).
 int level_argument(lua_State* L, int index) {
@@ -87,7 +87,7 @@ int level_argument(lua_State* L, int index) {
 }
 
 int grammar_curve(lua_State* L) {
-  Grammar& g = self(L);
+  Grammar& g = self(L, "curve");
   return call_kernel(L, "curve", [&] {
     RunContext& run = RunContext::of(L);
     lsystem::CurveOptions opt;
@@ -108,7 +108,7 @@ int grammar_curve(lua_State* L) {
 }
 
 int grammar_string(lua_State* L) {
-  Grammar& g = self(L);
+  Grammar& g = self(L, "string");
   return call_kernel(L, "string", [&] {
     const std::string s = lsystem::expand_string(g, level_argument(L, 2), 1e7);
     lua_pushlstring(L, s.data(), s.size());
@@ -117,7 +117,7 @@ int grammar_string(lua_State* L) {
 }
 
 int grammar_count(lua_State* L) {
-  Grammar& g = self(L);
+  Grammar& g = self(L, "count");
   return call_kernel(L, "count", [&] {
     const double n = lsystem::predict_counts(g, level_argument(L, 2)).segments;
     if (n < 9e15) lua_pushinteger(L, static_cast<lua_Integer>(n));
@@ -127,7 +127,8 @@ int grammar_count(lua_State* L) {
 }
 
 int grammar_tostring(lua_State* L) {
-  lua_pushfstring(L, "LSystem(axiom '%s', %d rules)", self(L).axiom.c_str(), static_cast<int>(self(L).rules.size()));
+  const Grammar& g = self(L, "tostring");
+  lua_pushfstring(L, "Grammar(axiom '%s', %d rules)", g.axiom.c_str(), static_cast<int>(g.rules.size()));
   return 1;
 }
 

@@ -10,7 +10,6 @@ namespace selfsim::interp {
 
 namespace {
 
-Polyline& self(lua_State* L) { return *static_cast<Polyline*>(luaL_checkudata(L, 1, curve_type)); }
 
 void push_point(lua_State* L, Vec2 p) {
   lua_createtable(L, 2, 0);
@@ -21,28 +20,34 @@ void push_point(lua_State* L, Vec2 p) {
 }
 
 int curve_points(lua_State* L) {
-  lua_pushinteger(L, static_cast<lua_Integer>(self(L).points.size()));
+  const Polyline& c = check_self<Polyline>(L, curve_type, "points");
+  lua_pushinteger(L, static_cast<lua_Integer>(c.points.size()));
   return 1;
 }
 int curve_segments(lua_State* L) {
-  lua_pushinteger(L, static_cast<lua_Integer>(self(L).segments()));
+  const Polyline& c = check_self<Polyline>(L, curve_type, "segments");
+  lua_pushinteger(L, static_cast<lua_Integer>(c.segments()));
   return 1;
 }
 int curve_paths(lua_State* L) {
-  lua_pushinteger(L, static_cast<lua_Integer>(self(L).paths()));
+  const Polyline& c = check_self<Polyline>(L, curve_type, "paths");
+  lua_pushinteger(L, static_cast<lua_Integer>(c.paths()));
   return 1;
 }
 int curve_length(lua_State* L) {
-  lua_pushnumber(L, self(L).length());
+  const Polyline& c = check_self<Polyline>(L, curve_type, "length");
+  lua_pushnumber(L, c.length());
   return 1;
 }
 int curve_level(lua_State* L) {
-  lua_pushinteger(L, self(L).level);
+  const Polyline& c = check_self<Polyline>(L, curve_type, "level");
+  lua_pushinteger(L, c.level);
   return 1;
 }
 // {min = {x, y}, max = {x, y}}
 int curve_bbox(lua_State* L) {
-  const BBox2 b = self(L).bbox();
+  const Polyline& c = check_self<Polyline>(L, curve_type, "bbox");
+  const BBox2 b = c.bbox();
   lua_createtable(L, 0, 2);
   push_point(L, b.min);
   lua_setfield(L, -2, "min");
@@ -52,7 +57,7 @@ int curve_bbox(lua_State* L) {
 }
 // c:point(i): the i-th point (1-based) as {x, y}, for checks in recipes; no bulk export to Lua.
 int curve_point(lua_State* L) {
-  const Polyline& c = self(L);
+  const Polyline& c = check_self<Polyline>(L, curve_type, "point");
   const lua_Integer i = luaL_checkinteger(L, 2);
   if (i < 1 || i > static_cast<lua_Integer>(c.points.size()))
     return luaL_error(L, "point: index %d out of range [1, %d]", static_cast<int>(i), static_cast<int>(c.points.size()));
@@ -60,7 +65,7 @@ int curve_point(lua_State* L) {
   return 1;
 }
 int curve_tostring(lua_State* L) {
-  const Polyline& c = self(L);
+  const Polyline& c = check_self<Polyline>(L, curve_type, "tostring");
   lua_pushfstring(L, "Curve(%d points, %d paths, level %d)", static_cast<int>(c.points.size()), static_cast<int>(c.paths()), c.level);
   return 1;
 }

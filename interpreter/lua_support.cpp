@@ -33,6 +33,7 @@ std::string describe(lua_State* L, int index) {
     }
     case LUA_TSTRING: return "'" + std::string(lua_tostring(L, index)) + "'";
     case LUA_TNIL: return "nil";
+    case LUA_TNONE: return "nothing";
     case LUA_TBOOLEAN: return lua_toboolean(L, index) ? "true" : "false";
     default: {
       const char* name = luaL_typename(L, index);

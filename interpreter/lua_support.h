@@ -59,6 +59,15 @@ T* test_value(lua_State* L, int index, const char* type) {
   return static_cast<T*>(luaL_testudata(L, index, type));
 }
 
+// The method's receiver (argument 1) as a T, or a recipe error that points at the usual slip, a '.'
+// written for ':'.
+template <class T>
+T& check_self(lua_State* L, const char* type, const char* method) {
+  if (T* v = test_value<T>(L, 1, type)) return *v;
+  const std::string name = std::string(type).substr(std::string(type).find('.') + 1);
+  raise_error(L, method, "expected a " + name + " before ':' (write value:" + method + "(...)), got " + describe(L, 1));
+}
+
 // Registers a metatable for T: __name, __gc (runs ~T), __index = the given methods.
 template <class T>
 void register_type(lua_State* L, const char* type, const luaL_Reg* methods, lua_CFunction tostring) {

@@ -1,0 +1,3 @@
+local curves = require "selfsim.curves"
+local g = curves.dragon()
+local c = g.curve { level = 3 }
