@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <numbers>
 
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
@@ -17,6 +18,41 @@ void push_point(lua_State* L, Vec2 p) {
   lua_rawseti(L, -2, 1);
   lua_pushnumber(L, p.y);
   lua_rawseti(L, -2, 2);
+}
+
+// {x, y} at index, both finite numbers.
+Vec2 read_point(lua_State* L, int index, const std::string& what) {
+  index = lua_absindex(L, index);
+  if (lua_type(L, index) != LUA_TTABLE || lua_rawlen(L, index) != 2) throw Error(what + " must be {x, y}, got " + describe(L, index));
+  lua_rawgeti(L, index, 1);
+  lua_rawgeti(L, index, 2);
+  Vec2 p;
+  try {
+    p = {finite_number(L, -2, what + " x"), finite_number(L, -1, what + " y")};
+  } catch (...) {
+    lua_pop(L, 2);
+    throw;
+  }
+  lua_pop(L, 2);
+  return p;
+}
+
+std::vector<Vec2> read_points(lua_State* L, int index, const std::string& what) {
+  if (lua_type(L, index) != LUA_TTABLE)
+    throw Error((what.empty() ? "argument" : what) + " must be a curve or a table of {x, y} points, got " + describe(L, index));
+  std::vector<Vec2> pts;
+  const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, index));
+  for (lua_Integer i = 1; i <= n; ++i) {
+    lua_rawgeti(L, index, i);
+    try {
+      pts.push_back(read_point(L, -1, (what.empty() ? "" : what + " ") + "point " + std::to_string(i)));
+    } catch (...) {
+      lua_pop(L, 1);
+      throw;
+    }
+    lua_pop(L, 1);
+  }
+  return pts;
 }
 
 int curve_points(lua_State* L) {
@@ -64,38 +100,37 @@ int curve_point(lua_State* L) {
   push_point(L, c.points[static_cast<std::size_t>(i - 1)]);
   return 1;
 }
+// c:transform{ mirror, scale, rotate, translate } -> a new curve: mirrored across the x axis, scaled
+// about the origin, rotated by degrees counterclockwise, then translated, in that order.
+int curve_transform(lua_State* L) {
+  const Polyline& c = check_self<Polyline>(L, curve_type, "transform");
+  return call_kernel(L, "transform", [&] {
+    Options o(L, 2);
+    const bool mirror = o.boolean("mirror", false);
+    const double scale = o.number("scale", 1);
+    const double degrees = o.number("rotate", 0);
+    Vec2 shift{};
+    if (o.push("translate") != LUA_TNIL) {
+      try {
+        shift = read_point(L, -1, "option 'translate'");
+      } catch (...) {
+        lua_pop(L, 1);
+        throw;
+      }
+    }
+    lua_pop(L, 1);
+    o.finish();
+    if (!(scale != 0)) throw Error("option 'scale' must be non-zero");
+    const Similarity2 t{scale * polar(degrees * std::numbers::pi / 180), shift, mirror};
+    push_curve(L, transformed(c, t));
+    return 1;
+  });
+}
+
 int curve_tostring(lua_State* L) {
   const Polyline& c = check_self<Polyline>(L, curve_type, "tostring");
   lua_pushfstring(L, "Curve(%d points, %d paths, level %d)", static_cast<int>(c.points.size()), static_cast<int>(c.paths()), c.level);
   return 1;
-}
-
-std::vector<Vec2> read_points(lua_State* L, int index, const std::string& what) {
-  if (lua_type(L, index) != LUA_TTABLE)
-    throw Error((what.empty() ? "argument" : what) + " must be a curve or a table of {x, y} points, got " + describe(L, index));
-  std::vector<Vec2> pts;
-  const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, index));
-  for (lua_Integer i = 1; i <= n; ++i) {
-    lua_rawgeti(L, index, i);
-    const std::string at = (what.empty() ? "" : what + " ") + "point " + std::to_string(i);
-    if (lua_type(L, -1) != LUA_TTABLE || lua_rawlen(L, -1) != 2) {
-      const std::string got = describe(L, -1);
-      lua_pop(L, 1);
-      throw Error(at + " must be {x, y}, got " + got);
-    }
-    Vec2 p;
-    lua_rawgeti(L, -1, 1);
-    lua_rawgeti(L, -2, 2);
-    try {
-      p = {finite_number(L, -2, at + " x"), finite_number(L, -1, at + " y")};
-    } catch (...) {
-      lua_pop(L, 3);
-      throw;
-    }
-    lua_pop(L, 3);
-    pts.push_back(p);
-  }
-  return pts;
 }
 
 int make_polyline(lua_State* L, const char* fn, bool closed) {
@@ -129,7 +164,7 @@ Polyline to_polyline(lua_State* L, int index, const std::string& what) {
 void open_curve(lua_State* L) {
   static const luaL_Reg methods[] = {{"points", curve_points}, {"segments", curve_segments}, {"paths", curve_paths},
                                      {"length", curve_length}, {"level", curve_level},       {"bbox", curve_bbox},
-                                     {"point", curve_point},   {nullptr, nullptr}};
+                                     {"point", curve_point},   {"transform", curve_transform}, {nullptr, nullptr}};
   register_type<Polyline>(L, curve_type, methods, curve_tostring);
   lua_register(L, "polyline", [](lua_State* S) { return make_polyline(S, "polyline", false); });
   lua_register(L, "polygon", [](lua_State* S) { return make_polyline(S, "polygon", true); });

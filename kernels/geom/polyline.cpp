@@ -39,4 +39,10 @@ void Polyline::close_path() {
   if (points.size() > begin) path_ends.push_back(points.size());
 }
 
+Polyline transformed(const Polyline& c, const Similarity2& t) {
+  Polyline out = c;
+  for (Vec2& p : out.points) p = t(p);
+  return out;
+}
+
 }  // namespace selfsim

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "kernels/geom/bbox.h"
+#include "kernels/geom/similarity.h"
 #include "kernels/geom/vec2.h"
 
 namespace selfsim {
@@ -34,5 +35,8 @@ struct Polyline {
   // Ends the current path at the current end of `points` (no-op for an empty path).
   void close_path();
 };
+
+// c with every point mapped by t (paths and level kept).
+Polyline transformed(const Polyline& c, const Similarity2& t);
 
 }  // namespace selfsim

@@ -1,4 +1,5 @@
-// Orientation-preserving similarity of the plane, T(z) = a·z + b on complex numbers (seed 003 §1).
+// Similarity of the plane on complex numbers (seed 003 §1): T(z) = a·z + b, orientation-preserving, or
+// T(z) = a·conj(z) + b when mirrored (seed 000's reflected copies).
 #pragma once
 
 #include "kernels/geom/vec2.h"
@@ -7,8 +8,14 @@ namespace selfsim {
 
 struct Similarity2 {
   Vec2 a{1, 0}, b{0, 0};
+  bool mirrored = false;
 
-  Vec2 operator()(Vec2 z) const { return a * z + b; }
+  Vec2 operator()(Vec2 z) const { return a * (mirrored ? conj(z) : z) + b; }
+
+  // this ∘ inner: apply inner first.
+  Similarity2 after(const Similarity2& inner) const {
+    return {a * (mirrored ? conj(inner.a) : inner.a), (*this)(inner.b), mirrored != inner.mirrored};
+  }
 
   // The similarity taking 0 to p and 1 to q (p != q).
   static Similarity2 from_segment(Vec2 p, Vec2 q) { return {q - p, p}; }

@@ -3,27 +3,15 @@
 #include <cmath>
 #include <string>
 
-#include "kernels/geom/error.h"
 #include "kernels/geom/count_text.h"
+#include "kernels/geom/error.h"
+#include "kernels/geom/similarity.h"
 
 namespace selfsim::substitute {
 
 namespace {
 
-// A similarity that may reverse orientation: z -> a·z + b, or a·conj(z) + b when mirrored.
-struct Map {
-  Vec2 a{1, 0}, b{};
-  bool mirrored = false;
-
-  Vec2 operator()(Vec2 z) const { return a * (mirrored ? conj(z) : z) + b; }
-  // this ∘ m
-  Map then_inner(const Map& m) const {
-    const Vec2 ma = mirrored ? conj(m.a) : m.a;
-    return {a * ma, (*this)(m.b), mirrored != m.mirrored};
-  }
-};
-
-Map transform_map(SegmentTransform t) {
+Similarity2 transform_map(SegmentTransform t) {
   switch (t) {
     case SegmentTransform::Identity: return {};
     case SegmentTransform::ReflectSegment: return {{1, 0}, {0, 0}, true};
@@ -36,14 +24,14 @@ Map transform_map(SegmentTransform t) {
 bool reverses(SegmentTransform t) { return t == SegmentTransform::ReflectBisector || t == SegmentTransform::HalfTurn; }
 
 struct Substitution {
-  std::vector<Map> child;         // generator segment i as a map of the unit segment, transform included
-  std::vector<bool> child_reversed;
+  std::vector<Similarity2> child;  // generator segment i as a map of the unit segment, transform included
+  std::vector<bool> child_reversed;  // true where that copy is walked backwards
   std::vector<Vec2>& out;
   Progress& progress;
   double total;
 
   // Appends the end points of M's copy, `level` rounds deep, walking it forwards or backwards.
-  void emit(const Map& m, int level, bool forward) {
+  void emit(const Similarity2& m, int level, bool forward) {
     if (level == 0) {
       out.push_back(m(forward ? Vec2{1, 0} : Vec2{0, 0}));
       if (out.size() % (1u << 20) == 0) progress.step(static_cast<double>(out.size()) / total);
@@ -52,7 +40,7 @@ struct Substitution {
     const std::size_t n = child.size();
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t i = forward ? k : n - 1 - k;
-      emit(m.then_inner(child[i]), level - 1, forward != child_reversed[i]);
+      emit(m.after(child[i]), level - 1, forward != child_reversed[i]);
     }
   }
 };
@@ -90,13 +78,12 @@ Polyline substitute(const Polyline& path, const Polyline& generator, const Subst
   Substitution s{{}, {}, result.points, progress, segments + 1};
   for (std::size_t i = 0; i < n; ++i) {
     const SegmentTransform t = opt.transforms.empty() ? SegmentTransform::Identity : opt.transforms[i];
-    const Map segment{g[i + 1] - g[i], g[i], false};
-    s.child.push_back(segment.then_inner(transform_map(t)));
+    s.child.push_back(Similarity2::from_segment(g[i], g[i + 1]).after(transform_map(t)));
     s.child_reversed.push_back(reverses(t));
   }
   const auto p = path.path(0);
   result.points.push_back(p.front());
-  for (std::size_t k = 0; k + 1 < p.size(); ++k) s.emit(Map{p[k + 1] - p[k], p[k], false}, opt.levels, true);
+  for (std::size_t k = 0; k + 1 < p.size(); ++k) s.emit(Similarity2::from_segment(p[k], p[k + 1]), opt.levels, true);
   result.close_path();
   if (!result.finite()) throw Error("substitution produced non-finite coordinates");
   return result;

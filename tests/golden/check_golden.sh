@@ -8,10 +8,16 @@ set -euo pipefail
 selfsim=$1 src=$2 case=$3 recipe=$4
 shift 4
 expected="$src/tests/golden/$case"
-actual=$(mktemp -d)
-trap 'rm -rf "$actual"' EXIT
+actual=$(mktemp -d) again=$(mktemp -d)
+trap 'rm -rf "$actual" "$again"' EXIT
 
 "$selfsim" run "$src/$recipe" -o "$actual" -q "$@"
+# Same recipe, same seed: byte-identical files.
+"$selfsim" run "$src/$recipe" -o "$again" -q "$@"
+if ! diff -r "$actual" "$again" >/dev/null; then
+  echo "$case: two runs wrote different bytes"
+  exit 1
+fi
 
 if [ "${SELFSIM_REGENERATE_GOLDEN:-0}" = 1 ]; then
   mkdir -p "$expected"

@@ -25,6 +25,30 @@ TEST(Similarity2, SegmentMapsAndTheirInverse) {
   EXPECT_NEAR(norm(g(f(z)) - z), 0, 1e-15);
 }
 
+TEST(Similarity2, MirroredMapsCompose) {
+  const Similarity2 m{{0, 2}, {1, 0}, true};  // z -> 2i·conj(z) + 1
+  const Vec2 z{0.25, 0.5};
+  EXPECT_EQ(m(z), (Vec2{2, 0.5}));           // 2i·(0.25 - 0.5i) + 1 = 1 + 1 + 0.5i
+  const Similarity2 mm = m.after(m);
+  EXPECT_FALSE(mm.mirrored);                 // two reflections make a direct similarity
+  EXPECT_NEAR(norm(mm(z) - m(m(z))), 0, 1e-15);
+  const Similarity2 d{{0.5, 0.5}, {0, 1}};
+  EXPECT_NEAR(norm(m.after(d)(z) - m(d(z))), 0, 1e-15);
+  EXPECT_NEAR(norm(d.after(m)(z) - d(m(z))), 0, 1e-15);
+}
+
+TEST(Polyline, TransformedKeepsPaths) {
+  Polyline c;
+  c.points = {{0, 0}, {1, 0}, {5, 5}, {5, 6}};
+  c.path_ends = {2, 4};
+  c.level = 3;
+  const Polyline t = transformed(c, {{0, 1}, {1, 1}});  // quarter turn, then shift by (1, 1)
+  EXPECT_EQ(t.path_ends, c.path_ends);
+  EXPECT_EQ(t.level, 3);
+  EXPECT_EQ(t.points[1], (Vec2{1, 2}));
+  EXPECT_DOUBLE_EQ(t.length(), c.length());
+}
+
 TEST(Polyline, PathsAndLength) {
   Polyline c;
   c.points = {{0, 0}, {3, 4}, {3, 5}, {10, 10}, {10, 12}};
