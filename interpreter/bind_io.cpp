@@ -31,8 +31,6 @@ io::SaveOptions read_save_options(lua_State* L, int index) {
   s.fill = o.string("fill", s.fill);
   s.size = o.number("size", s.size);
   o.finish();
-  if (!(s.stroke_width > 0)) throw Error("option 'stroke_width' must be positive");
-  if (!(s.size >= 16 && s.size <= 100000)) throw Error("option 'size' must be in [16, 100000] pixels");
   return s;
 }
 

@@ -34,7 +34,13 @@ const std::vector<std::string>& curve_extensions() {
   return ext;
 }
 
+void SaveOptions::validate() const {
+  if (!(stroke_width > 0 && stroke_width < 1e6)) throw Error("option 'stroke_width' must be a positive number of pixels");
+  if (!(size >= 16 && size <= 100000)) throw Error("option 'size' must be in [16, 100000] pixels");
+}
+
 void save_curve(const Polyline& c, const std::filesystem::path& file, const SaveOptions& opt, Progress& progress) {
+  opt.validate();
   const std::string ext = file.extension().string();
   const auto& known = curve_extensions();
   if (std::find(known.begin(), known.end(), ext) == known.end())

@@ -18,6 +18,9 @@ struct SaveOptions {
   double stroke_width = 1;        // .svg: stroke width in screen pixels, whatever the curve's scale
   std::string fill;               // .svg: fill colour with the even-odd rule; empty for no fill
   double size = 800;              // .svg: width or height in pixels, whichever is larger
+
+  // Throws Error naming the first bad field.
+  void validate() const;
 };
 
 // Extensions a Polyline can be saved as, with the dot (".svg", ".vtp").

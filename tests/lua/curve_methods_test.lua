@@ -1,5 +1,5 @@
 -- Curve values from the recipe's side: constructors, counts, bbox, points and transform.
-local function near(a, b) return math.abs(a - b) <= 1e-12 end
+local near = require("test_helpers").near
 
 local c = polyline { { 0, 0 }, { 3, 0 }, { 3, 4 } }
 assert(c:points() == 3 and c:segments() == 2 and c:paths() == 1)

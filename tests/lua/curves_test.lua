@@ -1,7 +1,7 @@
 -- The shipped curves (scripts/selfsim/curves.lua) against their closed forms, through the DSL itself.
 local curves = require "selfsim.curves"
 
-local function near(a, b, tol) return math.abs(a - b) <= (tol or 1e-9) end
+local near = require("test_helpers").near
 
 local counts = {
   dragon = function(n) return 2 ^ n end,

@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# The command line's contract: exit codes 0 / 1 / 2, help and version, diff and info on real files.
+# usage: check_cli.sh SELFSIM SOURCE_DIR
+set -uo pipefail
+selfsim=$1 src=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failures=0
+expect() {  # expect CODE DESCRIPTION -- COMMAND...
+  local want=$1 what=$2
+  shift 3
+  "$@" >"$tmp/out" 2>"$tmp/err"
+  local got=$?
+  if [ "$got" != "$want" ]; then
+    echo "FAIL: $what: exit $got, expected $want"; cat "$tmp/err"; failures=$((failures + 1))
+  fi
+}
+contains() {  # contains FILE TEXT DESCRIPTION
+  if ! grep -qF -- "$2" "$1"; then echo "FAIL: $3: no '$2' in $(head -c 300 "$1")"; failures=$((failures + 1)); fi
+}
+
+expect 0 "help" -- "$selfsim" --help
+contains "$tmp/out" "selfsim run RECIPE.lua" "help lists run"
+expect 0 "version" -- "$selfsim" --version
+contains "$tmp/out" "selfsim 0." "version"
+expect 2 "no command" -- "$selfsim"
+expect 2 "unknown command" -- "$selfsim" frobnicate
+contains "$tmp/err" "unknown command 'frobnicate'" "unknown command message"
+expect 2 "missing recipe" -- "$selfsim" run "$tmp/nope.lua"
+contains "$tmp/err" "cannot open recipe" "missing recipe message"
+expect 2 "bad --max-points" -- "$selfsim" run "$src/examples/plant.lua" --max-points lots
+
+# A real run, then info and diff on what it wrote.
+expect 0 "run plant" -- "$selfsim" run "$src/examples/plant.lua" -o "$tmp/a" --set level=2
+contains "$tmp/out" "wrote $tmp/a/plant.vtp (26 points)" "run reports its files"
+expect 0 "run plant again" -- "$selfsim" run "$src/examples/plant.lua" -o "$tmp/b" --set level=2 -q
+[ -s "$tmp/out" ] && { echo "FAIL: -q printed $(cat "$tmp/out")"; failures=$((failures + 1)); }
+expect 0 "run plant level 3" -- "$selfsim" run "$src/examples/plant.lua" -o "$tmp/c" --set level=3 -q
+expect 0 "unused --set only warns" -- "$selfsim" run "$src/examples/plant.lua" -o "$tmp/d" --set level=1 --set levl=3 -q
+contains "$tmp/err" "--set levl=3 was not read" "unused --set warning"
+
+expect 0 "info" -- "$selfsim" info "$tmp/a/plant.vtp"
+contains "$tmp/out" "points: 26" "info points"
+contains "$tmp/out" "cells: 8" "info cells"
+contains "$tmp/out" "point field: arclength" "info fields"
+expect 0 "diff same" -- "$selfsim" diff "$tmp/a/plant.vtp" "$tmp/b/plant.vtp"
+expect 0 "diff same svg" -- "$selfsim" diff "$tmp/a/plant.svg" "$tmp/b/plant.svg"
+expect 1 "diff different" -- "$selfsim" diff "$tmp/a/plant.vtp" "$tmp/c/plant.vtp"
+contains "$tmp/out" "point count differs" "diff message"
+expect 2 "diff missing file" -- "$selfsim" diff "$tmp/a/plant.vtp" "$tmp/none.vtp"
+expect 2 "diff bad tolerance" -- "$selfsim" diff "$tmp/a/plant.vtp" "$tmp/b/plant.vtp" --tol x
+
+echo "$failures failures"
+[ "$failures" = 0 ]
