@@ -1,6 +1,4 @@
 // substitute{ path, generator, levels, transforms } -> Curve. A thin adapter over kernels/substitute.
-#include <algorithm>
-
 #include "interpreter/bindings.h"
 #include "interpreter/curve_value.h"
 #include "interpreter/lua_support.h"
@@ -23,13 +21,7 @@ std::vector<SegmentTransform> read_transforms(lua_State* L) {
     lua_rawgeti(L, -1, i);
     const std::string name = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : describe(L, -1);
     lua_pop(L, 1);
-    const auto it = std::find(transform_names.begin(), transform_names.end(), name);
-    if (it == transform_names.end()) {
-      std::string list;
-      for (const auto& n : transform_names) list += (list.empty() ? "'" : ", '") + n + "'";
-      throw Error("invalid transform '" + name + "' (entry " + std::to_string(i) + "), expected one of: " + list);
-    }
-    out.push_back(static_cast<SegmentTransform>(it - transform_names.begin()));
+    out.push_back(static_cast<SegmentTransform>(enum_index(name, transform_names, "transform", " (entry " + std::to_string(i) + ")")));
   }
   return out;
 }

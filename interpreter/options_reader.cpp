@@ -132,14 +132,11 @@ std::string Options::string(const char* key, const std::string& fallback) {
   return v;
 }
 
-int Options::choice(const char* key, const std::vector<std::string>& names, int fallback) {
-  if (!has(key)) return fallback;
-  const std::string v = string(key, "");
+int enum_index(const std::string& value, const std::vector<std::string>& names, const std::string& what,
+               const std::string& detail) {
   for (std::size_t i = 0; i < names.size(); ++i)
-    if (names[i] == v) return static_cast<int>(i);
-  std::string list;
-  for (const auto& n : names) list += (list.empty() ? "'" : ", '") + n + "'";
-  throw Error("invalid " + std::string(key) + " '" + v + "', expected one of: " + list);
+    if (names[i] == value) return static_cast<int>(i);
+  throw Error("invalid " + what + " '" + value + "'" + detail + ", expected one of: " + quoted_list(names));
 }
 
 void Options::finish() {

@@ -22,8 +22,6 @@ class Options {
   long long integer(const char* key, long long fallback, long long lo, long long hi);
   bool boolean(const char* key, bool fallback);
   std::string string(const char* key, const std::string& fallback);
-  // One of `names`, returned as its index.
-  int choice(const char* key, const std::vector<std::string>& names, int fallback);
   // Pushes the value at key (marking it read) and returns its Lua type; the caller pops it.
   int push(const char* key);
   // Throws Error naming the first key that no reader asked for.
@@ -37,6 +35,10 @@ class Options {
 
 // A number read from the value on top of the stack, checked finite; `what` names it in errors.
 double finite_number(lua_State* L, int index, const std::string& what);
+
+// The index of `value` in `names`, or an Error: "invalid <what> 'x'<detail>, expected one of: 'a', 'b'".
+int enum_index(const std::string& value, const std::vector<std::string>& names, const std::string& what,
+               const std::string& detail = "");
 
 // The closest of `candidates` to `word` by edit distance, if close enough to be a likely typo.
 std::string suggestion(const std::string& word, const std::vector<std::string>& candidates);

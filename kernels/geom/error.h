@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace selfsim {
 
@@ -15,5 +16,12 @@ struct Error : std::runtime_error {
 struct Cancelled : Error {
   Cancelled() : Error("cancelled") {}
 };
+
+// "'a', 'b', 'c'": the valid values, for messages about a wrong one.
+inline std::string quoted_list(const std::vector<std::string>& items) {
+  std::string s;
+  for (const auto& i : items) s += (s.empty() ? "'" : ", '") + i + "'";
+  return s;
+}
 
 }  // namespace selfsim

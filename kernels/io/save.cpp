@@ -9,12 +9,6 @@ namespace selfsim::io {
 
 namespace {
 
-std::string list(const std::vector<std::string>& items) {
-  std::string s;
-  for (const auto& i : items) s += (s.empty() ? "'" : ", '") + i + "'";
-  return s;
-}
-
 // Removes the temporary file unless the write got as far as renaming it.
 struct TemporaryFile {
   std::filesystem::path path;
@@ -44,7 +38,7 @@ void save_curve(const Polyline& c, const std::filesystem::path& file, const Save
   const std::string ext = file.extension().string();
   const auto& known = curve_extensions();
   if (std::find(known.begin(), known.end(), ext) == known.end())
-    throw Error("cannot save a curve as '" + ext + "' (file '" + file.filename().string() + "'), expected one of: " + list(known));
+    throw Error("cannot save a curve as '" + ext + "' (file '" + file.filename().string() + "'), expected one of: " + quoted_list(known));
   if (c.points.empty()) throw Error("cannot save an empty curve to '" + file.filename().string() + "'");
   if (!c.finite()) throw Error("cannot save '" + file.filename().string() + "': the curve has non-finite coordinates");
   const std::string task = "writing " + file.filename().string();
