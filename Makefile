@@ -3,7 +3,8 @@ BUILD      ?= build
 SANITIZE_BUILD ?= build-sanitize
 JOBS       ?= $(shell nproc)
 PACKAGES   := cmake g++ make libopenvdb-dev libboost-iostreams-dev liblua5.4-dev libopenmesh-dev libvtk9-dev \
-              libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev python3-vtk9 xvfb xauth librsvg2-bin
+              libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev python3-vtk9 xvfb xauth libgl1-mesa-dri \
+              libglx-mesa0 librsvg2-bin
 
 .PHONY: deps build demo test sanitize bench clean
 

@@ -1,6 +1,8 @@
 #include "kernels/io/save.h"
 
 #include <algorithm>
+#include <cctype>
+#include <string_view>
 #include <unistd.h>
 
 #include "kernels/geom/error.h"
@@ -28,7 +30,21 @@ const std::vector<std::string>& curve_extensions() {
   return ext;
 }
 
+namespace {
+
+// A CSS colour ("#1d3557", "steelblue", "rgb(10, 20, 30)"): nothing that could end the SVG attribute.
+bool colour_like(const std::string& c) {
+  return !c.empty() && c.size() < 64 && std::all_of(c.begin(), c.end(), [](char ch) {
+    return std::isalnum(static_cast<unsigned char>(ch)) || std::string_view("#(),.% ").find(ch) != std::string_view::npos;
+  });
+}
+
+}  // namespace
+
 void SaveOptions::validate() const {
+  if (!colour_like(stroke)) throw Error("option 'stroke' must be a colour such as '#1d3557' or 'black', got '" + stroke + "'");
+  if (!fill.empty() && !colour_like(fill))
+    throw Error("option 'fill' must be a colour such as '#a8dadc' or 'none', got '" + fill + "'");
   if (!(stroke_width > 0 && stroke_width < 1e6)) throw Error("option 'stroke_width' must be a positive number of pixels");
   if (!(size >= 16 && size <= 100000)) throw Error("option 'size' must be in [16, 100000] pixels");
 }

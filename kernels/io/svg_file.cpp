@@ -32,8 +32,12 @@ void write_svg(const Polyline& c, const std::filesystem::path& file, const SaveO
   extent = extent + Vec2{2 * margin, 2 * margin};
   const double px = opt.size / std::max(extent.x, extent.y);
 
-  std::string s;
-  s.reserve(c.points.size() * 22 + 512);
+  std::ofstream out(file, std::ios::binary);
+  std::string s;  // written out every megabyte or so: memory stays flat whatever the curve
+  auto flush = [&] {
+    out.write(s.data(), static_cast<std::streamsize>(s.size()));
+    s.clear();
+  };
   s += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"";
   put(s, extent.x * px);
   s += "\" height=\"";
@@ -58,13 +62,12 @@ void write_svg(const Polyline& c, const std::filesystem::path& file, const SaveO
       s += ' ';
       put(s, p.y);
       cmd = cmd == 'M' ? 'L' : ' ';
+      if (s.size() > (1u << 20)) flush();
     }
   }
   s += "\"/>\n</g>\n</svg>\n";
-
-  std::ofstream out(file, std::ios::binary);
-  out.write(s.data(), static_cast<std::streamsize>(s.size()));
-  if (!out.flush()) throw Error("cannot write '" + file.string() + "'");
+  flush();
+  if (!out.flush()) throw Error("cannot write '" + file.string() + "' (disk full?)");
 }
 
 Dataset read_svg(const std::filesystem::path& file) {
