@@ -22,6 +22,12 @@ Polyline run(const Polyline& path, const Polyline& generator, int levels, std::v
   return substitute::substitute(path, generator, {.levels = levels, .transforms = std::move(t)}, no_progress());
 }
 
+// Points of two curves agree to rounding.
+void expect_same(const Polyline& a, const Polyline& b, int level) {
+  ASSERT_EQ(a.points.size(), b.points.size()) << level;
+  for (std::size_t i = 0; i < a.points.size(); ++i) ASSERT_NEAR(norm(a.points[i] - b.points[i]), 0, 1e-12) << level << " " << i;
+}
+
 }  // namespace
 
 TEST(Substitute, KochSnowflakeEqualsTheLSystem) {
@@ -32,6 +38,19 @@ TEST(Substitute, KochSnowflakeEqualsTheLSystem) {
     ASSERT_EQ(a.points.size(), b.points.size());
     for (std::size_t i = 0; i < a.points.size(); ++i) ASSERT_NEAR(norm(a.points[i] - b.points[i]), 0, 1e-12) << n << " " << i;
   }
+}
+
+TEST(Substitute, HeighwayDragonIsATentWithItsSecondHalfTurned) {
+  // f1(z) = (1+i)z/2 and f2(z) = 1 - (1-i)z/2: the second copy is the half-turned one, walked backwards.
+  using enum SegmentTransform;
+  for (int n = 0; n <= 10; ++n)
+    expect_same(run(unit, tent, n, {Identity, HalfTurn}), lsystem::curve(table1::dragon(), {.level = n}, no_progress()), n);
+}
+
+TEST(Substitute, TerdragonIsItsFirstLevel) {
+  const Polyline first = lsystem::curve(table1::terdragon(), {.level = 1}, no_progress());
+  for (int n = 0; n <= 6; ++n)
+    expect_same(run(unit, first, n), lsystem::curve(table1::terdragon(), {.level = n}, no_progress()), n);
 }
 
 TEST(Substitute, CountsAndLevel) {
