@@ -47,11 +47,9 @@ std::string describe(lua_State* L, int index) {
   }
 }
 
-void raise_error(lua_State* L, const char* fn, const std::string& message) {
+void push_error(lua_State* L, const char* fn, const std::string& message) {
   const std::string where = recipe_where(L);
   lua_pushfstring(L, "%s%s: %s", where.c_str(), fn, message.c_str());
-  lua_error(L);
-  std::abort();  // lua_error does not return
 }
 
 std::string cancel_message(lua_State* L) {

@@ -18,8 +18,9 @@ std::string recipe_where(lua_State* L);
 // Describes a Lua value for an error message: 41, 'abc', a table, nil.
 std::string describe(lua_State* L, int index);
 
-// Raises "where: fn: message" as a Lua error. Never returns.
-[[noreturn]] void raise_error(lua_State* L, const char* fn, const std::string& message);
+// Pushes "where: fn: message", the error for the recipe line that called fn. Raise it with lua_error once
+// no C++ object with a destructor is alive in the frame: lua_error longjmps past destructors.
+void push_error(lua_State* L, const char* fn, const std::string& message);
 
 // Message for a cancelled kernel: the timeout or the interrupt that caused it.
 std::string cancel_message(lua_State* L);
@@ -29,19 +30,22 @@ std::string cancel_message(lua_State* L);
 // body must not raise Lua errors itself (use the Options reader, which throws selfsim::Error).
 template <class Body>
 int call_kernel(lua_State* L, const char* fn, Body&& body) {
-  std::string message;
-  try {
-    return std::forward<Body>(body)();
-  } catch (const Cancelled&) {
-    message = cancel_message(L);
-  } catch (const Error& e) {
-    message = e.what();
-  } catch (const std::bad_alloc&) {
-    message = "out of memory (lower the level, or the size of the request)";
-  } catch (const std::exception& e) {
-    message = std::string("internal error: ") + e.what();
-  }
-  raise_error(L, fn, message);
+  {
+    std::string message;
+    try {
+      return std::forward<Body>(body)();
+    } catch (const Cancelled&) {
+      message = cancel_message(L);
+    } catch (const Error& e) {
+      message = e.what();
+    } catch (const std::bad_alloc&) {
+      message = "out of memory (lower the level, or the size of the request)";
+    } catch (const std::exception& e) {
+      message = std::string("internal error: ") + e.what();
+    }
+    push_error(L, fn, message);
+  }  // message freed before the longjmp
+  return lua_error(L);
 }
 
 // A C++ value living in a Lua userdata whose metatable is registered under `type` (its __name).
@@ -64,8 +68,12 @@ T* test_value(lua_State* L, int index, const char* type) {
 template <class T>
 T& check_self(lua_State* L, const char* type, const char* method) {
   if (T* v = test_value<T>(L, 1, type)) return *v;
-  const std::string name = std::string(type).substr(std::string(type).find('.') + 1);
-  raise_error(L, method, "expected a " + name + " before ':' (write value:" + method + "(...)), got " + describe(L, 1));
+  {
+    const std::string name = std::string(type).substr(std::string(type).find('.') + 1);
+    push_error(L, method, "expected a " + name + " before ':' (write value:" + method + "(...)), got " + describe(L, 1));
+  }
+  lua_error(L);
+  std::abort();  // not reached: lua_error does not return
 }
 
 // Registers a metatable for T: __name, __gc (runs ~T), __index = the given methods.

@@ -1,7 +1,10 @@
 #include "interpreter/sandbox.h"
 
+#include <algorithm>
 #include <cctype>
 #include <string>
+
+#include "interpreter/lua_support.h"
 
 namespace selfsim::interp {
 
@@ -11,10 +14,13 @@ const char* const loaded_key = "selfsim.loaded";
 
 // Stops the script between instructions once the run is cancelled; the message carries the line it was on.
 void stop_hook(lua_State* L, lua_Debug* ar) {
-  const std::string reason = RunContext::of(L).stop_reason();
-  if (reason.empty()) return;
-  lua_getinfo(L, "Sl", ar);
-  luaL_error(L, "%s:%d: %s", ar->short_src, ar->currentline, reason.c_str());
+  {
+    const std::string reason = RunContext::of(L).stop_reason();
+    if (reason.empty()) return;
+    lua_getinfo(L, "Sl", ar);
+    lua_pushfstring(L, "%s:%d: %s", ar->short_src, ar->currentline, reason.c_str());
+  }  // reason freed before the longjmp
+  lua_error(L);
 }
 
 bool valid_module_name(const std::string& name) {
@@ -24,33 +30,43 @@ bool valid_module_name(const std::string& name) {
   return name.find("..") == std::string::npos;
 }
 
-// require(name): scripts/ first (the DSL's library), then the recipe's folder; text chunks only.
-int sandbox_require(lua_State* L) {
-  const std::string name = luaL_checkstring(L, 1);
-  if (!valid_module_name(name)) return luaL_error(L, "require: invalid module name '%s'", name.c_str());
+// Loads module `name` (scripts/ first, then the recipe's folder; text chunks only) and leaves its value on
+// the stack, or leaves an error message and returns false. Runs the module with lua_pcall so that its
+// errors never longjmp past this function's C++ objects.
+bool load_module(lua_State* L, const char* module) {
+  const std::string name = module;
+  if (!valid_module_name(name)) {
+    lua_pushfstring(L, "%srequire: invalid module name '%s'", recipe_where(L).c_str(), module);
+    return false;
+  }
   lua_getfield(L, LUA_REGISTRYINDEX, loaded_key);
-  if (lua_getfield(L, -1, name.c_str()) != LUA_TNIL) return 1;
+  if (lua_getfield(L, -1, module) != LUA_TNIL) return true;
   lua_pop(L, 1);
   RunContext& run = RunContext::of(L);
   std::string rel = name;
-  for (char& c : rel)
-    if (c == '.') c = '/';
+  std::replace(rel.begin(), rel.end(), '.', '/');
   rel += ".lua";
   for (const auto& dir : {run.scripts_dir, run.config.recipe.parent_path()}) {
     const std::filesystem::path file = dir / rel;
     if (!std::filesystem::is_regular_file(file)) continue;
-    if (luaL_loadfilex(L, file.c_str(), "t") != LUA_OK) return lua_error(L);
-    lua_pushstring(L, name.c_str());
-    lua_call(L, 1, 1);
+    if (luaL_loadfilex(L, file.c_str(), "t") != LUA_OK) return false;
+    lua_pushstring(L, module);
+    if (lua_pcall(L, 1, 1, 0) != LUA_OK) return false;
     if (lua_isnil(L, -1)) {
       lua_pop(L, 1);
       lua_pushboolean(L, 1);
     }
     lua_pushvalue(L, -1);
-    lua_setfield(L, -3, name.c_str());
-    return 1;
+    lua_setfield(L, -3, module);  // cache it
+    return true;
   }
-  return luaL_error(L, "require: module '%s' not found in scripts/ or the recipe's folder", name.c_str());
+  lua_pushfstring(L, "%srequire: module '%s' not found in scripts/ or the recipe's folder", recipe_where(L).c_str(), module);
+  return false;
+}
+
+int sandbox_require(lua_State* L) {
+  if (!load_module(L, luaL_checkstring(L, 1))) return lua_error(L);
+  return 1;
 }
 
 // __index of the guarded os and io tables: a clear message instead of "attempt to call a nil value".
