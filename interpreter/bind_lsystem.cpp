@@ -27,12 +27,7 @@ void each_symbol(lua_State* L, const char* table, F&& f) {
   if (lua_type(L, -1) != LUA_TTABLE) throw Error(std::string("option '") + table + "' must be a table, got " + describe(L, -1));
   lua_pushnil(L);
   while (lua_next(L, -2) != 0) {
-    try {
-      f(symbol_key(L, -2, table));
-    } catch (...) {
-      lua_pop(L, 2);
-      throw;
-    }
+    f(symbol_key(L, -2, table));
     lua_pop(L, 1);
   }
 }

@@ -11,7 +11,6 @@ namespace selfsim::interp {
 
 namespace {
 
-
 void push_point(lua_State* L, Vec2 p) {
   lua_createtable(L, 2, 0);
   lua_pushnumber(L, p.x);
@@ -26,13 +25,7 @@ Vec2 read_point(lua_State* L, int index, const std::string& what) {
   if (lua_type(L, index) != LUA_TTABLE || lua_rawlen(L, index) != 2) throw Error(what + " must be {x, y}, got " + describe(L, index));
   lua_rawgeti(L, index, 1);
   lua_rawgeti(L, index, 2);
-  Vec2 p;
-  try {
-    p = {finite_number(L, -2, what + " x"), finite_number(L, -1, what + " y")};
-  } catch (...) {
-    lua_pop(L, 2);
-    throw;
-  }
+  const Vec2 p{finite_number(L, -2, what + " x"), finite_number(L, -1, what + " y")};
   lua_pop(L, 2);
   return p;
 }
@@ -44,12 +37,7 @@ std::vector<Vec2> read_points(lua_State* L, int index, const std::string& what) 
   const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, index));
   for (lua_Integer i = 1; i <= n; ++i) {
     lua_rawgeti(L, index, i);
-    try {
-      pts.push_back(read_point(L, -1, (what.empty() ? "" : what + " ") + "point " + std::to_string(i)));
-    } catch (...) {
-      lua_pop(L, 1);
-      throw;
-    }
+    pts.push_back(read_point(L, -1, (what.empty() ? "" : what + " ") + "point " + std::to_string(i)));
     lua_pop(L, 1);
   }
   return pts;
@@ -110,14 +98,7 @@ int curve_transform(lua_State* L) {
     const double scale = o.number("scale", 1);
     const double degrees = o.number("rotate", 0);
     Vec2 shift{};
-    if (o.push("translate") != LUA_TNIL) {
-      try {
-        shift = read_point(L, -1, "option 'translate'");
-      } catch (...) {
-        lua_pop(L, 1);
-        throw;
-      }
-    }
+    if (o.push("translate") != LUA_TNIL) shift = read_point(L, -1, "option 'translate'");
     lua_pop(L, 1);
     o.finish();
     if (!(scale != 0)) throw Error("option 'scale' must be non-zero");

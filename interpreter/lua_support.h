@@ -27,7 +27,7 @@ std::string cancel_message(lua_State* L);
 
 // Runs body (which returns the number of Lua results) and turns any C++ exception into a Lua error raised
 // after the catch block, never inside it: lua_error longjmps, which must not cross live C++ handlers.
-// body must not raise Lua errors itself (use the Options reader, which throws selfsim::Error).
+// Readers may throw with values still pushed: Lua discards a C function's stack slots when it raises.
 template <class Body>
 int call_kernel(lua_State* L, const char* fn, Body&& body) {
   {

@@ -87,11 +87,7 @@ long long Options::integer(const char* key, long long fallback, long long lo, lo
   const bool whole = lua_isinteger(L, -1) ||
                      (lua_type(L, -1) == LUA_TNUMBER && std::floor(lua_tonumber(L, -1)) == lua_tonumber(L, -1) &&
                       std::abs(lua_tonumber(L, -1)) < 1e18);
-  if (!whole) {
-    const std::string got = describe(L, -1);
-    lua_pop(L, 1);
-    throw Error(option(key) + " must be an integer in " + range + ", got " + got);
-  }
+  if (!whole) throw Error(option(key) + " must be an integer in " + range + ", got " + describe(L, -1));
   const long long v = lua_isinteger(L, -1) ? lua_tointeger(L, -1) : static_cast<long long>(lua_tonumber(L, -1));
   lua_pop(L, 1);
   if (v < lo || v > hi) throw Error(option(key) + " must be an integer in " + range + ", got " + std::to_string(v));
@@ -104,11 +100,7 @@ bool Options::boolean(const char* key, bool fallback) {
     lua_pop(L, 1);
     return fallback;
   }
-  if (t != LUA_TBOOLEAN) {
-    const std::string got = describe(L, -1);
-    lua_pop(L, 1);
-    throw Error(option(key) + " must be true or false, got " + got);
-  }
+  if (t != LUA_TBOOLEAN) throw Error(option(key) + " must be true or false, got " + describe(L, -1));
   const bool v = lua_toboolean(L, -1);
   lua_pop(L, 1);
   return v;
@@ -120,11 +112,7 @@ std::string Options::string(const char* key, const std::string& fallback) {
     lua_pop(L, 1);
     return fallback;
   }
-  if (t != LUA_TSTRING) {
-    const std::string got = describe(L, -1);
-    lua_pop(L, 1);
-    throw Error(option(key) + " must be a string, got " + got);
-  }
+  if (t != LUA_TSTRING) throw Error(option(key) + " must be a string, got " + describe(L, -1));
   std::size_t n = 0;
   const char* s = lua_tolstring(L, -1, &n);
   std::string v(s, n);
@@ -144,16 +132,11 @@ void Options::finish() {
   const std::vector<std::string> known(read_.begin(), read_.end());
   lua_pushnil(L);
   while (lua_next(L, index_) != 0) {
-    std::string key;
-    if (lua_type(L, -2) == LUA_TSTRING) key = lua_tostring(L, -2);
-    else {
-      const std::string got = describe(L, -2);
-      lua_pop(L, 2);
-      throw Error("options must be named (key = value), got a value at key " + got);
-    }
+    if (lua_type(L, -2) != LUA_TSTRING)
+      throw Error("options must be named (key = value), got a value at key " + describe(L, -2));
+    const std::string key = lua_tostring(L, -2);
     lua_pop(L, 1);
     if (!read_.contains(key)) {
-      lua_pop(L, 1);
       const std::string near = suggestion(key, known);
       throw Error("unknown option '" + key + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
     }
