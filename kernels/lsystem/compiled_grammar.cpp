@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kernels/lsystem/production_count.h"
+
 namespace selfsim::lsystem {
 
 Compiled::Compiled(const Grammar& g) {
@@ -35,8 +37,8 @@ int Compiled::lattice() const {
   return 0;
 }
 
-LatticeTable::LatticeTable(const Compiled& c, int lattice, double start_degrees, double length) : n(lattice) {
-  for (int i = 0; i < n; ++i) step.push_back(length * polar(start_degrees * degree + 2 * std::numbers::pi * i / n));
+LatticeTable::LatticeTable(const Compiled& c, int lattice, double start_degrees) : n(lattice) {
+  for (int i = 0; i < n; ++i) step.push_back(polar(start_degrees * degree + 2 * std::numbers::pi * i / n));
   for (int s = 0; s < 256; ++s) {
     const long t = std::lround(c.turn[s] * n / 360) % n;
     turn[s] = static_cast<int>(t < 0 ? t + n : t);
@@ -59,29 +61,13 @@ void expand(const Compiled& c, unsigned char s, int d, std::string& out) {
   for (char t : c.rules[static_cast<std::size_t>(c.rule[s])]) expand(c, static_cast<unsigned char>(t), d - 1, out);
 }
 
-// Drawn segments (or all symbols) of every symbol rewritten d times.
-std::array<double, 256> count_at(const Compiled& c, int d, bool segments) {
-  std::array<double, 256> w{};
-  for (int s = 0; s < 256; ++s) w[s] = !segments || c.action[s] == Action::Draw ? 1 : 0;
-  for (int k = 1; k <= d; ++k) {
-    std::array<double, 256> next = w;
-    for (int s = 0; s < 256; ++s)
-      if (c.rule[s] >= 0) {
-        next[s] = 0;
-        for (char t : c.rules[static_cast<std::size_t>(c.rule[s])]) next[s] += w[static_cast<unsigned char>(t)];
-      }
-    w = next;
-  }
-  return w;
-}
-
 }  // namespace
 
-LatticeBlocks::LatticeBlocks(const Compiled& c, const LatticeTable& t, int level) {
+LatticeBlocks::LatticeBlocks(const Grammar& g, const Compiled& c, const LatticeTable& t, int level) {
   block.fill(-1);
   // The deepest d whose blocks all fit the limits.
   for (int d = 1; d <= level; ++d) {
-    const auto w = count_at(c, d, true), symbols = count_at(c, d, false);
+    const auto w = per_symbol_counts(g, d, Weight::Segments), symbols = per_symbol_counts(g, d, Weight::Symbols);
     double biggest = 0, longest = 0, bytes = 0;
     for (int s = 0; s < 256; ++s)
       if (c.rule[s] >= 0) {

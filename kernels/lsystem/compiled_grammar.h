@@ -32,11 +32,11 @@ struct Compiled {
 // Headings on a lattice of n directions: one table look-up per segment, and no drift from accumulating
 // rounded angles however long the curve.
 struct LatticeTable {
-  std::vector<Vec2> step;       // step vector (length included) for each of the n directions
+  std::vector<Vec2> step;       // unit step vector for each of the n directions
   std::array<int, 256> turn{};  // lattice steps turned left by each symbol, in [0, n)
   int n = 1;
 
-  LatticeTable(const Compiled& c, int lattice, double start_degrees, double length);
+  LatticeTable(const Compiled& c, int lattice, double start_degrees);
   int rotate(int k, int by) const { return k + by >= n ? k + by - n : k + by; }
 };
 
@@ -51,7 +51,7 @@ struct LatticeBlocks {
   std::array<int, 256> block{};  // index into blocks, or -1 (no rule, or branches/moves inside)
   std::vector<Block> blocks;
 
-  LatticeBlocks(const Compiled& c, const LatticeTable& t, int level);
+  LatticeBlocks(const Grammar& g, const Compiled& c, const LatticeTable& t, int level);
 };
 
 }  // namespace selfsim::lsystem

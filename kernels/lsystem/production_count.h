@@ -3,6 +3,8 @@
 // correctly (or infinite) far beyond that.
 #pragma once
 
+#include <array>
+
 #include "kernels/lsystem/grammar.h"
 
 namespace selfsim::lsystem {
@@ -18,5 +20,10 @@ struct LevelCounts {
 
 // Counts for grammar g at `level` (>= 0).
 LevelCounts predict_counts(const Grammar& g, int level);
+
+// What each single symbol becomes after `depth` rewriting steps: its number of symbols, or of drawn
+// segments. Indexed by symbol byte.
+enum class Weight { Symbols, Segments };
+std::array<double, 256> per_symbol_counts(const Grammar& g, int depth, Weight weight);
 
 }  // namespace selfsim::lsystem

@@ -29,9 +29,9 @@ struct LatticeHeading {
 // Heading as an angle, for turns that fit no lattice (irrational fractions of a circle).
 struct FreeHeading {
   const Compiled* c;
-  double radians, length;
+  double radians;
 
-  Vec2 forward() const { return length * polar(radians); }
+  Vec2 forward() const { return polar(radians); }
   void rotate(std::uint8_t s) { radians = std::remainder(radians + c->turn[s] * degree, 2 * std::numbers::pi); }
 };
 
@@ -59,6 +59,11 @@ Vec2 run_turtle(const Compiled& c, const std::string& axiom, int level, Heading 
   // rewrites much and draws little must be stoppable too.
   constexpr std::size_t report_every = std::size_t{1} << 20;
   std::size_t next_report = report_every, rewrites = 0;
+  auto report_if_due = [&] {
+    if (out.points.size() < next_report) return;
+    progress.step(static_cast<double>(out.points.size()) / predicted_segments);
+    next_report += report_every;
+  };
   const int block_level = blocks ? level - blocks->depth : -1;  // rewritings done when blocks take over
 
   while (!frames.empty()) {
@@ -82,10 +87,7 @@ Vec2 run_turtle(const Compiled& c, const std::string& axiom, int level, Heading 
             pos = out.points.back();
           }
           heading.k = heading.table->rotate(heading.k, b.turn);
-          if (out.points.size() >= next_report) {
-            progress.step(static_cast<double>(out.points.size()) / predicted_segments);
-            next_report += report_every;
-          }
+          report_if_due();
           continue;
         }
       }
@@ -103,10 +105,7 @@ Vec2 run_turtle(const Compiled& c, const std::string& axiom, int level, Heading 
         }
         pos += heading.forward();
         out.points.push_back(pos);
-        if (out.points.size() >= next_report) {
-          progress.step(static_cast<double>(out.points.size()) / predicted_segments);
-          next_report += report_every;
-        }
+        report_if_due();
         break;
       case Action::Move:
         out.close_path();
@@ -168,11 +167,11 @@ void curve_into(const Grammar& g, const CurveOptions& opt, Progress& progress, P
   const double start = g.start_angle(opt.level);
   Vec2 end;  // the turtle walks unit steps; the step length shrink^level is applied below
   if (lattice > 0) {
-    const LatticeTable table(c, lattice, start, 1);
-    const LatticeBlocks blocks(c, table, opt.level);
+    const LatticeTable table(c, lattice, start);
+    const LatticeBlocks blocks(g, c, table, opt.level);
     end = run_turtle(c, g.axiom, opt.level, LatticeHeading{&table}, &blocks, counts.segments, out, progress);
   } else {
-    end = run_turtle(c, g.axiom, opt.level, FreeHeading{&c, start * degree, 1}, nullptr, counts.segments, out, progress);
+    end = run_turtle(c, g.axiom, opt.level, FreeHeading{&c, start * degree}, nullptr, counts.segments, out, progress);
   }
   progress.fraction(1);
 

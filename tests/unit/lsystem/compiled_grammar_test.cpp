@@ -46,22 +46,23 @@ std::vector<Vec2> reference(const Grammar& g, int level) {
 }  // namespace
 
 TEST(LatticeBlocks, ChosenDepthStaysWithinLevelAndSize) {
-  const Compiled c(table1::dragon());
-  const LatticeTable t(c, c.lattice(), 0, 1);
+  const Grammar g = table1::dragon();
+  const Compiled c(g);
+  const LatticeTable t(c, c.lattice(), 0);
   EXPECT_EQ(t.n, 4);
-  const LatticeBlocks b(c, t, 20);
+  const LatticeBlocks b(g, c, t, 20);
   EXPECT_EQ(b.depth, 10);  // 2^10 = 1024 points per block is the largest allowed
   for (const auto& block : b.blocks) EXPECT_LE(block.points[0].size(), 1024u);
-  EXPECT_EQ(LatticeBlocks(c, t, 3).depth, 3);
-  EXPECT_EQ(LatticeBlocks(c, t, 0).depth, 0);
+  EXPECT_EQ(LatticeBlocks(g, c, t, 3).depth, 3);
+  EXPECT_EQ(LatticeBlocks(g, c, t, 0).depth, 0);
 }
 
 TEST(LatticeBlocks, BranchingRulesAreNotBlocked) {
   const Grammar plant{.axiom = "X", .rules = {{'X', "F[+X]F[-X]+X"}, {'F', "FF"}}, .angle = 20};
   const Compiled c(plant);
-  const LatticeTable t(c, c.lattice(), 90, 1);
+  const LatticeTable t(c, c.lattice(), 90);
   EXPECT_EQ(t.n, 18);
-  const LatticeBlocks b(c, t, 8);
+  const LatticeBlocks b(plant, c, t, 8);
   EXPECT_EQ(b.block['X'], -1);
   EXPECT_GE(b.block['F'], 0);
 }
