@@ -1,11 +1,9 @@
 // save(value, "file.ext", opts?) and param(name, default): the recipe's only ways out and in.
-#include <charconv>
-#include <cmath>
-
 #include "interpreter/bindings.h"
 #include "interpreter/curve_value.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
+#include "interpreter/parse_text.h"
 #include "interpreter/run_context.h"
 #include "kernels/io/save.h"
 
@@ -69,24 +67,19 @@ int param(lua_State* L) {
       return 1;
     }
     const std::string& text = it->second;
-    const char* first = text.data();
-    const char* last = first + text.size();
     if (type == LUA_TSTRING) {
       lua_pushlstring(L, text.data(), text.size());
     } else if (type == LUA_TBOOLEAN) {
       if (text != "true" && text != "false") throw Error("--set " + name + "=" + text + ": expected true or false");
       lua_pushboolean(L, text == "true");
     } else if (lua_isinteger(L, 2)) {
-      long long v = 0;
-      auto r = std::from_chars(first, last, v);
-      if (r.ec != std::errc() || r.ptr != last) throw Error("--set " + name + "=" + text + ": expected an integer");
-      lua_pushinteger(L, v);
+      const auto v = parse_text<long long>(text);
+      if (!v) throw Error("--set " + name + "=" + text + ": expected an integer");
+      lua_pushinteger(L, *v);
     } else {
-      double v = 0;
-      auto r = std::from_chars(first, last, v);
-      if (r.ec != std::errc() || r.ptr != last || !std::isfinite(v))
-        throw Error("--set " + name + "=" + text + ": expected a finite number");
-      lua_pushnumber(L, v);
+      const auto v = parse_text<double>(text);
+      if (!v) throw Error("--set " + name + "=" + text + ": expected a finite number");
+      lua_pushnumber(L, *v);
     }
     return 1;
   });

@@ -1,5 +1,4 @@
 // The `selfsim` executable: dispatches to run / diff / info.
-#include <charconv>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -59,9 +58,7 @@ int main(int argc, char** argv) {
       for (std::size_t i = 0; i < rest.size(); ++i) {
         if (rest[i] == "--tol") {
           if (i + 1 >= rest.size()) throw UsageError("--tol expects a value");
-          const std::string& t = rest[++i];
-          auto r = std::from_chars(t.data(), t.data() + t.size(), tol);
-          if (r.ec != std::errc() || r.ptr != t.data() + t.size() || !(tol >= 0)) throw UsageError("--tol expects a number >= 0, got '" + t + "'");
+          tol = number_argument("--tol", rest[++i], 0);
         } else {
           files.push_back(rest[i]);
         }

@@ -1,23 +1,16 @@
 // Parsing `selfsim run` arguments: RECIPE.lua [-o DIR] [--set key=value]... [--max-points N]
 // [--timeout S] [--seed N] [-q].
-#include <charconv>
-#include <cmath>
-
 #include "interpreter/commands.h"
+#include "interpreter/parse_text.h"
 
 namespace selfsim::interp {
 
-namespace {
-
 double number_argument(const std::string& flag, const std::string& text, double lo) {
-  double v = 0;
-  auto r = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (r.ec != std::errc() || r.ptr != text.data() + text.size() || !std::isfinite(v) || v < lo)
+  const auto v = parse_text<double>(text);
+  if (!v || *v < lo)
     throw UsageError(flag + " expects a number >= " + std::to_string(static_cast<long long>(lo)) + ", got '" + text + "'");
-  return v;
+  return *v;
 }
-
-}  // namespace
 
 RunConfig parse_run_arguments(const std::vector<std::string>& args) {
   RunConfig c;
