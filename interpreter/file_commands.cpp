@@ -5,7 +5,7 @@
 #include "interpreter/commands.h"
 #include "kernels/analysis/dataset_diff.h"
 #include "kernels/geom/error.h"
-#include "kernels/io/save.h"
+#include "kernels/io/read.h"
 
 namespace selfsim::interp {
 

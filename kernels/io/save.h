@@ -9,7 +9,6 @@
 
 #include "kernels/geom/polyline.h"
 #include "kernels/geom/progress.h"
-#include "kernels/io/dataset.h"
 
 namespace selfsim::io {
 
@@ -29,13 +28,8 @@ const std::vector<std::string>& curve_extensions();
 // Writes c to `file`; throws Error for an unknown extension or a failed write.
 void save_curve(const Polyline& c, const std::filesystem::path& file, const SaveOptions& opt, Progress& progress);
 
-// Reads a file written by selfsim (or any .vtp / .svg polyline file) for comparison and inspection.
-Dataset read_dataset(const std::filesystem::path& file);
-
-// Format-specific writers and readers; `file` is the temporary name save_curve renames.
+// Format-specific writers; `file` is the temporary name save_curve renames.
 void write_vtp(const Polyline& c, const std::filesystem::path& file, const SaveOptions& opt, Progress& progress);
 void write_svg(const Polyline& c, const std::filesystem::path& file, const SaveOptions& opt, Progress& progress);
-Dataset read_vtp(const std::filesystem::path& file);
-Dataset read_svg(const std::filesystem::path& file);
 
 }  // namespace selfsim::io

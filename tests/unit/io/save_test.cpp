@@ -1,3 +1,4 @@
+#include "kernels/io/read.h"
 #include "kernels/io/save.h"
 
 #include <gtest/gtest.h>
