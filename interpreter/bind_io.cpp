@@ -11,16 +11,6 @@ namespace selfsim::interp {
 
 namespace {
 
-namespace fs = std::filesystem;
-
-// The target inside the output folder, refusing anything that would land outside it.
-fs::path output_path(const fs::path& out_dir, const std::string& name) {
-  const fs::path rel = fs::path(name).lexically_normal();
-  if (name.empty() || rel.is_absolute() || rel.empty() || *rel.begin() == ".." || rel.filename().empty())
-    throw Error("path '" + name + "' is outside the output folder (give a relative file name such as 'curve.vtp')");
-  return out_dir / rel;
-}
-
 io::SaveOptions read_save_options(lua_State* L, int index) {
   Options o(L, index);
   io::SaveOptions s;
@@ -35,18 +25,16 @@ io::SaveOptions read_save_options(lua_State* L, int index) {
 int save(lua_State* L) {
   return call_kernel(L, "save", [&] {
     RunContext& run = RunContext::of(L);
+    // Finalizers may run after the recipe has returned or failed; nothing is written then.
+    if (run.ended) throw Error("the recipe has ended: nothing more is written (save from a finalizer?)");
     const Polyline* c = test_curve(L, 1);
     if (c == nullptr) throw Error("argument 1 must be a curve, got " + describe(L, 1));
     if (lua_type(L, 2) != LUA_TSTRING) throw Error("argument 2 must be a file name, got " + describe(L, 2));
-    const std::string name = lua_tostring(L, 2);
+    const std::string name = text_value(L, 2, "argument 2 (the file name)");
     const io::SaveOptions opt = read_save_options(L, 3);
-    const fs::path target = output_path(run.config.out_dir, name);
-    std::error_code ec;
-    fs::create_directories(target.parent_path(), ec);
-    if (ec) throw Error("cannot create folder '" + target.parent_path().string() + "': " + ec.message());
-    io::save_curve(*c, target, opt, run);
+    const std::string written = io::save_curve(*c, run.config.out_dir, name, opt, run);
     run.finish_bar();
-    run.saved.push_back(target.string() + " (" + std::to_string(c->points.size()) + " points)");
+    run.saved.push_back(written + " (" + std::to_string(c->points.size()) + " points)");
     return 0;
   });
 }
@@ -55,8 +43,7 @@ int save(lua_State* L) {
 int param(lua_State* L) {
   return call_kernel(L, "param", [&] {
     RunContext& run = RunContext::of(L);
-    if (lua_type(L, 1) != LUA_TSTRING) throw Error("argument 1 must be a parameter name, got " + describe(L, 1));
-    const std::string name = lua_tostring(L, 1);
+    const std::string name = text_value(L, 1, "argument 1 (the parameter name)");
     const int type = lua_type(L, 2);
     if (type != LUA_TNUMBER && type != LUA_TSTRING && type != LUA_TBOOLEAN)
       throw Error("default of '" + name + "' must be a number, string or boolean, got " + describe(L, 2));

@@ -16,20 +16,25 @@ using lsystem::Grammar;
 constexpr const char* grammar_type = "selfsim.Grammar";
 
 char symbol_key(lua_State* L, int index, const char* table) {
-  if (lua_type(L, index) != LUA_TSTRING || lua_rawlen(L, index) != 1)
+  if (lua_type(L, index) != LUA_TSTRING || lua_rawlen(L, index) != 1 || lua_tostring(L, index)[0] == '\0')
     throw Error(std::string("option '") + table + "' keys must be single symbols, got " + describe(L, index));
   return lua_tostring(L, index)[0];
 }
 
-// Calls f(symbol) for each key of the table on top of the stack, with the value on top.
+// Calls f(symbol) for each key of the table on top of the stack, in sorted order (so the first bad one
+// reported is the same every run), with the value on top.
 template <class F>
 void each_symbol(lua_State* L, const char* table, F&& f) {
   if (lua_type(L, -1) != LUA_TTABLE) throw Error(std::string("option '") + table + "' must be a table, got " + describe(L, -1));
-  lua_pushnil(L);
-  while (lua_next(L, -2) != 0) {
-    f(symbol_key(L, -2, table));
+  const int n = push_sorted_keys(L, -1);
+  for (int i = 1; i <= n; ++i) {
+    lua_rawgeti(L, -1, i);
+    const char s = symbol_key(L, -1, table);
+    lua_rawget(L, -3);
+    f(s);
     lua_pop(L, 1);
   }
+  lua_pop(L, 1);
 }
 
 Grammar read_grammar(lua_State* L, int index) {
@@ -39,9 +44,7 @@ Grammar read_grammar(lua_State* L, int index) {
   g.axiom = o.string("axiom", "");
   if (o.push("rules") != LUA_TNIL) {
     each_symbol(L, "rules", [&](char s) {
-      if (lua_type(L, -1) != LUA_TSTRING)
-        throw Error(std::string("option 'rules': rule for '") + s + "' must be a string, got " + describe(L, -1));
-      g.rules[s] = lua_tostring(L, -1);
+      g.rules[s] = text_value(L, -1, std::string("option 'rules': rule for '") + s + "'");
     });
   }
   lua_pop(L, 1);
@@ -86,7 +89,6 @@ int grammar_curve(lua_State* L) {
   return call_kernel(L, "curve", [&] {
     RunContext& run = RunContext::of(L);
     lsystem::CurveOptions opt;
-    opt.max_points = run.config.max_points;
     if (lua_type(L, 2) == LUA_TNUMBER) {
       opt.level = level_argument(L, 2);
     } else {
@@ -96,7 +98,10 @@ int grammar_curve(lua_State* L) {
       opt.normalize = o.boolean("normalize", opt.normalize);
       o.finish();
     }
-    push_curve(L, lsystem::curve(g, opt, run));
+    push_curve(L, with_budget(L, [&](const PointBudget& b) {
+      opt.budget = b;
+      return lsystem::curve(g, opt, run);
+    }));
     run.finish_bar();
     return 1;
   });

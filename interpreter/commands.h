@@ -18,8 +18,8 @@ int run_command(const RunConfig& config);
 int diff_command(const std::string& a, const std::string& b, double tol);
 int info_command(const std::string& file);
 
-// A flag's value as a finite number >= lo; throws UsageError naming the flag.
-double number_argument(const std::string& flag, const std::string& text, double lo);
+// A flag's value as a finite number in [lo, hi]; throws UsageError naming the flag.
+double number_argument(const std::string& flag, const std::string& text, double lo, double hi);
 
 // Parses the arguments after `selfsim run`. Throws UsageError.
 RunConfig parse_run_arguments(const std::vector<std::string>& args);

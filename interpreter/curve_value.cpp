@@ -1,6 +1,7 @@
 #include "interpreter/curve_value.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <numbers>
 
@@ -84,7 +85,7 @@ int curve_point(lua_State* L) {
   const Polyline& c = check_self<Polyline>(L, curve_type, "point");
   const lua_Integer i = luaL_checkinteger(L, 2);
   if (i < 1 || i > static_cast<lua_Integer>(c.points.size()))
-    return luaL_error(L, "point: index %d out of range [1, %d]", static_cast<int>(i), static_cast<int>(c.points.size()));
+    return luaL_error(L, "point: index %I out of range [1, %I]", i, static_cast<lua_Integer>(c.points.size()));
   push_point(L, c.points[static_cast<std::size_t>(i - 1)]);
   return 1;
 }
@@ -102,7 +103,8 @@ int curve_transform(lua_State* L) {
     lua_pop(L, 1);
     o.finish();
     if (!(scale != 0)) throw Error("option 'scale' must be non-zero");
-    const Similarity2 t{scale * polar(degrees * std::numbers::pi / 180), shift, mirror};
+    const Similarity2 t{scale * polar(std::fmod(degrees, 360.0) * std::numbers::pi / 180), shift, mirror};
+    check_budget(static_cast<double>(c.points.size()), run_budget(L), "transform");
     push_curve(L, transformed(c, t));
     return 1;
   });
@@ -110,7 +112,8 @@ int curve_transform(lua_State* L) {
 
 int curve_tostring(lua_State* L) {
   const Polyline& c = check_self<Polyline>(L, curve_type, "tostring");
-  lua_pushfstring(L, "Curve(%d points, %d paths, level %d)", static_cast<int>(c.points.size()), static_cast<int>(c.paths()), c.level);
+  lua_pushfstring(L, "Curve(%I points, %I paths, level %d)", static_cast<lua_Integer>(c.points.size()),
+                  static_cast<lua_Integer>(c.paths()), c.level);
   return 1;
 }
 
@@ -120,6 +123,7 @@ int make_polyline(lua_State* L, const char* fn, bool closed) {
     if (pts.size() < (closed ? 3u : 2u))
       throw Error(std::string("needs at least ") + (closed ? "3" : "2") + " points, got " + std::to_string(pts.size()));
     if (closed && !(pts.front() == pts.back())) pts.push_back(pts.front());
+    check_budget(static_cast<double>(pts.size()), run_budget(L), fn);
     push_curve(L, Polyline::single(std::move(pts)));
     return 1;
   });
@@ -128,8 +132,11 @@ int make_polyline(lua_State* L, const char* fn, bool closed) {
 }  // namespace
 
 void push_curve(lua_State* L, Polyline&& c) {
+  // Every curve a recipe gets is finite: a NaN never reaches a file or a later kernel.
+  if (!c.finite()) throw Error("the result has non-finite coordinates (an overflow: scale the input down)");
   const std::size_t bytes = c.points.capacity() * sizeof(Vec2) + c.path_ends.capacity() * sizeof(std::size_t);
-  push_value(L, curve_type, std::move(c));
+  const double points = static_cast<double>(c.points.size());
+  push_value(L, curve_type, std::move(c), points);
   // Lua only sees the userdata's few bytes; tell its collector about the arrays, so that curves a recipe
   // has dropped are freed before the next big one instead of piling up.
   lua_gc(L, LUA_GCSTEP, static_cast<int>(std::min<std::size_t>(bytes / 1024, 1 << 30)));

@@ -1,14 +1,17 @@
 #include "interpreter/lua_support.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "interpreter/run_context.h"
 
 namespace selfsim::interp {
 
-std::string recipe_where(lua_State* L) {
-  const std::string library = "@" + RunContext::of(L).scripts_dir.string();
+std::string recipe_where(lua_State* L) { return stack_where(L, "@" + RunContext::of(L).scripts_dir.string()); }
+
+std::string stack_where(lua_State* L, const std::string& library) {
   std::string first;
   lua_Debug ar;
   for (int level = 1; lua_getstack(L, level, &ar); ++level) {
@@ -31,7 +34,11 @@ std::string describe(lua_State* L, int index) {
       std::snprintf(buf, sizeof buf, "%.14g", v);
       return buf;
     }
-    case LUA_TSTRING: return "'" + std::string(lua_tostring(L, index)) + "'";
+    case LUA_TSTRING: {
+      std::size_t n = 0;
+      const char* text = lua_tolstring(L, index, &n);
+      return "'" + shown_text(std::string_view(text, n)) + "'";
+    }
     case LUA_TNIL: return "nil";
     case LUA_TNONE: return "nothing";
     case LUA_TBOOLEAN: return lua_toboolean(L, index) ? "true" : "false";
@@ -50,6 +57,97 @@ std::string describe(lua_State* L, int index) {
 void push_error(lua_State* L, const char* fn, const std::string& message) {
   const std::string where = recipe_where(L);
   lua_pushfstring(L, "%s%s: %s", where.c_str(), fn, message.c_str());
+}
+
+std::string shown_text(std::string_view text, std::size_t max_bytes) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size() && out.size() < max_bytes; ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c == '\n') out += "\\n";
+    else if (c < 32 || c == 127) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", c);
+      out += buf;
+    } else out += static_cast<char>(c);
+    if (out.size() >= max_bytes && i + 1 < text.size()) out += "... (" + std::to_string(text.size()) + " bytes)";
+  }
+  return out;
+}
+
+std::string type_word(const char* type) {
+  const std::string t = type;
+  return t.substr(t.find('.') + 1);
+}
+
+void hold_points(lua_State* L, double points) { RunContext::of(L).held_points += points; }
+
+PointBudget run_budget(lua_State* L) { return RunContext::of(L).budget(); }
+
+namespace {
+
+// Keys of a table in the order they are visited: numbers by value, then strings by their bytes, then
+// false before true, then every other key in traversal order.
+struct KeyOrder {
+  int rank;
+  bool integer;
+  lua_Integer i;
+  double x;
+  std::string_view text;
+  int slot;
+
+  bool operator<(const KeyOrder& o) const {
+    if (rank != o.rank) return rank < o.rank;
+    if (rank == 0) return integer && o.integer ? i < o.i : x < o.x;
+    if (rank == 1) return text < o.text;
+    if (rank == 2) return x < o.x;
+    return false;
+  }
+};
+
+}  // namespace
+
+int push_sorted_keys(lua_State* L, int table) {
+  table = lua_absindex(L, table);
+  lua_newtable(L);  // every key, in traversal order: keeps key strings alive while `order` points at them
+  const int found = lua_gettop(L);
+  std::vector<KeyOrder> order;
+  lua_pushnil(L);
+  while (lua_next(L, table) != 0) {
+    lua_pop(L, 1);
+    const int slot = static_cast<int>(order.size()) + 1;
+    lua_pushvalue(L, -1);
+    lua_rawseti(L, found, slot);
+    KeyOrder k{3, false, 0, 0, {}, slot};
+    switch (lua_type(L, -1)) {
+      case LUA_TNUMBER:
+        k.rank = 0;
+        k.integer = lua_isinteger(L, -1);
+        k.i = lua_tointeger(L, -1);
+        k.x = lua_tonumber(L, -1);
+        break;
+      case LUA_TSTRING: {
+        std::size_t n = 0;
+        const char* text = lua_tolstring(L, -1, &n);
+        k.rank = 1;
+        k.text = std::string_view(text, n);
+        break;
+      }
+      case LUA_TBOOLEAN:
+        k.rank = 2;
+        k.x = lua_toboolean(L, -1);
+        break;
+      default: break;
+    }
+    order.push_back(k);
+  }
+  std::stable_sort(order.begin(), order.end());
+  lua_createtable(L, static_cast<int>(order.size()), 0);
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    lua_rawgeti(L, found, order[i].slot);
+    lua_rawseti(L, -2, static_cast<lua_Integer>(i) + 1);
+  }
+  lua_remove(L, found);
+  return static_cast<int>(order.size());
 }
 
 std::string cancel_message(lua_State* L) {

@@ -5,15 +5,30 @@
 #include <lua.hpp>
 
 #include <new>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 
+#include "kernels/geom/budget.h"
 #include "kernels/geom/error.h"
 
 namespace selfsim::interp {
 
 // "recipe.lua:12: " for the innermost frame that is not one of the DSL's own scripts/ files.
 std::string recipe_where(lua_State* L);
+// The same for chunks whose source starts with `library` ("@/path/scripts"); only reads the stack, so it is
+// safe where nothing may be pushed (inside the allocator).
+std::string stack_where(lua_State* L, const std::string& library);
+
+// Text from a recipe made fit for a one-line message: control characters escaped (a newline as \n) and
+// anything past max_bytes cut, with the full size said.
+std::string shown_text(std::string_view text, std::size_t max_bytes = 60);
+
+// Pushes a list of the keys of the table at `table` in a fixed order (numbers, strings, booleans, then any
+// other key in traversal order) and returns their count. Lua's own order depends on a per-process hash
+// seed; recipes and messages must not.
+int push_sorted_keys(lua_State* L, int table);
 
 // Describes a Lua value for an error message: 41, 'abc', a table, nil.
 std::string describe(lua_State* L, int index);
@@ -48,48 +63,96 @@ int call_kernel(lua_State* L, const char* fn, Body&& body) {
   return lua_error(L);
 }
 
-// A C++ value living in a Lua userdata whose metatable is registered under `type` (its __name).
+// A C++ value in a Lua userdata. The finalizer empties `value` but Lua frees the block only later, so a
+// value resurrected by a recipe's own finalizer stays a valid, recognisably dead object, never freed memory.
 template <class T>
-T& push_value(lua_State* L, const char* type, T&& value) {
-  void* block = lua_newuserdatauv(L, sizeof(T), 0);
-  T* v = new (block) T(std::forward<T>(value));
-  luaL_setmetatable(L, type);
-  return *v;
+struct Box {
+  std::optional<T> value;
+  double points = 0;  // counted against the run's --max-points budget while alive
+};
+
+// The value's type name without the "selfsim." prefix: "Curve".
+std::string type_word(const char* type);
+
+// Adds `points` to the run's held points (negative to release them).
+void hold_points(lua_State* L, double points);
+
+// The run's point budget: --max-points and the points live values hold.
+PointBudget run_budget(lua_State* L);
+
+// Runs make(budget) with the run's point budget. When that is refused while other values hold points, some
+// may be garbage the recipe has dropped: collect it and try once more.
+template <class Make>
+auto with_budget(lua_State* L, Make&& make) {
+  try {
+    return make(run_budget(L));
+  } catch (const BudgetError&) {
+    if (run_budget(L).held == 0) throw;
+  }
+  lua_gc(L, LUA_GCCOLLECT);
+  return make(run_budget(L));
 }
 
-// The value at index if it is a userdata of `type`, else nullptr.
+// Pushes a new userdata of metatable `type` holding value, whose `points` count against the run's budget.
+template <class T>
+T& push_value(lua_State* L, const char* type, T&& value, double points = 0) {
+  auto* box = new (lua_newuserdatauv(L, sizeof(Box<T>), 0)) Box<T>{std::forward<T>(value), points};
+  luaL_setmetatable(L, type);
+  hold_points(L, points);
+  return *box->value;
+}
+
+// The value at index if it is a userdata of `type`, else nullptr. Throws Error for a value of that type
+// whose finalizer has run ("Curve used after it was freed").
 template <class T>
 T* test_value(lua_State* L, int index, const char* type) {
-  return static_cast<T*>(luaL_testudata(L, index, type));
+  auto* box = static_cast<Box<T>*>(luaL_testudata(L, index, type));
+  if (box == nullptr) return nullptr;
+  if (!box->value) throw Error(type_word(type) + " used after it was freed (kept alive by a finalizer)");
+  return &*box->value;
 }
 
 // The method's receiver (argument 1) as a T, or a recipe error that points at the usual slip, a '.'
 // written for ':'.
 template <class T>
 T& check_self(lua_State* L, const char* type, const char* method) {
-  if (T* v = test_value<T>(L, 1, type)) return *v;
   {
-    const std::string name = std::string(type).substr(std::string(type).find('.') + 1);
-    push_error(L, method, "expected a " + name + " before ':' (write value:" + method + "(...)), got " + describe(L, 1));
-  }
+    std::string message;
+    try {
+      if (T* v = test_value<T>(L, 1, type)) return *v;
+      message = "expected a " + type_word(type) + " before ':' (write value:" + method + "(...)), got " + describe(L, 1);
+    } catch (const Error& e) {
+      message = e.what();
+    }
+    push_error(L, method, message);
+  }  // message freed before the longjmp
   lua_error(L);
   std::abort();  // not reached: lua_error does not return
 }
 
-// Registers a metatable for T: __name, __gc (runs ~T), __index = the given methods.
+// Registers a metatable for T: __name, __gc, __tostring, __index = the given methods, and __metatable so
+// that getmetatable() gives recipes a string, never the table whose __gc runs destructors.
 template <class T>
 void register_type(lua_State* L, const char* type, const luaL_Reg* methods, lua_CFunction tostring) {
   luaL_newmetatable(L, type);
-  lua_pushcfunction(L, [](lua_State* S) {
-    static_cast<T*>(lua_touserdata(S, 1))->~T();
+  lua_pushstring(L, type);
+  // Type-checked and idempotent: only a live Box of this type is emptied, once.
+  lua_pushcclosure(L, [](lua_State* S) {
+    auto* box = static_cast<Box<T>*>(luaL_testudata(S, 1, lua_tostring(S, lua_upvalueindex(1))));
+    if (box != nullptr && box->value) {
+      box->value.reset();
+      hold_points(S, -box->points);
+    }
     return 0;
-  });
+  }, 1);
   lua_setfield(L, -2, "__gc");
   lua_pushcfunction(L, tostring);
   lua_setfield(L, -2, "__tostring");
   lua_newtable(L);
   luaL_setfuncs(L, methods, 0);
   lua_setfield(L, -2, "__index");
+  lua_pushstring(L, "locked");
+  lua_setfield(L, -2, "__metatable");
   lua_pop(L, 1);
 }
 

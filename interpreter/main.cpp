@@ -13,7 +13,9 @@ usage:
   selfsim run RECIPE.lua [options]   run a recipe; outputs go to the output folder
       -o, --output DIR      output folder (default: out)
       --set KEY=VALUE       override param(KEY, default) in the recipe (repeatable)
-      --max-points N        refuse any curve predicted to need more points (default 268435456)
+      --max-points N        points all of the run's curves may hold together (default 268435456)
+      --max-memory SIZE     memory for the recipe's Lua strings and tables, e.g. 2G
+                            (default: a quarter of this machine's memory)
       --timeout S           stop the run after S seconds (default: none)
       --seed N              seed for math.random (default 0): same seed, same files
       -q, --quiet           print nothing but errors
@@ -58,7 +60,7 @@ int main(int argc, char** argv) {
       for (std::size_t i = 0; i < rest.size(); ++i) {
         if (rest[i] == "--tol") {
           if (i + 1 >= rest.size()) throw UsageError("--tol expects a value");
-          tol = number_argument("--tol", rest[++i], 0);
+          tol = number_argument("--tol", rest[++i], 0, 1e300);
         } else {
           files.push_back(rest[i]);
         }
@@ -69,5 +71,8 @@ int main(int argc, char** argv) {
     throw UsageError("unknown command '" + command + "'");
   } catch (const UsageError& e) {
     return usage_error(e.what());
+  } catch (const std::exception& e) {  // a filesystem error, out of memory: one line, never an abort
+    std::fprintf(stderr, "selfsim: %s\n", e.what());
+    return 2;
   }
 }

@@ -33,10 +33,22 @@ std::string suggestion(const std::string& word, const std::vector<std::string>& 
   std::string best;
   std::size_t best_distance = std::max<std::size_t>(2, word.size() / 3) + 1;
   for (const auto& c : candidates) {
+    // The distance is at least the difference in length: skip the quadratic work (a 256 MiB name).
+    const std::size_t gap = word.size() > c.size() ? word.size() - c.size() : c.size() - word.size();
+    if (gap >= best_distance) continue;
     const std::size_t d = edit_distance(word, c);
     if (d < best_distance) best_distance = d, best = c;
   }
   return best;
+}
+
+std::string text_value(lua_State* L, int index, const std::string& what) {
+  if (lua_type(L, index) != LUA_TSTRING) throw Error(what + " must be a string, got " + describe(L, index));
+  std::size_t n = 0;
+  const char* s = lua_tolstring(L, index, &n);
+  std::string v(s, n);
+  if (v.find('\0') != std::string::npos) throw Error(what + " must not contain NUL bytes, got " + describe(L, index));
+  return v;
 }
 
 double finite_number(lua_State* L, int index, const std::string& what) {
@@ -112,10 +124,7 @@ std::string Options::string(const char* key, const std::string& fallback) {
     lua_pop(L, 1);
     return fallback;
   }
-  if (t != LUA_TSTRING) throw Error(option(key) + " must be a string, got " + describe(L, -1));
-  std::size_t n = 0;
-  const char* s = lua_tolstring(L, -1, &n);
-  std::string v(s, n);
+  std::string v = text_value(L, -1, option(key));
   lua_pop(L, 1);
   return v;
 }
@@ -129,18 +138,24 @@ int enum_index(const std::string& value, const std::vector<std::string>& names, 
 
 void Options::finish() {
   if (lua_type(L, index_) != LUA_TTABLE) return;
-  const std::vector<std::string> known(read_.begin(), read_.end());
-  lua_pushnil(L);
-  while (lua_next(L, index_) != 0) {
-    if (lua_type(L, -2) != LUA_TSTRING)
-      throw Error("options must be named (key = value), got a value at key " + describe(L, -2));
-    const std::string key = lua_tostring(L, -2);
+  // Keys in a fixed order, so the key reported is the same on every run.
+  const int n = push_sorted_keys(L, index_);
+  std::vector<std::string> unknown;
+  for (int i = 1; i <= n; ++i) {
+    lua_rawgeti(L, -1, i);
+    if (lua_type(L, -1) != LUA_TSTRING)
+      throw Error("options must be named (key = value), got a value at key " + describe(L, -1));
+    std::size_t len = 0;
+    const char* key = lua_tolstring(L, -1, &len);
+    if (!read_.contains(std::string(key, len))) unknown.emplace_back(key, len);
     lua_pop(L, 1);
-    if (!read_.contains(key)) {
-      const std::string near = suggestion(key, known);
-      throw Error("unknown option '" + key + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
-    }
   }
+  lua_pop(L, 1);
+  if (unknown.empty()) return;
+  const std::vector<std::string> known(read_.begin(), read_.end());
+  const std::string near = suggestion(unknown.front(), known);
+  throw Error("unknown option '" + shown_text(unknown.front()) + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)") +
+              (unknown.size() > 1 ? " (and " + std::to_string(unknown.size() - 1) + " more unknown)" : ""));
 }
 
 }  // namespace selfsim::interp

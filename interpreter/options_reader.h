@@ -24,7 +24,7 @@ class Options {
   std::string string(const char* key, const std::string& fallback);
   // Pushes the value at key (marking it read) and returns its Lua type; the caller pops it.
   int push(const char* key);
-  // Throws Error naming the first key that no reader asked for.
+  // Throws Error naming the first (in sorted order) key that no reader asked for, and the valid ones.
   void finish();
 
  private:
@@ -32,6 +32,9 @@ class Options {
   int index_;
   std::set<std::string> read_;
 };
+
+// The string at index, checked to hold no NUL byte (which C++ would cut it at); `what` names it in errors.
+std::string text_value(lua_State* L, int index, const std::string& what);
 
 // A number read from the value on top of the stack, checked finite; `what` names it in errors.
 double finite_number(lua_State* L, int index, const std::string& what);

@@ -2,10 +2,13 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <regex>
 
 #include "interpreter/bindings.h"
 #include "interpreter/commands.h"
+#include "interpreter/lua_support.h"
 #include "interpreter/sandbox.h"
+#include "interpreter/watchdog.h"
 
 namespace selfsim::interp {
 
@@ -18,14 +21,55 @@ std::filesystem::path find_scripts_dir() {
   return SELFSIM_SCRIPTS_DIR;
 }
 
+const char* const error_where_key = "selfsim.error_where";
+
+// The message handler of the recipe's pcall: every error becomes one string that names the recipe line,
+// whatever was raised (a table, a number, nil, a value whose __tostring raises). Runs at the error site, so
+// it can still read the stack; the location is also kept for errors whose handler fails.
+int message_handler(lua_State* L) {
+  const std::string where = recipe_where(L);
+  lua_pushstring(L, where.c_str());
+  lua_setfield(L, LUA_REGISTRYINDEX, error_where_key);
+  if (lua_type(L, 1) == LUA_TSTRING) return 1;
+  // A __tostring is called under pcall: one that raises or loops (the hook stops it) still gives a line.
+  lua_getglobal(L, "tostring");
+  lua_pushvalue(L, 1);
+  const bool has_text = luaL_getmetafield(L, 1, "__tostring") != LUA_TNIL;
+  if (has_text) lua_pop(L, 1);
+  if (has_text && lua_pcall(L, 1, 1, 0) == LUA_OK && lua_type(L, -1) == LUA_TSTRING) {
+    lua_pushfstring(L, "%serror: %s", where.c_str(), lua_tostring(L, -1));
+    return 1;
+  }
+  lua_pushfstring(L, "%serror raised with %s", where.c_str(), describe(L, 1).c_str());
+  return 1;
+}
+
+// The text of a failed pcall as one line that starts with a recipe location.
+std::string failure_message(lua_State* L, RunContext& run, int status) {
+  lua_getfield(L, LUA_REGISTRYINDEX, error_where_key);
+  const std::string where = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : run.config.recipe.string() + ": ";
+  lua_pop(L, 1);
+  if (status == LUA_ERRMEM) return memory_message(run.memory);
+  std::size_t n = 0;
+  const char* text = lua_type(L, -1) == LUA_TSTRING ? lua_tolstring(L, -1, &n) : nullptr;
+  if (text == nullptr) return where + "error (status " + std::to_string(status) + ")";
+  std::string message = shown_text(std::string_view(text, n), 2000);
+  // Lua adds no location to some errors ("error in error handling", error("x", 0)): add the recipe's.
+  static const std::regex located(R"(^[^:\s][^:]*:[0-9]+: )");
+  if (!std::regex_search(message, located)) message = where + message;
+  return message;
+}
+
 }  // namespace
 
 int run_command(const RunConfig& config) {
-  if (!std::filesystem::is_regular_file(config.recipe))
-    throw UsageError("cannot open recipe '" + config.recipe.string() + "'");
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(config.recipe, ec))
+    throw UsageError("cannot open recipe '" + config.recipe.string() + "'" + (ec ? ": " + ec.message() : std::string()));
   RunContext run(config);
   run.scripts_dir = find_scripts_dir();
   for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, on_interrupt);  // stop cleanly: no partial files
+  const Watchdog watchdog(run, config.recipe.string());
 
   lua_State* L = new_sandbox(run);
   if (L == nullptr) {
@@ -33,13 +77,14 @@ int run_command(const RunConfig& config) {
     return 1;
   }
   open_all(L);
+  lua_pushcfunction(L, message_handler);
   int status = luaL_loadfilex(L, config.recipe.c_str(), "t");
-  if (status == LUA_OK) status = lua_pcall(L, 0, 0, 0);
+  if (status == LUA_OK) status = lua_pcall(L, 0, 0, 1);
+  run.ended = true;  // finalizers still to run (at lua_close) can no longer write
   run.finish_bar();
   int code = 0;
   if (status != LUA_OK) {
-    const char* message = lua_tostring(L, -1);
-    std::fprintf(stderr, "%s\n", message ? message : "error object is not a string");
+    std::fprintf(stderr, "%s\n", failure_message(L, run, status).c_str());
     code = interrupted.load() ? 130 : 1;
   } else {
     for (const auto& [key, value] : config.sets)
@@ -48,6 +93,7 @@ int run_command(const RunConfig& config) {
     if (!config.quiet)
       for (const auto& s : run.saved) std::printf("wrote %s\n", s.c_str());
   }
+  std::fflush(stdout);
   lua_close(L);
   return code;
 }

@@ -8,6 +8,11 @@ namespace selfsim::interp {
 
 std::atomic<bool> interrupted{false};
 
+double default_max_memory() {
+  const double bytes = static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGESIZE));
+  return std::max(bytes / 4, 256.0 * (1 << 20));
+}
+
 namespace {
 const char* const registry_key = "selfsim.RunContext";
 }

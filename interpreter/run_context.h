@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "interpreter/lua_memory.h"
+#include "kernels/geom/budget.h"
 #include "kernels/geom/progress.h"
 
 namespace selfsim::interp {
@@ -20,14 +22,18 @@ struct RunConfig {
   std::filesystem::path recipe;
   std::filesystem::path out_dir = "out";
   std::map<std::string, std::string> sets;  // --set key=value
-  double max_points = 1 << 28;              // 268M points: a few GiB, well inside this 24 GiB machine
+  double max_points = default_max_points;   // points all live values of the run may hold together
+  double max_memory = 0;                    // bytes the Lua state may hold; 0 = default_max_memory()
   double timeout = 0;                       // seconds, 0 = none
-  long long seed = 0;                       // math.random seed
+  long long seed = 0;                       // math.random seed, in [0, 2^63)
   bool quiet = false;
 };
 
 // Set by the SIGINT handler; checked by the Lua hook and by every kernel's Progress.
 extern std::atomic<bool> interrupted;
+
+// The default --max-memory: a quarter of this machine's memory (6 GiB on 24 GiB), at least 256 MiB.
+double default_max_memory();
 
 class RunContext : public Progress {
  public:
@@ -37,6 +43,12 @@ class RunContext : public Progress {
   std::filesystem::path scripts_dir;  // the DSL's own library (require "selfsim.curves")
   std::set<std::string> used_params;  // --set keys that param() read
   std::vector<std::string> saved;     // files written, for the summary
+  double held_points = 0;             // points held by live values (curves), against --max-points
+  bool ended = false;                 // the recipe has returned or failed: nothing more may be written
+  LuaMemory memory;                   // the Lua state's allocator and its --max-memory limit
+
+  // What the run's values may still make: --max-points less what live values hold.
+  PointBudget budget() const { return {config.max_points, held_points}; }
 
   // Progress: a bar on stderr when it is a terminal and the task runs over a second.
   void start(const char* what) override;

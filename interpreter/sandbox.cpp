@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
+#include <string_view>
 
 #include "interpreter/lua_support.h"
 
@@ -11,17 +14,6 @@ namespace selfsim::interp {
 namespace {
 
 const char* const loaded_key = "selfsim.loaded";
-
-// Stops the script between instructions once the run is cancelled; the message carries the line it was on.
-void stop_hook(lua_State* L, lua_Debug* ar) {
-  {
-    const std::string reason = RunContext::of(L).stop_reason();
-    if (reason.empty()) return;
-    lua_getinfo(L, "Sl", ar);
-    lua_pushfstring(L, "%s:%d: %s", ar->short_src, ar->currentline, reason.c_str());
-  }  // reason freed before the longjmp
-  lua_error(L);
-}
 
 bool valid_module_name(const std::string& name) {
   if (name.empty() || name.front() == '.' || name.back() == '.') return false;
@@ -33,10 +25,11 @@ bool valid_module_name(const std::string& name) {
 // Loads module `name` (scripts/ first, then the recipe's folder; text chunks only) and leaves its value on
 // the stack, or leaves an error message and returns false. Runs the module with lua_pcall so that its
 // errors never longjmp past this function's C++ objects.
-bool load_module(lua_State* L, const char* module) {
-  const std::string name = module;
+bool load_module(lua_State* L, const std::string& name) {
+  const char* module = name.c_str();
   if (!valid_module_name(name)) {
-    lua_pushfstring(L, "%srequire: invalid module name '%s'", recipe_where(L).c_str(), module);
+    lua_pushfstring(L, "%srequire: invalid module name '%s' (letters, digits, '_' and '.')", recipe_where(L).c_str(),
+                    shown_text(name).c_str());
     return false;
   }
   lua_getfield(L, LUA_REGISTRYINDEX, loaded_key);
@@ -49,7 +42,15 @@ bool load_module(lua_State* L, const char* module) {
   for (const auto& dir : {run.scripts_dir, run.config.recipe.parent_path()}) {
     const std::filesystem::path file = dir / rel;
     if (!std::filesystem::is_regular_file(file)) continue;
-    if (luaL_loadfilex(L, file.c_str(), "t") != LUA_OK) return false;
+    if (luaL_loadfilex(L, file.c_str(), "t") != LUA_OK) {
+      // Syntax errors name the module's file and line already; others (a binary chunk) name nothing.
+      const std::string chunk = file.string() + ":";
+      const char* message = lua_tostring(L, -1);
+      if (message == nullptr || std::string_view(message).substr(0, chunk.size()) != chunk)
+        lua_pushfstring(L, "%srequire: cannot load module '%s' (%s): %s", recipe_where(L).c_str(), module, file.c_str(),
+                        message ? message : "not text");
+      return false;
+    }
     lua_pushstring(L, module);
     if (lua_pcall(L, 1, 1, 0) != LUA_OK) return false;
     if (lua_isnil(L, -1)) {
@@ -65,7 +66,18 @@ bool load_module(lua_State* L, const char* module) {
 }
 
 int sandbox_require(lua_State* L) {
-  if (!load_module(L, luaL_checkstring(L, 1))) return lua_error(L);
+  bool loaded = false;
+  {
+    std::string message;
+    std::size_t n = 0;
+    const char* name = lua_type(L, 1) == LUA_TSTRING ? lua_tolstring(L, 1, &n) : nullptr;
+    if (name == nullptr) message = "module name must be a string, got " + describe(L, 1);
+    else if (std::string_view(name, n).find('\0') != std::string_view::npos)
+      message = "module name must not contain NUL bytes, got '" + shown_text(std::string_view(name, n)) + "'";
+    else loaded = load_module(L, std::string(name, n));
+    if (!message.empty()) push_error(L, "require", message);
+  }  // strings freed before the error unwinds
+  if (!loaded) return lua_error(L);
   return 1;
 }
 
@@ -73,8 +85,11 @@ int sandbox_require(lua_State* L) {
 int unavailable(lua_State* L) {
   lua_getmetatable(L, 1);
   lua_getfield(L, -1, "library");
+  std::size_t n = 0;
+  const char* text = lua_type(L, 2) == LUA_TSTRING ? lua_tolstring(L, 2, &n) : nullptr;
+  lua_pushstring(L, text ? shown_text(std::string_view(text, n)).c_str() : "?");
   return luaL_error(L, "%s.%s is not available in recipes: they cannot run programs or touch files (write outputs with save)",
-                    lua_tostring(L, -1), luaL_optstring(L, 2, "?"));
+                    lua_tostring(L, -2), lua_tostring(L, -1));
 }
 
 // Pushes an empty table whose missing fields raise `unavailable`.
@@ -102,11 +117,36 @@ void open_safe_os_and_io(lua_State* L) {
   lua_setglobal(L, "io");
 }
 
+// Errors outside any protected call would abort the process; selfsim runs everything under lua_pcall, so
+// this is a last resort that still ends with one line and no partial file.
+int panic(lua_State* L) {
+  const char* message = lua_tostring(L, -1);
+  std::fprintf(stderr, "selfsim: unprotected Lua error: %s\n", message ? shown_text(message, 500).c_str() : "?");
+  std::fflush(stderr);
+  std::_Exit(1);
+}
+
+// warn() and errors in finalizers, one line each: "selfsim: warning: ...". "@on"/"@off" are ignored.
+void warning(void* ud, const char* message, int to_continue) {
+  auto& pending = *static_cast<std::string*>(ud);
+  if (pending.empty() && !to_continue && message[0] == '@') return;
+  pending += message;
+  if (to_continue && pending.size() < 4096) return;
+  std::fprintf(stderr, "selfsim: warning: %s\n", shown_text(pending, 500).c_str());
+  pending.clear();
+}
+
 }  // namespace
 
 lua_State* new_sandbox(RunContext& run) {
-  lua_State* L = luaL_newstate();
+  run.memory.limit = run.config.max_memory > 0 ? run.config.max_memory : default_max_memory();
+  run.memory.library = "@" + run.scripts_dir.string();
+  lua_State* L = lua_newstate(limited_alloc, &run.memory);
   if (L == nullptr) return nullptr;
+  run.memory.L = L;
+  lua_atpanic(L, panic);
+  static std::string pending_warning;
+  lua_setwarnf(L, warning, &pending_warning);
   const luaL_Reg libs[] = {{LUA_GNAME, luaopen_base},        {LUA_TABLIBNAME, luaopen_table}, {LUA_STRLIBNAME, luaopen_string},
                            {LUA_MATHLIBNAME, luaopen_math},  {LUA_UTF8LIBNAME, luaopen_utf8}, {LUA_COLIBNAME, luaopen_coroutine}};
   for (const auto& lib : libs) {
@@ -130,7 +170,8 @@ lua_State* new_sandbox(RunContext& run) {
   lua_pop(L, 1);
 
   run.install(L);
-  lua_sethook(L, stop_hook, LUA_MASKCOUNT, 10000);
+  install_ordered_pairs(L);
+  install_stop_guards(L);
   return L;
 }
 

@@ -2,28 +2,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <string_view>
-#include <unistd.h>
 
 #include "kernels/geom/error.h"
 
 namespace selfsim::io {
-
-namespace {
-
-// Removes the temporary file unless the write got as far as renaming it.
-struct TemporaryFile {
-  std::filesystem::path path;
-  bool kept = false;
-  ~TemporaryFile() {
-    if (!kept) {
-      std::error_code ignored;
-      std::filesystem::remove(path, ignored);
-    }
-  }
-};
-
-}  // namespace
 
 const std::vector<std::string>& curve_extensions() {
   static const std::vector<std::string> ext{".svg", ".vtp"};
@@ -49,24 +33,28 @@ void SaveOptions::validate() const {
   if (!(size >= 16 && size <= 100000)) throw Error("option 'size' must be in [16, 100000] pixels");
 }
 
-void save_curve(const Polyline& c, const std::filesystem::path& file, const SaveOptions& opt, Progress& progress) {
+std::string save_curve(const Polyline& c, const std::filesystem::path& root, const std::string& name, const SaveOptions& opt,
+                       Progress& progress) {
   opt.validate();
-  const std::string ext = file.extension().string();
+  const std::string file = std::filesystem::path(name).filename().string();
+  const std::string ext = std::filesystem::path(name).extension().string();
   const auto& known = curve_extensions();
   if (std::find(known.begin(), known.end(), ext) == known.end())
-    throw Error("cannot save a curve as '" + ext + "' (file '" + file.filename().string() + "'), expected one of: " + quoted_list(known));
-  if (c.points.empty()) throw Error("cannot save an empty curve to '" + file.filename().string() + "'");
-  if (!c.finite()) throw Error("cannot save '" + file.filename().string() + "': the curve has non-finite coordinates");
-  const std::string task = "writing " + file.filename().string();
+    throw Error("cannot save a curve as '" + ext + "' (file '" + file + "'), expected one of: " + quoted_list(known));
+  if (c.points.empty()) throw Error("cannot save an empty curve to '" + file + "'");
+  if (!c.finite()) throw Error("cannot save '" + file + "': the curve has non-finite coordinates");
+  // Finite points can still overflow what a file derives from them: the extent (SVG viewBox, with its
+  // margin) and the arclength field. Scale such a curve down before saving it.
+  const Vec2 extent = c.bbox().size() * 1.05;
+  if (!is_finite(extent) || !std::isfinite(c.length()))
+    throw Error("cannot save '" + file + "': the curve's extent or length overflows (scale it down with c:transform)");
+  OutputFile out(root, name);
+  const std::string task = "writing " + file;
   progress.start(task.c_str());
-  TemporaryFile tmp{file.string() + ".part-" + std::to_string(::getpid())};
-  if (ext == ".vtp") write_vtp(c, tmp.path, opt, progress);
-  else write_svg(c, tmp.path, opt, progress);
+  if (ext == ".vtp") write_vtp(c, out, opt, progress);
+  else write_svg(c, out, opt, progress);
   if (progress.cancelled()) throw Cancelled();
-  std::error_code ec;
-  std::filesystem::rename(tmp.path, file, ec);
-  if (ec) throw Error("cannot write '" + file.string() + "': " + ec.message());
-  tmp.kept = true;
+  out.commit();
+  return out.path();
 }
-
 }  // namespace selfsim::io

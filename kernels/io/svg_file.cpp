@@ -4,7 +4,6 @@
 // any size reads the same. (vector-effect: non-scaling-stroke would say this too, but librsvg and some
 // other renderers ignore it.)
 #include <charconv>
-#include <fstream>
 
 #include "kernels/geom/error.h"
 #include "kernels/io/save.h"
@@ -22,7 +21,7 @@ void put(std::string& s, double v) {
 
 }  // namespace
 
-void write_svg(const Polyline& c, const std::filesystem::path& file, const SaveOptions& opt, Progress& progress) {
+void write_svg(const Polyline& c, OutputFile& out, const SaveOptions& opt, Progress& progress) {
   const BBox2 b = c.bbox();
   Vec2 extent = b.size();
   const double big = std::max({extent.x, extent.y, 1e-300});
@@ -31,10 +30,9 @@ void write_svg(const Polyline& c, const std::filesystem::path& file, const SaveO
   extent = extent + Vec2{2 * margin, 2 * margin};
   const double px = opt.size / std::max(extent.x, extent.y);
 
-  std::ofstream out(file, std::ios::binary);
   std::string s;  // written out every megabyte or so: memory stays flat whatever the curve
   auto flush = [&] {
-    out.write(s.data(), static_cast<std::streamsize>(s.size()));
+    out.write(s);
     s.clear();
   };
   s += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"";
@@ -66,7 +64,6 @@ void write_svg(const Polyline& c, const std::filesystem::path& file, const SaveO
   }
   s += "\"/>\n</g>\n</svg>\n";
   flush();
-  if (!out.flush()) throw Error("cannot write '" + file.string() + "' (disk full?)");
 }
 
 }  // namespace selfsim::io

@@ -2,7 +2,7 @@
 // and cell field `path` let a user colour by construction level, by distance along the curve, or by path.
 
 #include <cstdint>
-#include <fstream>
+#include <string>
 
 #include "kernels/geom/error.h"
 #include "kernels/io/save.h"
@@ -16,14 +16,14 @@ namespace {
 constexpr std::size_t chunk_points = std::size_t{1} << 16;
 
 struct ArrayWriter {
-  std::ofstream& out;
+  OutputFile& out;
   Progress& progress;
   double total_bytes, written = 0;
 
-  void header(std::uint64_t bytes) { out.write(reinterpret_cast<const char*>(&bytes), sizeof bytes); }
+  void header(std::uint64_t bytes) { out.write(&bytes, sizeof bytes); }
   template <class T>
   void chunk(const std::vector<T>& values) {
-    out.write(reinterpret_cast<const char*>(values.data()), static_cast<std::streamsize>(values.size() * sizeof(T)));
+    out.write(values.data(), values.size() * sizeof(T));
     written += static_cast<double>(values.size() * sizeof(T));
     progress.step(written / total_bytes);
   }
@@ -46,7 +46,7 @@ struct ArrayWriter {
 // arrays (about 3.5 GiB more for a level-26 dragon) and cannot be interrupted while it writes. The
 // format is VTK's XML PolyData, version 1.0, appended raw little-endian data with UInt64 block headers;
 // VTK's reader (and so ParaView) reads it back, which the viewer test checks.
-void write_vtp(const Polyline& c, const std::filesystem::path& file, const SaveOptions&, Progress& progress) {
+void write_vtp(const Polyline& c, OutputFile& out, const SaveOptions&, Progress& progress) {
   const std::size_t n = c.points.size(), paths = c.paths();
   const std::size_t sizes[] = {n * 4, n * 8, paths * 4, n * 24, n * 8, paths * 8};  // in the order written below
   std::size_t offsets[6], at = 0;
@@ -54,28 +54,29 @@ void write_vtp(const Polyline& c, const std::filesystem::path& file, const SaveO
     offsets[i] = at;
     at += sizes[i] + sizeof(std::uint64_t);
   }
-  std::ofstream out(file, std::ios::binary);
-  if (!out) throw Error("cannot write '" + file.string() + "'");
+  using std::to_string;
+  std::string h;
   auto array = [&](const char* type, const char* name, int components, int i) {
-    out << "        <DataArray type=\"" << type << "\" Name=\"" << name << "\" NumberOfComponents=\"" << components
-        << "\" format=\"appended\" offset=\"" << offsets[i] << "\"/>\n";
+    h += std::string("        <DataArray type=\"") + type + "\" Name=\"" + name + "\" NumberOfComponents=\"" + to_string(components) +
+         "\" format=\"appended\" offset=\"" + to_string(offsets[i]) + "\"/>\n";
   };
-  out << "<?xml version=\"1.0\"?>\n"
-      << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
-      << "  <PolyData>\n"
-      << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"0\" NumberOfLines=\"" << paths
-      << "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
-      << "      <PointData Scalars=\"arclength\">\n";
+  h += "<?xml version=\"1.0\"?>\n"
+       "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+       "  <PolyData>\n"
+       "    <Piece NumberOfPoints=\"" + to_string(n) + "\" NumberOfVerts=\"0\" NumberOfLines=\"" + to_string(paths) +
+       "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
+       "      <PointData Scalars=\"arclength\">\n";
   array("Int32", "level", 1, 0);
   array("Float64", "arclength", 1, 1);
-  out << "      </PointData>\n      <CellData>\n";
+  h += "      </PointData>\n      <CellData>\n";
   array("Int32", "path", 1, 2);
-  out << "      </CellData>\n      <Points>\n";
+  h += "      </CellData>\n      <Points>\n";
   array("Float64", "Points", 3, 3);
-  out << "      </Points>\n      <Lines>\n";
+  h += "      </Points>\n      <Lines>\n";
   array("Int64", "connectivity", 1, 4);
   array("Int64", "offsets", 1, 5);
-  out << "      </Lines>\n    </Piece>\n  </PolyData>\n  <AppendedData encoding=\"raw\">\n   _";
+  h += "      </Lines>\n    </Piece>\n  </PolyData>\n  <AppendedData encoding=\"raw\">\n   _";
+  out.write(h);
 
   ArrayWriter w{out, progress, static_cast<double>(at)};
   w.array<std::int32_t>(n, [&](std::size_t begin, std::size_t end, auto& b) { b.assign(end - begin, c.level); });
@@ -101,8 +102,7 @@ void write_vtp(const Polyline& c, const std::filesystem::path& file, const SaveO
   w.array<std::int64_t>(paths, [&](std::size_t begin, std::size_t end, auto& b) {
     for (std::size_t i = begin; i < end; ++i) b.push_back(static_cast<std::int64_t>(c.path_ends[i]));
   });
-  out << "\n  </AppendedData>\n</VTKFile>\n";
-  if (!out.flush()) throw Error("cannot write '" + file.string() + "' (disk full?)");
+  out.write(std::string_view("\n  </AppendedData>\n</VTKFile>\n"));
 }
 
 }  // namespace selfsim::io

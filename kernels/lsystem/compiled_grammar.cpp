@@ -11,7 +11,8 @@ Compiled::Compiled(const Grammar& g) {
   rule.fill(-1);
   for (int s = 0; s < 256; ++s) {
     const char c = static_cast<char>(s);
-    turn[s] = g.turn_of(c);
+    // Reduced exactly (fmod is exact): a turn of 1e20 degrees is the turn it really is, not a rounding of it.
+    turn[s] = std::fmod(g.turn_of(c), 360.0);
     action[s] = g.draws(c) ? Action::Draw
                 : g.moves(c) ? Action::Move
                 : c == '[' ? Action::Push
@@ -38,7 +39,8 @@ int Compiled::lattice() const {
 }
 
 LatticeTable::LatticeTable(const Compiled& c, int lattice, double start_degrees) : n(lattice) {
-  for (int i = 0; i < n; ++i) step.push_back(polar(start_degrees * degree + 2 * std::numbers::pi * i / n));
+  const double start = std::fmod(start_degrees, 360.0) * degree;
+  for (int i = 0; i < n; ++i) step.push_back(polar(start + 2 * std::numbers::pi * i / n));
   for (int s = 0; s < 256; ++s) {
     const long t = std::lround(c.turn[s] * n / 360) % n;
     turn[s] = static_cast<int>(t < 0 ? t + n : t);
@@ -51,6 +53,8 @@ namespace {
 constexpr double max_block_points = 1024;
 constexpr double max_block_symbols = 16384;
 constexpr double max_table_bytes = 16 << 20;
+// Building a block walks its symbols once per heading: 7200 headings of long rules must stay cheap too.
+constexpr double max_build_steps = 1 << 25;
 
 // Symbols of `s` rewritten d times, appended to out.
 void expand(const Compiled& c, unsigned char s, int d, std::string& out) {
@@ -63,19 +67,22 @@ void expand(const Compiled& c, unsigned char s, int d, std::string& out) {
 
 }  // namespace
 
-LatticeBlocks::LatticeBlocks(const Grammar& g, const Compiled& c, const LatticeTable& t, int level) {
+LatticeBlocks::LatticeBlocks(const Grammar& g, const Compiled& c, const LatticeTable& t, int level, Progress& progress) {
   block.fill(-1);
   // The deepest d whose blocks all fit the limits.
+  SymbolWeights w = symbol_weights(g, Weight::Segments), symbols = symbol_weights(g, Weight::Symbols);
   for (int d = 1; d <= level; ++d) {
-    const auto w = per_symbol_counts(g, d, Weight::Segments), symbols = per_symbol_counts(g, d, Weight::Symbols);
-    double biggest = 0, longest = 0, bytes = 0;
+    rewrite_weights(g, w);
+    rewrite_weights(g, symbols);
+    double biggest = 0, longest = 0, bytes = 0, steps = 0;
     for (int s = 0; s < 256; ++s)
       if (c.rule[s] >= 0) {
         biggest = std::max(biggest, w[s]);
         longest = std::max(longest, symbols[s]);
         bytes += w[s] * t.n * sizeof(Vec2);
+        steps += symbols[s] * t.n;
       }
-    if (biggest > max_block_points || longest > max_block_symbols || bytes > max_table_bytes) break;
+    if (biggest > max_block_points || longest > max_block_symbols || bytes > max_table_bytes || steps > max_build_steps) break;
     depth = d;
   }
   if (depth == 0) return;
@@ -90,6 +97,7 @@ LatticeBlocks::LatticeBlocks(const Grammar& g, const Compiled& c, const LatticeT
     if (!plain) continue;
     Block b;
     for (int h = 0; h < t.n; ++h) {
+      if (h % 64 == 0 && progress.cancelled()) throw Cancelled();
       std::vector<Vec2> pts;
       Vec2 pos{};
       int k = h;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "kernels/geom/progress.h"
 #include "kernels/geom/vec2.h"
 #include "kernels/lsystem/grammar.h"
 
@@ -20,7 +21,7 @@ constexpr double degree = std::numbers::pi / 180;
 // The grammar as flat tables indexed by symbol byte.
 struct Compiled {
   std::array<Action, 256> action{};
-  std::array<double, 256> turn{};  // degrees, positive = left
+  std::array<double, 256> turn{};  // degrees in (-360, 360), positive = left
   std::array<int, 256> rule{};     // index into rules, or -1
   std::vector<std::string> rules;
 
@@ -51,7 +52,7 @@ struct LatticeBlocks {
   std::array<int, 256> block{};  // index into blocks, or -1 (no rule, or branches/moves inside)
   std::vector<Block> blocks;
 
-  LatticeBlocks(const Grammar& g, const Compiled& c, const LatticeTable& t, int level);
+  LatticeBlocks(const Grammar& g, const Compiled& c, const LatticeTable& t, int level, Progress& progress);
 };
 
 }  // namespace selfsim::lsystem

@@ -32,5 +32,7 @@ struct Grammar {
 
 // Highest level any kernel accepts: depth-first expansion keeps one frame per level.
 constexpr int max_level = 256;
+// Most symbols the axiom and all rules may hold together (a megabyte of grammar).
+constexpr double max_grammar_symbols = 1 << 20;
 
 }  // namespace selfsim::lsystem

@@ -1,50 +1,73 @@
 #include "kernels/lsystem/production_count.h"
 
-#include <array>
+#include <algorithm>
 
 namespace selfsim::lsystem {
 
 namespace {
 
-// The production matrix acts on per-symbol weights: after d rewriting steps, symbol s contributes
-// w_d(s) = sum of w_{d-1}(t) over its replacement t, or w_0(s) if s has no rule.
 template <class Weight>
-std::array<double, 256> per_symbol(const Grammar& g, int depth, Weight weight) {
-  std::array<double, 256> w{};
+SymbolWeights weights_of(Weight weight) {
+  SymbolWeights w{};
   for (int s = 0; s < 256; ++s) w[s] = weight(static_cast<char>(s));
-  for (int d = 1; d <= depth; ++d) {
-    std::array<double, 256> next = w;
-    for (const auto& [symbol, replacement] : g.rules) {
-      double total = 0;
-      for (char t : replacement) total += w[static_cast<unsigned char>(t)];
-      next[static_cast<unsigned char>(symbol)] = total;
-    }
-    w = next;
-  }
   return w;
 }
 
-template <class Weight>
-double count(const Grammar& g, int level, Weight weight) {
-  const auto w = per_symbol(g, level, weight);
-  double total = 0;
-  for (char s : g.axiom) total += w[static_cast<unsigned char>(s)];
-  return total;
+double total(const std::string& s, const SymbolWeights& w) {
+  double t = 0;
+  for (char c : s) t += w[static_cast<unsigned char>(c)];
+  return t;
+}
+
+// The deepest nesting of '[' reached while reading s, given each symbol's net nesting change and the
+// deepest nesting reached inside it (relative to where it starts).
+double peak(const std::string& s, const SymbolWeights& net, const SymbolWeights& inner) {
+  double depth = 0, deepest = 0;
+  for (char c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    deepest = std::max(deepest, depth + inner[u]);
+    depth += net[u];
+  }
+  return deepest;
 }
 
 }  // namespace
 
-LevelCounts predict_counts(const Grammar& g, int level) {
-  LevelCounts c;
-  c.symbols = count(g, level, [](char) { return 1.0; });
-  c.segments = count(g, level, [&](char s) { return g.draws(s) ? 1.0 : 0.0; });
-  c.breaks = count(g, level, [&](char s) { return s == ']' || g.moves(s) ? 1.0 : 0.0; });
-  return c;
+// The production matrix acts on per-symbol weights: after d rewriting steps, symbol s contributes
+// w_d(s) = sum of w_{d-1}(t) over its replacement t, or w_0(s) if s has no rule.
+void rewrite_weights(const Grammar& g, SymbolWeights& w) {
+  SymbolWeights next = w;
+  for (const auto& [symbol, replacement] : g.rules) next[static_cast<unsigned char>(symbol)] = total(replacement, w);
+  w = next;
 }
 
-std::array<double, 256> per_symbol_counts(const Grammar& g, int depth, Weight weight) {
-  if (weight == Weight::Symbols) return per_symbol(g, depth, [](char) { return 1.0; });
-  return per_symbol(g, depth, [&](char s) { return g.draws(s) ? 1.0 : 0.0; });
+SymbolWeights symbol_weights(const Grammar& g, Weight weight) {
+  if (weight == Weight::Symbols) return weights_of([](char) { return 1.0; });
+  return weights_of([&](char s) { return g.draws(s) ? 1.0 : 0.0; });
+}
+
+SymbolWeights per_symbol_counts(const Grammar& g, int depth, Weight weight) {
+  SymbolWeights w = symbol_weights(g, weight);
+  for (int d = 1; d <= depth; ++d) rewrite_weights(g, w);
+  return w;
+}
+
+LevelCounts predict_counts(const Grammar& g, int level) {
+  SymbolWeights symbols = symbol_weights(g, Weight::Symbols), segments = symbol_weights(g, Weight::Segments);
+  SymbolWeights breaks = weights_of([&](char s) { return s == ']' || g.moves(s) ? 1.0 : 0.0; });
+  // Branch nesting: '[' opens one (and reaches depth 1 inside itself), ']' closes one.
+  SymbolWeights net = weights_of([](char s) { return s == '[' ? 1.0 : s == ']' ? -1.0 : 0.0; });
+  SymbolWeights inner = weights_of([](char s) { return s == '[' ? 1.0 : 0.0; });
+  for (int d = 1; d <= level; ++d) {
+    rewrite_weights(g, symbols);
+    rewrite_weights(g, segments);
+    rewrite_weights(g, breaks);
+    SymbolWeights next_inner = inner;
+    for (const auto& [symbol, replacement] : g.rules) next_inner[static_cast<unsigned char>(symbol)] = peak(replacement, net, inner);
+    inner = next_inner;
+    rewrite_weights(g, net);
+  }
+  return {total(g.axiom, symbols), total(g.axiom, segments), total(g.axiom, breaks), peak(g.axiom, net, inner)};
 }
 
 }  // namespace selfsim::lsystem

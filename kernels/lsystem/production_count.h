@@ -10,9 +10,10 @@
 namespace selfsim::lsystem {
 
 struct LevelCounts {
-  double symbols = 0;   // length of the level's string
-  double segments = 0;  // drawn segments
-  double breaks = 0;    // places a new path may begin (']' and move symbols)
+  double symbols = 0;    // length of the level's string
+  double segments = 0;   // drawn segments
+  double breaks = 0;     // places a new path may begin (']' and move symbols)
+  double max_depth = 0;  // most branches open at once ('[' not yet closed): the turtle's saved states
 
   // Upper bound on points: each path has one more point than segments.
   double max_points() const { return segments + breaks + 1; }
@@ -21,9 +22,15 @@ struct LevelCounts {
 // Counts for grammar g at `level` (>= 0).
 LevelCounts predict_counts(const Grammar& g, int level);
 
+// Per-symbol weights indexed by symbol byte, and one rewriting step of them: after it, w[s] is the sum of
+// the old weights over s's replacement (symbols without a rule keep theirs).
+using SymbolWeights = std::array<double, 256>;
+void rewrite_weights(const Grammar& g, SymbolWeights& w);
+
 // What each single symbol becomes after `depth` rewriting steps: its number of symbols, or of drawn
 // segments. Indexed by symbol byte.
 enum class Weight { Symbols, Segments };
-std::array<double, 256> per_symbol_counts(const Grammar& g, int depth, Weight weight);
+SymbolWeights symbol_weights(const Grammar& g, Weight weight);
+SymbolWeights per_symbol_counts(const Grammar& g, int depth, Weight weight);
 
 }  // namespace selfsim::lsystem

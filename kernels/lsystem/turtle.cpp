@@ -6,6 +6,7 @@
 #include <numbers>
 #include <type_traits>
 
+#include "kernels/geom/budget.h"
 #include "kernels/geom/count_text.h"
 #include "kernels/geom/error.h"
 #include "kernels/geom/huge_pages.h"
@@ -55,15 +56,10 @@ Vec2 run_turtle(const Compiled& c, const std::string& axiom, int level, Heading 
   std::vector<std::pair<Vec2, Heading>> saved;
   Vec2 pos{};
   bool path_open = false;
-  // Progress and cancellation every 2^20 points drawn, and every 2^22 rules expanded: a grammar that
-  // rewrites much and draws little must be stoppable too.
-  constexpr std::size_t report_every = std::size_t{1} << 20;
-  std::size_t next_report = report_every, rewrites = 0;
-  auto report_if_due = [&] {
-    if (out.points.size() < next_report) return;
-    progress.step(static_cast<double>(out.points.size()) / predicted_segments);
-    next_report += report_every;
-  };
+  // Progress and cancellation once per 2^20 units of work: a symbol read, or a point copied from a block.
+  // Counting symbols, not points, keeps a grammar that rewrites much and draws little stoppable too.
+  constexpr std::size_t check_every = std::size_t{1} << 20;
+  std::size_t work = 0, next_check = check_every;
   const int block_level = blocks ? level - blocks->depth : -1;  // rewritings done when blocks take over
 
   while (!frames.empty()) {
@@ -71,6 +67,10 @@ Vec2 run_turtle(const Compiled& c, const std::string& axiom, int level, Heading 
     if (f.pos == f.end) {
       frames.pop_back();
       continue;
+    }
+    if (++work >= next_check) {
+      progress.step(static_cast<double>(out.points.size()) / predicted_segments);
+      next_check = work + check_every;
     }
     const std::uint8_t s = *f.pos++;
     const int r = c.rule[s];
@@ -87,13 +87,12 @@ Vec2 run_turtle(const Compiled& c, const std::string& axiom, int level, Heading 
             pos = out.points.back();
           }
           heading.k = heading.table->rotate(heading.k, b.turn);
-          report_if_due();
+          work += pts.size();
           continue;
         }
       }
       const std::string& rule = c.rules[static_cast<std::size_t>(r)];
       frames.push_back({bytes(rule), bytes(rule) + rule.size()});
-      if (++rewrites % (report_every << 2) == 0) progress.step(static_cast<double>(out.points.size()) / predicted_segments);
       continue;
     }
     switch (c.action[s]) {
@@ -105,7 +104,6 @@ Vec2 run_turtle(const Compiled& c, const std::string& axiom, int level, Heading 
         }
         pos += heading.forward();
         out.points.push_back(pos);
-        report_if_due();
         break;
       case Action::Move:
         out.close_path();
@@ -146,19 +144,22 @@ void curve_into(const Grammar& g, const CurveOptions& opt, Progress& progress, P
   g.validate();
   opt.validate();
   const LevelCounts counts = predict_counts(g, opt.level);
-  if (counts.segments + 1 > opt.max_points)
-    throw Error("level " + std::to_string(opt.level) + " would make " + count_text(counts.segments + 1) +
-                " points, over the limit of " + count_text(opt.max_points) + " (raise it with --max-points)");
+  const std::string what = "level " + std::to_string(opt.level);
+  check_budget(counts.segments + 1, opt.budget, what);
+  // Each branch left open keeps a saved turtle state (32 bytes, two points' worth) until it closes.
+  if (counts.max_depth > 0)
+    check_budget(counts.max_points() + 2 * counts.max_depth, opt.budget,
+                 what + ", with " + count_text(counts.max_depth) + " branches open at once,");
   // Symbols that draw nothing still cost time: refuse levels that would rewrite far more than they draw.
-  if (counts.symbols > symbols_per_point * opt.max_points)
-    throw Error("level " + std::to_string(opt.level) + " would rewrite " + count_text(counts.symbols) + " symbols, over the limit of " +
-                count_text(symbols_per_point * opt.max_points) + " (" + std::to_string(static_cast<int>(symbols_per_point)) +
-                " x --max-points)");
+  if (counts.symbols > symbols_per_point * opt.budget.left())
+    throw BudgetError(what + " would rewrite " + count_text(counts.symbols) + " symbols, over the limit of " +
+                      count_text(symbols_per_point * opt.budget.left()) + " (" + std::to_string(static_cast<int>(symbols_per_point)) +
+                      " x --max-points)");
 
   out.points.clear();
   out.path_ends.clear();
   out.level = opt.level;
-  out.points.reserve(static_cast<std::size_t>(std::min(counts.max_points(), opt.max_points)));
+  out.points.reserve(static_cast<std::size_t>(std::min(counts.max_points(), opt.budget.left())));
   advise_huge_pages(out.points);
   progress.start("L-system");
 
@@ -168,7 +169,7 @@ void curve_into(const Grammar& g, const CurveOptions& opt, Progress& progress, P
   Vec2 end;  // the turtle walks unit steps; the step length shrink^level is applied below
   if (lattice > 0) {
     const LatticeTable table(c, lattice, start);
-    const LatticeBlocks blocks(g, c, table, opt.level);
+    const LatticeBlocks blocks(g, c, table, opt.level, progress);
     end = run_turtle(c, g.axiom, opt.level, LatticeHeading{&table}, &blocks, counts.segments, out, progress);
   } else {
     end = run_turtle(c, g.axiom, opt.level, FreeHeading{&c, start * degree}, nullptr, counts.segments, out, progress);

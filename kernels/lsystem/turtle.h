@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "kernels/geom/budget.h"
 #include "kernels/geom/polyline.h"
 #include "kernels/geom/progress.h"
 #include "kernels/lsystem/grammar.h"
@@ -14,7 +15,7 @@ namespace selfsim::lsystem {
 struct CurveOptions {
   int level = 0;               // rewriting steps applied to the axiom, in [0, max_level]
   bool normalize = true;       // open curves run from (0,0) to (1,0); see below
-  double max_points = 1 << 28; // refuse (before any work) a level predicted to need more points
+  PointBudget budget;          // refuse (before any work) a level predicted not to fit
 
   void validate() const;
 };
@@ -24,7 +25,8 @@ struct CurveOptions {
 // to (0,0) and its end to (1,0) is applied, so every level of an open curve spans the same unit segment.
 // A closed curve (turtle back at its start) is left where the turtle drew it: starting at (0,0), heading
 // start_angle, with steps of length shrink^level. With normalize = false every curve is left that way.
-// Branches '[' ']' and move symbols start new paths. Throws Error if the level is over opt.max_points.
+// Branches '[' ']' and move symbols start new paths. Throws BudgetError if the level, or
+// the branches it keeps open, would not fit opt.budget.
 Polyline curve(const Grammar& g, const CurveOptions& opt, Progress& progress);
 // The same into `out`, reusing its memory (for repeated runs; benches).
 void curve_into(const Grammar& g, const CurveOptions& opt, Progress& progress, Polyline& out);

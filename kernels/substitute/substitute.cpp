@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "kernels/geom/count_text.h"
+#include "kernels/geom/budget.h"
 #include "kernels/geom/error.h"
 #include "kernels/geom/similarity.h"
 
@@ -67,9 +67,7 @@ Polyline substitute(const Polyline& path, const Polyline& generator, const Subst
   opt.validate(n);
 
   const double segments = static_cast<double>(path.segments()) * std::pow(static_cast<double>(n), opt.levels);
-  if (segments + 1 > opt.max_points)
-    throw Error("levels " + std::to_string(opt.levels) + " would make " + count_text(segments + 1) +
-                " points, over the limit of " + count_text(opt.max_points) + " (raise it with --max-points)");
+  check_budget(segments + 1, opt.budget, "levels " + std::to_string(opt.levels));
 
   Polyline result;
   result.level = opt.levels;

@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "kernels/geom/budget.h"
 #include "kernels/geom/polyline.h"
 #include "kernels/geom/progress.h"
 
@@ -22,7 +23,7 @@ enum class SegmentTransform {
 struct SubstituteOptions {
   int levels = 1;                           // rounds of substitution, in [0, 64]
   std::vector<SegmentTransform> transforms; // one per generator segment, or empty for all Identity
-  double max_points = 1 << 28;              // refuse (before any work) results predicted to be larger
+  PointBudget budget;                       // refuse (before any work) results predicted not to fit
 
   void validate(std::size_t generator_segments) const;
 };

@@ -50,11 +50,11 @@ TEST(LatticeBlocks, ChosenDepthStaysWithinLevelAndSize) {
   const Compiled c(g);
   const LatticeTable t(c, c.lattice(), 0);
   EXPECT_EQ(t.n, 4);
-  const LatticeBlocks b(g, c, t, 20);
+  const LatticeBlocks b(g, c, t, 20, no_progress());
   EXPECT_EQ(b.depth, 10);  // 2^10 = 1024 points per block is the largest allowed
   for (const auto& block : b.blocks) EXPECT_LE(block.points[0].size(), 1024u);
-  EXPECT_EQ(LatticeBlocks(g, c, t, 3).depth, 3);
-  EXPECT_EQ(LatticeBlocks(g, c, t, 0).depth, 0);
+  EXPECT_EQ(LatticeBlocks(g, c, t, 3, no_progress()).depth, 3);
+  EXPECT_EQ(LatticeBlocks(g, c, t, 0, no_progress()).depth, 0);
 }
 
 TEST(LatticeBlocks, BranchingRulesAreNotBlocked) {
@@ -62,7 +62,7 @@ TEST(LatticeBlocks, BranchingRulesAreNotBlocked) {
   const Compiled c(plant);
   const LatticeTable t(c, c.lattice(), 90);
   EXPECT_EQ(t.n, 18);
-  const LatticeBlocks b(plant, c, t, 8);
+  const LatticeBlocks b(plant, c, t, 8, no_progress());
   EXPECT_EQ(b.block['X'], -1);
   EXPECT_GE(b.block['F'], 0);
 }

@@ -119,7 +119,7 @@ TEST(Turtle, PerSymbolAnglesAndIrrationalTurns) {
 
 TEST(Turtle, RefusesLevelsOverTheLimitBeforeWork) {
   try {
-    curve(table1::dragon(), {.level = 40, .max_points = 1e6}, no_progress());
+    curve(table1::dragon(), {.level = 40, .budget = {1e6}}, no_progress());
     FAIL() << "expected an error";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("1099511627777 points"), std::string::npos) << e.what();

@@ -94,5 +94,5 @@ TEST(Substitute, Errors) {
   EXPECT_THROW(run(unit, Polyline::single({{0, 0}, {0.5, 0.5}}), 1), Error);  // generator not ending at 1
   EXPECT_THROW(run(unit, tent, 1, {SegmentTransform::Identity}), Error);    // one transform for two segments
   EXPECT_THROW(run(unit, tent, -1), Error);
-  EXPECT_THROW(substitute::substitute(unit, tent, {.levels = 60, .max_points = 1e6}, no_progress()), Error);
+  EXPECT_THROW(substitute::substitute(unit, tent, {.levels = 60, .budget = {1e6}}, no_progress()), Error);
 }

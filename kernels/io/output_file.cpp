@@ -1,0 +1,153 @@
+#include "kernels/io/output_file.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <mutex>
+#include <vector>
+
+#include "kernels/geom/error.h"
+
+namespace selfsim::io {
+
+namespace {
+
+constexpr std::size_t buffer_bytes = std::size_t{1} << 20;
+
+// Named temporaries of open OutputFiles, by folder descriptor and name, for remove_temporaries().
+std::mutex temporaries_mutex;
+std::vector<std::pair<int, std::string>> temporaries;
+
+void track(int dir, const std::string& name) {
+  std::lock_guard lock(temporaries_mutex);
+  temporaries.emplace_back(dir, name);
+}
+
+void untrack(int dir, const std::string& name) {
+  std::lock_guard lock(temporaries_mutex);
+  std::erase(temporaries, std::pair{dir, name});
+}
+
+std::string system_error() { return std::strerror(errno); }
+
+// A name for a temporary beside `leaf` that no other run or file uses: dot-prefixed, with the process id
+// and a counter.
+std::string temporary_name(const std::string& leaf) {
+  static std::atomic<unsigned> counter{0};
+  return "." + leaf.substr(0, 64) + ".part-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+}
+
+}  // namespace
+
+OutputFile::OutputFile(const std::filesystem::path& root, const std::string& name) {
+  const std::filesystem::path rel = std::filesystem::path(name).lexically_normal();
+  if (name.empty() || name.find('\0') != std::string::npos || rel.is_absolute() || rel.empty() || *rel.begin() == ".." ||
+      !rel.has_filename() || rel.filename() == "." || rel.filename() == "..")
+    throw Error("path '" + name + "' is outside the output folder (give a relative file name such as 'curve.vtp')");
+  leaf_ = rel.filename().string();
+  display_ = (root / rel).string();
+
+  std::error_code ec;
+  std::filesystem::create_directories(root, ec);
+  dir_ = ::open(root.c_str(), O_DIRECTORY | O_RDONLY | O_CLOEXEC);
+  if (dir_ < 0) throw Error("cannot open the output folder '" + root.string() + "': " + (ec ? ec.message() : system_error()));
+  std::filesystem::path walked = root;
+  for (const auto& part : rel.parent_path()) {
+    walked /= part;
+    if (::mkdirat(dir_, part.c_str(), 0777) != 0 && errno != EEXIST)
+      throw Error("cannot create folder '" + walked.string() + "': " + system_error());
+    const int next = ::openat(dir_, part.c_str(), O_DIRECTORY | O_NOFOLLOW | O_RDONLY | O_CLOEXEC);
+    if (next < 0) {
+      if (errno == ELOOP || errno == ENOTDIR)
+        throw Error("'" + walked.string() + "' is a symbolic link or not a folder: selfsim writes only inside the output folder");
+      throw Error("cannot open folder '" + walked.string() + "': " + system_error());
+    }
+    ::close(dir_);
+    dir_ = next;
+  }
+  fd_ = ::openat(dir_, ".", O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+  if (fd_ < 0) {  // no O_TMPFILE here: an exclusive named temporary instead
+    temporary_ = temporary_name(leaf_);
+    fd_ = ::openat(dir_, temporary_.c_str(), O_CREAT | O_EXCL | O_WRONLY | O_NOFOLLOW | O_CLOEXEC, 0666);
+    if (fd_ < 0) {
+      const std::string why = system_error();
+      temporary_.clear();
+      throw Error("cannot write '" + display_ + "': " + why);
+    }
+    track(dir_, temporary_);
+  }
+  buffer_.reserve(buffer_bytes);
+}
+
+OutputFile::~OutputFile() {
+  if (fd_ >= 0) ::close(fd_);
+  if (!committed_ && !temporary_.empty()) {
+    ::unlinkat(dir_, temporary_.c_str(), 0);
+    untrack(dir_, temporary_);
+  }
+  if (dir_ >= 0) ::close(dir_);
+}
+
+void OutputFile::write(std::string_view bytes) {
+  if (buffer_.size() + bytes.size() > buffer_bytes) flush();
+  if (bytes.size() > buffer_bytes) {
+    buffer_ = bytes;  // rare: one piece bigger than the buffer
+    flush();
+    return;
+  }
+  buffer_.append(bytes);
+}
+
+void OutputFile::flush() {
+  const char* p = buffer_.data();
+  std::size_t left = buffer_.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd_, p, left);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) throw Error("cannot write '" + display_ + "': " + (n < 0 ? system_error() : "no progress") + " (disk full?)");
+    p += n;
+    left -= static_cast<std::size_t>(n);
+  }
+  buffer_.clear();
+}
+
+// Gives the anonymous file a fresh name beside the target (through /proc, which needs no privilege).
+void OutputFile::name_temporary() {
+  const std::string proc = "/proc/self/fd/" + std::to_string(fd_);
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    const std::string name = temporary_name(leaf_);
+    track(dir_, name);
+    if (::linkat(AT_FDCWD, proc.c_str(), dir_, name.c_str(), AT_SYMLINK_FOLLOW) == 0) {
+      temporary_ = name;
+      return;
+    }
+    const int err = errno;
+    untrack(dir_, name);
+    if (err != EEXIST) throw Error("cannot write '" + display_ + "': " + std::strerror(err));
+  }
+  throw Error("cannot write '" + display_ + "': no free temporary name");
+}
+
+void OutputFile::commit() {
+  flush();
+  if (temporary_.empty()) name_temporary();
+  if (::renameat(dir_, temporary_.c_str(), dir_, leaf_.c_str()) != 0) {
+    const int err = errno;
+    throw Error("cannot write '" + display_ + "': " +
+                (err == EISDIR || err == ENOTEMPTY || err == EEXIST ? std::string("a folder of that name is in the way") : std::strerror(err)));
+  }
+  untrack(dir_, temporary_);
+  committed_ = true;
+}
+
+void remove_temporaries() noexcept {
+  std::lock_guard lock(temporaries_mutex);
+  for (const auto& [dir, name] : temporaries) ::unlinkat(dir, name.c_str(), 0);
+  temporaries.clear();
+}
+
+}  // namespace selfsim::io

@@ -1,0 +1,51 @@
+// A file being written inside an output folder, visible under its name only once complete.
+//
+// Confinement: the folders on the way are created and opened one by one relative to the output folder,
+// never following a symbolic link (O_NOFOLLOW), so a link planted inside the folder cannot lead a write
+// outside it. The output folder itself is the user's choice and may be a link.
+// Atomicity: the data goes to an anonymous file (O_TMPFILE), which a crash, a SIGKILL or the watchdog
+// leaves no trace of; commit() links it under a fresh name and renames that over the target in one step.
+// Where the filesystem has no O_TMPFILE, the temporary is a named file created exclusively (O_EXCL, never
+// through a link) and removed on failure and by remove_temporaries().
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace selfsim::io {
+
+class OutputFile {
+ public:
+  // Opens a temporary for `name` (relative, inside `root`); creates `root` and the folders of `name`.
+  // Throws Error for a name that leaves the folder, a link or non-folder on the way, or a failed open.
+  OutputFile(const std::filesystem::path& root, const std::string& name);
+  ~OutputFile();  // removes the temporary unless committed
+  OutputFile(const OutputFile&) = delete;
+  OutputFile& operator=(const OutputFile&) = delete;
+
+  // Buffered writes; throw Error when the disk refuses them.
+  void write(std::string_view bytes);
+  void write(const void* data, std::size_t size) { write(std::string_view(static_cast<const char*>(data), size)); }
+  // Flushes and puts the file in place under its name, replacing an older file (or link) of that name.
+  void commit();
+  // root/name, for messages and the run's summary.
+  const std::string& path() const { return display_; }
+  // The final component of the name ("dragon.svg").
+  const std::string& leaf() const { return leaf_; }
+
+ private:
+  void flush();
+  void name_temporary();
+
+  int dir_ = -1, fd_ = -1;
+  std::string leaf_, display_, temporary_;  // temporary_: the named temporary, if there is one
+  std::string buffer_;
+  bool committed_ = false;
+};
+
+// Removes the named temporaries of every OutputFile still open: for a process ending without unwinding
+// (the watchdog). Anonymous temporaries need nothing.
+void remove_temporaries() noexcept;
+
+}  // namespace selfsim::io
