@@ -119,7 +119,7 @@ int grammar_string(lua_State* L) {
 int grammar_count(lua_State* L) {
   Grammar& g = self(L, "count");
   return call_kernel(L, "count", [&] {
-    const double n = lsystem::predict_counts(g, level_argument(L, 2)).segments;
+    const double n = lsystem::predict_counts(g, level_argument(L, 2), RunContext::of(L)).segments;
     if (n < 9e15) lua_pushinteger(L, static_cast<lua_Integer>(n));
     else lua_pushnumber(L, n);
     return 1;

@@ -1,6 +1,8 @@
 // `selfsim diff A B [--tol T]` and `selfsim info FILE`: reading geometry files back, the way the golden
 // tests compare outputs and a user checks what a run wrote.
 #include <cstdio>
+#include <exception>
+#include <new>
 
 #include "interpreter/commands.h"
 #include "kernels/analysis/dataset_diff.h"
@@ -9,6 +11,30 @@
 
 namespace selfsim::interp {
 
+namespace {
+
+// Called inside a catch: prints the one-line error ("selfsim info: cannot read 'x.vtp': ...") whatever was
+// thrown (the readers throw Error; std::bad_alloc or a std::filesystem error would abort otherwise) and
+// returns exit status 2.
+int report(const char* command) {
+  std::string message;
+  try {
+    throw;
+  } catch (const std::bad_alloc&) {
+    message = "out of memory";
+  } catch (const std::exception& e) {
+    message = e.what();
+  } catch (...) {
+    message = "unknown error";
+  }
+  for (char& c : message)
+    if (c == '\n' || c == '\r') c = ' ';
+  std::fprintf(stderr, "selfsim %s: %s\n", command, message.c_str());
+  return 2;
+}
+
+}  // namespace
+
 int diff_command(const std::string& a, const std::string& b, double tol) {
   try {
     const io::Dataset da = io::read_dataset(a), db = io::read_dataset(b);
@@ -16,9 +42,8 @@ int diff_command(const std::string& a, const std::string& b, double tol) {
     for (const auto& d : differences) std::printf("%s\n", d.c_str());
     if (differences.empty()) std::printf("same: %zu points, %zu cells\n", da.points.size(), da.cell_ends.size());
     return differences.empty() ? 0 : 1;
-  } catch (const Error& e) {
-    std::fprintf(stderr, "selfsim diff: %s\n", e.what());
-    return 2;
+  } catch (...) {
+    return report("diff");
   }
 }
 
@@ -36,9 +61,8 @@ int info_command(const std::string& file) {
     for (const auto& [name, f] : d.point_fields) std::printf("point field: %s (%d component%s)\n", name.c_str(), f.components, f.components == 1 ? "" : "s");
     for (const auto& [name, f] : d.cell_fields) std::printf("cell field: %s (%d component%s)\n", name.c_str(), f.components, f.components == 1 ? "" : "s");
     return 0;
-  } catch (const Error& e) {
-    std::fprintf(stderr, "selfsim info: %s\n", e.what());
-    return 2;
+  } catch (...) {
+    return report("info");
   }
 }
 

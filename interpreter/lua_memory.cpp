@@ -19,7 +19,7 @@ void note_refusal(LuaMemory& m, std::size_t bytes, bool over_limit) {
   m.refused = bytes;
   m.over_limit = over_limit;
   try {
-    m.where = m.L ? stack_where(m.L, m.library) : std::string();
+    m.where = m.L ? stack_where(m.L, m.library, 0) : std::string();
   } catch (...) {
     m.where.clear();
   }

@@ -9,12 +9,12 @@
 
 namespace selfsim::interp {
 
-std::string recipe_where(lua_State* L) { return stack_where(L, "@" + RunContext::of(L).scripts_dir.string()); }
+std::string recipe_where(lua_State* L) { return stack_where(L, "@" + RunContext::of(L).scripts_dir.string(), 1); }
 
-std::string stack_where(lua_State* L, const std::string& library) {
+std::string stack_where(lua_State* L, const std::string& library, int first_level) {
   std::string first;
   lua_Debug ar;
-  for (int level = 1; lua_getstack(L, level, &ar); ++level) {
+  for (int level = first_level; lua_getstack(L, level, &ar); ++level) {
     lua_getinfo(L, "Sl", &ar);
     if (ar.currentline <= 0) continue;
     const std::string where = std::string(ar.short_src) + ":" + std::to_string(ar.currentline) + ": ";

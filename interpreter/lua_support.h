@@ -17,9 +17,10 @@ namespace selfsim::interp {
 
 // "recipe.lua:12: " for the innermost frame that is not one of the DSL's own scripts/ files.
 std::string recipe_where(lua_State* L);
-// The same for chunks whose source starts with `library` ("@/path/scripts"); only reads the stack, so it is
-// safe where nothing may be pushed (inside the allocator).
-std::string stack_where(lua_State* L, const std::string& library);
+// The same for chunks whose source starts with `library` ("@/path/scripts"), from stack level first_level
+// (1 skips the running C function; 0 from inside the allocator, where a Lua function may be running). Only
+// reads the stack, so it is safe where nothing may be pushed.
+std::string stack_where(lua_State* L, const std::string& library, int first_level);
 
 // Text from a recipe made fit for a one-line message: control characters escaped (a newline as \n) and
 // anything past max_bytes cut, with the full size said.

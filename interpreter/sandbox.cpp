@@ -25,6 +25,8 @@ bool valid_module_name(const std::string& name) {
 // Loads module `name` (scripts/ first, then the recipe's folder; text chunks only) and leaves its value on
 // the stack, or leaves an error message and returns false. Runs the module with lua_pcall so that its
 // errors never longjmp past this function's C++ objects.
+int loading_marker;  // its address marks a module being loaded, in the cache of loaded modules
+
 bool load_module(lua_State* L, const std::string& name) {
   const char* module = name.c_str();
   if (!valid_module_name(name)) {
@@ -33,7 +35,12 @@ bool load_module(lua_State* L, const std::string& name) {
     return false;
   }
   lua_getfield(L, LUA_REGISTRYINDEX, loaded_key);
-  if (lua_getfield(L, -1, module) != LUA_TNIL) return true;
+  const int cached = lua_getfield(L, -1, module);
+  if (cached == LUA_TLIGHTUSERDATA) {  // the marker set below: the module is still loading
+    lua_pushfstring(L, "%srequire: module '%s' requires itself while loading (a require cycle)", recipe_where(L).c_str(), module);
+    return false;
+  }
+  if (cached != LUA_TNIL) return true;
   lua_pop(L, 1);
   RunContext& run = RunContext::of(L);
   std::string rel = name;
@@ -51,8 +58,13 @@ bool load_module(lua_State* L, const std::string& name) {
                         message ? message : "not text");
       return false;
     }
+    lua_pushlightuserdata(L, &loading_marker);
+    lua_setfield(L, -3, module);
     lua_pushstring(L, module);
-    if (lua_pcall(L, 1, 1, 0) != LUA_OK) return false;
+    const int status = lua_pcall(L, 1, 1, 0);
+    lua_pushnil(L);
+    lua_setfield(L, -3, module);  // no longer loading
+    if (status != LUA_OK) return false;
     if (lua_isnil(L, -1)) {
       lua_pop(L, 1);
       lua_pushboolean(L, 1);

@@ -1,6 +1,7 @@
 #include "kernels/io/output_file.h"
 
 #include <fcntl.h>
+#include <climits>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -48,6 +49,9 @@ OutputFile::OutputFile(const std::filesystem::path& root, const std::string& nam
   if (name.empty() || name.find('\0') != std::string::npos || rel.is_absolute() || rel.empty() || *rel.begin() == ".." ||
       !rel.has_filename() || rel.filename() == "." || rel.filename() == "..")
     throw Error("path '" + name + "' is outside the output folder (give a relative file name such as 'curve.vtp')");
+  for (const auto& part : rel)
+    if (part.string().size() > NAME_MAX)
+      throw Error("name '" + part.string().substr(0, 40) + "...' is longer than " + std::to_string(NAME_MAX) + " bytes");
   leaf_ = rel.filename().string();
   display_ = (root / rel).string();
 

@@ -52,13 +52,14 @@ SymbolWeights per_symbol_counts(const Grammar& g, int depth, Weight weight) {
   return w;
 }
 
-LevelCounts predict_counts(const Grammar& g, int level) {
+LevelCounts predict_counts(const Grammar& g, int level, Progress& progress) {
   SymbolWeights symbols = symbol_weights(g, Weight::Symbols), segments = symbol_weights(g, Weight::Segments);
   SymbolWeights breaks = weights_of([&](char s) { return s == ']' || g.moves(s) ? 1.0 : 0.0; });
   // Branch nesting: '[' opens one (and reaches depth 1 inside itself), ']' closes one.
   SymbolWeights net = weights_of([](char s) { return s == '[' ? 1.0 : s == ']' ? -1.0 : 0.0; });
   SymbolWeights inner = weights_of([](char s) { return s == '[' ? 1.0 : 0.0; });
   for (int d = 1; d <= level; ++d) {
+    if (progress.cancelled()) throw Cancelled();
     rewrite_weights(g, symbols);
     rewrite_weights(g, segments);
     rewrite_weights(g, breaks);

@@ -5,6 +5,7 @@
 
 #include <array>
 
+#include "kernels/geom/progress.h"
 #include "kernels/lsystem/grammar.h"
 
 namespace selfsim::lsystem {
@@ -19,8 +20,8 @@ struct LevelCounts {
   double max_points() const { return segments + breaks + 1; }
 };
 
-// Counts for grammar g at `level` (>= 0).
-LevelCounts predict_counts(const Grammar& g, int level);
+// Counts for grammar g at `level` (>= 0). Costs level x grammar size; checks cancellation once per level.
+LevelCounts predict_counts(const Grammar& g, int level, Progress& progress = no_progress());
 
 // Per-symbol weights indexed by symbol byte, and one rewriting step of them: after it, w[s] is the sum of
 // the old weights over s's replacement (symbols without a rule keep theirs).

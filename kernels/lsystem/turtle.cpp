@@ -143,7 +143,7 @@ Polyline curve(const Grammar& g, const CurveOptions& opt, Progress& progress) {
 void curve_into(const Grammar& g, const CurveOptions& opt, Progress& progress, Polyline& out) {
   g.validate();
   opt.validate();
-  const LevelCounts counts = predict_counts(g, opt.level);
+  const LevelCounts counts = predict_counts(g, opt.level, progress);
   const std::string what = "level " + std::to_string(opt.level);
   check_budget(counts.segments + 1, opt.budget, what);
   // Each branch left open keeps a saved turtle state (32 bytes, two points' worth) until it closes.

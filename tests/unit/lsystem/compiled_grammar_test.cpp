@@ -80,3 +80,20 @@ TEST(Turtle, StreamedBlocksMatchTheStringTurtle) {
         ASSERT_NEAR(norm(c.points[i] - want[i]), 0, tol) << g.axiom << " level " << level << " point " << i;
     }
 }
+
+TEST(Compiled, TurnsAreReducedExactly) {
+  // 1e20 is an exact double; 1e20 mod 360 = 280 (0 mod 8 and 10 mod 45).
+  const Compiled c(Grammar{.axiom = "F", .angle = 1e20});
+  EXPECT_EQ(c.turn['+'], 280);
+  EXPECT_EQ(c.turn['-'], -280);
+  EXPECT_EQ(c.lattice(), 18);  // 280 = 7 steps of 40 degrees, and | (180) needs an even count
+}
+
+TEST(LatticeBlocks, BuildingWorkIsBounded) {
+  // 7200 headings times rules of 16000 turns: blocks would cost 10^8 steps to build, so none are made.
+  const Grammar g{.axiom = "X", .rules = {{'X', "F" + std::string(16000, '+') + "X"}}, .angle = 0.05};
+  const Compiled c(g);
+  ASSERT_EQ(c.lattice(), 7200);
+  const LatticeTable t(c, c.lattice(), 0);
+  EXPECT_EQ(LatticeBlocks(g, c, t, 3, no_progress()).depth, 0);
+}

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <vector>
+
 #include <cmath>
 
 #include "kernels/lsystem/turtle.h"
@@ -47,4 +50,27 @@ TEST(ProductionCount, BranchesCountAsPathBreaks) {
 TEST(ProductionCount, HugeLevelsStayOrdered) {
   // 2^200 is far past exact integers but must still compare as enormous, not wrap around.
   EXPECT_GT(predict_counts(table1::dragon(), 200).segments, 1e59);
+}
+
+// The deepest '[' nesting of a string, by reading it.
+double nesting(const std::string& s) {
+  double depth = 0, deepest = 0;
+  for (char c : s) {
+    depth += c == '[' ? 1 : c == ']' ? -1 : 0;
+    deepest = std::max(deepest, depth);
+  }
+  return deepest;
+}
+
+TEST(ProductionCount, BranchDepthEqualsExpansion) {
+  const std::vector<Grammar> grammars{
+      {.axiom = "X", .rules = {{'X', "F+[[X]-X]-F[-FX]+X"}, {'F', "FF"}}},
+      {.axiom = "X", .rules = {{'X', "[X[X"}}},
+      {.axiom = "[F]X[", .rules = {{'X', "F[X]X[[F"}, {'F', "F[F]"}}},
+      table1::dragon()};
+  for (const Grammar& g : grammars)
+    for (int level = 0; level <= 6; ++level)
+      EXPECT_EQ(predict_counts(g, level).max_depth, nesting(expand_string(g, level, 1e7))) << g.axiom << " level " << level;
+  // X -> [X[X: 2^(level+1) - 2 open at once.
+  EXPECT_EQ(predict_counts(grammars[1], 24).max_depth, 33554430);
 }

@@ -1,4 +1,5 @@
 #include "kernels/lsystem/turtle.h"
+#include "kernels/lsystem/production_count.h"
 
 #include <gtest/gtest.h>
 
@@ -121,7 +122,7 @@ TEST(Turtle, RefusesLevelsOverTheLimitBeforeWork) {
   try {
     curve(table1::dragon(), {.level = 40, .budget = {1e6}}, no_progress());
     FAIL() << "expected an error";
-  } catch (const Error& e) {
+  } catch (const BudgetError& e) {
     EXPECT_NE(std::string(e.what()).find("1099511627777 points"), std::string::npos) << e.what();
   }
 }
@@ -145,6 +146,51 @@ TEST(Turtle, RewritingWithoutDrawingIsStillCancellable) {
   // brackets keep X out of the precomputed blocks, which would otherwise make this instant).
   EXPECT_THROW(curve(Grammar{.axiom = "X", .rules = {{'X', "X[]X"}}}, {.level = 25}, stop), Cancelled);
   EXPECT_THROW(curve(Grammar{.axiom = "X", .rules = {{'X', "XX"}}}, {.level = 60}, no_progress()), Error);
+}
+
+// Cancels only once the turtle has started walking, after the prediction: what the walk itself checks.
+struct StopOnceWalking : Progress {
+  bool walking = false;
+  void start(const char*) override { walking = true; }
+  bool cancelled() override { return walking; }
+};
+
+TEST(Turtle, TurnsThatDrawNothingAreCheckedPerSymbol) {
+  // 4 million turns, one rule frame per level and no point: only a per-symbol check can notice the stop.
+  StopOnceWalking stop;
+  const Grammar turns{.axiom = "X", .rules = {{'X', "X" + std::string(65536, '+')}}};
+  EXPECT_THROW(curve(turns, {.level = 64}, stop), Cancelled);
+  EXPECT_EQ(curve(turns, {.level = 64}, no_progress()).points.size(), 0u);
+}
+
+TEST(Turtle, PredictionIsCancellable) {
+  struct StopAtOnce : Progress {
+    bool cancelled() override { return true; }
+  } stop;
+  EXPECT_THROW(predict_counts(table1::dragon(), 200, stop), Cancelled);
+}
+
+TEST(Turtle, HugeAnglesAreReducedExactly) {
+  // 360 * 2^40 + 90 degrees is a quarter turn: exactly representable, so the curve must equal angle 90's.
+  const double turns = 360.0 * std::ldexp(1.0, 40) + 90;
+  Grammar big = table1::dragon(), plain = table1::dragon();
+  big.angle = turns;
+  const Polyline a = curve(big, {.level = 10}, no_progress()), b = curve(plain, {.level = 10}, no_progress());
+  ASSERT_EQ(a.points.size(), b.points.size());
+  for (std::size_t i = 0; i < a.points.size(); ++i) EXPECT_EQ(a.points[i], b.points[i]) << i;
+}
+
+TEST(Turtle, OpenBranchesAreBudgeted) {
+  // X -> [X[X keeps 2^(level+1) - 2 branches open; each saved state costs two points of the budget.
+  const Grammar open{.axiom = "X", .rules = {{'X', "[X[X"}}};
+  EXPECT_THROW(curve(open, {.level = 20, .budget = {1e6}}, no_progress()), BudgetError);
+  EXPECT_NO_THROW(curve(open, {.level = 12, .budget = {1e6}}, no_progress()));
+}
+
+TEST(Turtle, BudgetCountsHeldPoints) {
+  // 1025 points fit a limit of 2000, but not beside 1000 points already held.
+  EXPECT_NO_THROW(curve(table1::dragon(), {.level = 10, .budget = {2000, 0}}, no_progress()));
+  EXPECT_THROW(curve(table1::dragon(), {.level = 10, .budget = {2000, 1000}}, no_progress()), BudgetError);
 }
 
 TEST(Turtle, ExpandStringOfTheDragon) {

@@ -1,0 +1,2 @@
+local function f() return tostring(setmetatable({}, { __tostring = f })) end
+f()

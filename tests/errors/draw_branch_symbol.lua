@@ -1,0 +1,1 @@
+lsystem { axiom = "F", draw = "F[" }

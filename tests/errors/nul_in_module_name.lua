@@ -1,0 +1,1 @@
+require "selfsim\0.curves"

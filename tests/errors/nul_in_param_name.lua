@@ -1,0 +1,1 @@
+param("level\0x", 3)

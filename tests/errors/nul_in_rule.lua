@@ -1,0 +1,1 @@
+lsystem { axiom = "F", rules = { F = "F\0+F" } }

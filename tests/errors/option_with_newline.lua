@@ -1,0 +1,1 @@
+lsystem { axiom = "F", ["angle\nx"] = 1 }

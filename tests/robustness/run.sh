@@ -1,0 +1,97 @@
+#!/usr/bin/env bash
+# `selfsim run` under a hostile user: signals at any moment, links planted in the output folder, SIGKILL
+# mid-write, finalizers that write after the end, runs that must give the same bytes every time.
+# usage: run.sh SELFSIM SOURCE_DIR
+selfsim=$1 src=$2
+source "$(dirname "$0")/lib.sh"
+cd "$tmp" || exit 1
+
+recipe() { printf '%s\n' "$2" >"$1.lua"; }
+empty_dir() { [ ! -e "$1" ] || [ -z "$(ls -A "$1")" ]; }
+
+# --- Signals: SIGTERM and SIGINT stop a kernel, a writer, a finalizer and the closing state ---------------
+recipe big 'local c = require("selfsim.curves").dragon():curve(24); save(c, "big.vtp"); save(c, "big.svg")'
+recipe gc_loop 'setmetatable({}, { __gc = function() while true do end end }); collectgarbage()'
+recipe close_loop 'setmetatable({}, { __gc = function() while true do end end })'
+recipe c_call 'print(("a"):rep(3e5):find(".-b"))'
+for sig in TERM INT HUP; do
+  for r in big gc_loop close_loop c_call; do
+    "$selfsim" run $r.lua -o "out_$r$sig" -q 2>"err_$r$sig" &
+    pid=$!
+    sleep 0.4
+    started=$(date +%s%N)
+    kill -$sig $pid
+    wait $pid
+    code=$?
+    ms=$(( ($(date +%s%N) - started) / 1000000 ))
+    check "$r: SIG$sig exits 130 (got $code)" [ "$code" = 130 ]
+    check "$r: SIG$sig ends within 2 s (took $ms ms)" [ "$ms" -lt 2000 ]
+    check "$r: SIG$sig leaves no file ($(ls -A "out_$r$sig" 2>/dev/null | tr '\n' ' '))" empty_dir "out_$r$sig"
+    check "$r: SIG$sig prints one line ($(head -c 200 "err_$r$sig"))" [ "$(wc -l <"err_$r$sig")" = 1 ]
+    check "$r: SIG$sig says interrupted" grep -q "interrupted" "err_$r$sig"
+  done
+done
+
+# --- --timeout wins whatever the recipe does, also when pcall catches it -------------------------------
+recipe pcall_loop 'while true do pcall(function() while true do end end) end'
+recipe xpcall_loop 'while true do xpcall(function() while true do end end, function(e) return e end) end'
+recipe wrap_loop 'while true do pcall(coroutine.wrap(function() while true do end end)) end'
+for r in pcall_loop xpcall_loop wrap_loop gc_loop close_loop c_call big; do
+  started=$(date +%s%N)
+  run_selfsim run $r.lua -o "out_t$r" -q --timeout 0.5
+  ms=$(( ($(date +%s%N) - started) / 1000000 ))
+  check "$r: --timeout exits 1 (got $code)" [ "$code" = 1 ]
+  check "$r: --timeout 0.5 ends within 2 s (took $ms ms)" [ "$ms" -lt 2000 ]
+  check "$r: --timeout message ($(first_err))" grep -q "stopped: --timeout of 0.5 s reached" "$tmp/err"
+  check "$r: --timeout leaves no file" empty_dir "out_t$r"
+done
+
+# --- SIGKILL mid-write leaves no partial file, and no temporary ------------------------------------------
+recipe write_big 'local c = require("selfsim.curves").dragon():curve(20); for i = 1, 40 do save(c, "big" .. i .. ".vtp") end'
+"$selfsim" run write_big.lua -o out_kill -q 2>/dev/null &
+pid=$!
+sleep 1.5
+kill -KILL $pid
+wait $pid 2>/dev/null
+check "SIGKILL leaves no temporary ($(ls -A out_kill | grep -v '^big[0-9]*\.vtp$' | tr '\n' ' '))" \
+  bash -c '[ -z "$(ls -A out_kill | grep -v "^big[0-9]*\.vtp$")" ]'
+for f in out_kill/big*.vtp; do
+  [ -e "$f" ] || continue
+  check "SIGKILL: $f is whole" "$selfsim" info "$f"
+done
+
+# --- Links planted inside the output folder never lead a write outside ------------------------------------
+mkdir -p out_links elsewhere
+ln -s "$tmp/elsewhere" out_links/dir_link
+ln -s "$tmp/elsewhere/target.svg" out_links/planted.svg
+for name in dir_link/x.svg dir_link/sub/x.svg; do
+  recipe link "save(polyline { { 0, 0 }, { 1, 0 } }, \"$name\")"
+  run_selfsim run link.lua -o out_links -q
+  check "save to $name is refused (exit $code)" [ "$code" = 1 ]
+  check "save to $name names the link ($(first_err))" grep -q "symbolic link" "$tmp/err"
+done
+recipe planted 'save(polyline { { 0, 0 }, { 1, 0 } }, "planted.svg")'
+run_selfsim run planted.lua -o out_links -q
+check "saving over a planted file link works (exit $code)" [ "$code" = 0 ]
+check "the planted link is replaced, not written through" [ ! -L out_links/planted.svg ]
+check "nothing was written outside ($(ls -A elsewhere | tr '\n' ' '))" empty_dir elsewhere
+
+# --- Nothing is written after the recipe ends -------------------------------------------------------------
+recipe late_ok 'setmetatable({}, { __gc = function() save(polyline { { 0, 0 }, { 1, 0 } }, "late.svg") end })'
+run_selfsim run late_ok.lua -o out_late -q
+check "a finalizer at exit cannot save (exit $code)" empty_dir out_late
+check "the refused late save is a one-line warning" grep -q "the recipe has ended" "$tmp/err"
+
+# --- Same recipe and seed, same bytes: pairs() order is fixed -------------------------------------------
+recipe order 'local pts, names = {}, { pear = 1, apple = 2, fig = 3, kiwi = 4, lime = 5, plum = 6, date = 7, yuzu = 8, sloe = 9 }
+for name, i in pairs(names) do pts[#pts + 1] = { #pts + 1, i + math.random() } end
+save(polyline(pts), "order.svg")
+lsystem { axiom = "F", zulu = 1, alpha = 2, mike = 3, kilo = 4 }'
+for i in 1 2 3 4 5 6; do
+  "$selfsim" run order.lua -o "out_order$i" -q --seed 7 2>"err_order$i"
+  cmp -s out_order1/order.svg "out_order$i/order.svg" || echo "differs $i" >>order_diffs
+  cmp -s err_order1 "err_order$i" || echo "message differs $i" >>order_diffs
+done
+check "six runs give byte-identical files and messages ($(cat order_diffs 2>/dev/null | tr '\n' ' '))" [ ! -e order_diffs ]
+
+finish

@@ -1,0 +1,109 @@
+#include "kernels/io/output_file.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "kernels/geom/error.h"
+
+using namespace selfsim;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct TempDir {
+  fs::path path = fs::temp_directory_path() / ("selfsim_out_" + std::to_string(::getpid()) + "_" +
+                                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  TempDir() { fs::create_directories(path); }
+  ~TempDir() { fs::remove_all(path); }
+};
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p);
+  return std::string((std::istreambuf_iterator<char>(in)), {});
+}
+
+std::vector<std::string> names_in(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+}  // namespace
+
+TEST(OutputFile, AppearsOnlyWhenCommitted) {
+  TempDir d;
+  {
+    io::OutputFile f(d.path / "out", "sub/a.txt");
+    f.write(std::string_view("hello"));
+    EXPECT_FALSE(fs::exists(d.path / "out/sub/a.txt"));
+    EXPECT_TRUE(names_in(d.path / "out/sub").empty());  // anonymous while being written
+    f.commit();
+    EXPECT_EQ(f.path(), (d.path / "out/sub/a.txt").string());
+  }
+  EXPECT_EQ(read(d.path / "out/sub/a.txt"), "hello");
+  EXPECT_EQ(names_in(d.path / "out/sub"), std::vector<std::string>{"a.txt"});
+}
+
+TEST(OutputFile, UncommittedLeavesNothingAndKeepsTheOldFile) {
+  TempDir d;
+  std::ofstream(d.path / "a.txt") << "old";
+  {
+    io::OutputFile f(d.path, "a.txt");
+    f.write(std::string(3 << 20, 'x'));  // past the buffer: bytes reached the temporary
+  }
+  EXPECT_EQ(read(d.path / "a.txt"), "old");
+  EXPECT_EQ(names_in(d.path), std::vector<std::string>{"a.txt"});
+}
+
+TEST(OutputFile, ReplacesAnOlderFile) {
+  TempDir d;
+  std::ofstream(d.path / "a.txt") << "old";
+  io::OutputFile f(d.path, "a.txt");
+  f.write(std::string_view("new"));
+  f.commit();
+  EXPECT_EQ(read(d.path / "a.txt"), "new");
+}
+
+TEST(OutputFile, NeverFollowsALinkOutOfTheFolder) {
+  TempDir d;
+  fs::create_directories(d.path / "out");
+  fs::create_directories(d.path / "elsewhere");
+  fs::create_directory_symlink(d.path / "elsewhere", d.path / "out/link");
+  EXPECT_THROW(io::OutputFile(d.path / "out", "link/x.svg"), Error);
+  EXPECT_THROW(io::OutputFile(d.path / "out", "link/deeper/x.svg"), Error);
+  EXPECT_TRUE(names_in(d.path / "elsewhere").empty());
+}
+
+TEST(OutputFile, ReplacesAPlantedLinkInsteadOfWritingThroughIt) {
+  TempDir d;
+  fs::create_directories(d.path / "out");
+  fs::create_symlink(d.path / "target.svg", d.path / "out/x.svg");
+  io::OutputFile f(d.path / "out", "x.svg");
+  f.write(std::string_view("data"));
+  f.commit();
+  EXPECT_FALSE(fs::exists(d.path / "target.svg"));
+  EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(d.path / "out/x.svg")));
+  EXPECT_EQ(read(d.path / "out/x.svg"), "data");
+}
+
+TEST(OutputFile, RefusesNamesThatLeaveTheFolder) {
+  TempDir d;
+  for (const char* name : {"../x.svg", "/tmp/x.svg", "a/../../x.svg", "", ".", "a/.."})
+    EXPECT_THROW(io::OutputFile(d.path, name), Error) << name;
+  EXPECT_TRUE(names_in(d.path).empty());
+}
+
+TEST(OutputFile, AFolderInTheWayIsAnError) {
+  TempDir d;
+  fs::create_directories(d.path / "x.svg/inside");
+  io::OutputFile f(d.path, "x.svg");
+  f.write(std::string_view("data"));
+  EXPECT_THROW(f.commit(), Error);
+}
+
+TEST(OutputFile, OverlongNamesAreErrors) {
+  TempDir d;
+  EXPECT_THROW(io::OutputFile(d.path, std::string(300, 'a') + ".svg"), Error);
+}
