@@ -48,7 +48,8 @@ bool load_module(lua_State* L, const std::string& name) {
   rel += ".lua";
   for (const auto& dir : {run.scripts_dir, run.config.recipe.parent_path()}) {
     const std::filesystem::path file = dir / rel;
-    if (!std::filesystem::is_regular_file(file)) continue;
+    std::error_code ec;  // never throw through Lua: a name too long is just "not found"
+    if (!std::filesystem::is_regular_file(file, ec)) continue;
     if (luaL_loadfilex(L, file.c_str(), "t") != LUA_OK) {
       // Syntax errors name the module's file and line already; others (a binary chunk) name nothing.
       const std::string chunk = file.string() + ":";
@@ -73,7 +74,8 @@ bool load_module(lua_State* L, const std::string& name) {
     lua_setfield(L, -3, module);  // cache it
     return true;
   }
-  lua_pushfstring(L, "%srequire: module '%s' not found in scripts/ or the recipe's folder", recipe_where(L).c_str(), module);
+  lua_pushfstring(L, "%srequire: module '%s' not found in scripts/ or the recipe's folder", recipe_where(L).c_str(),
+                  shown_text(name).c_str());
   return false;
 }
 
