@@ -36,6 +36,8 @@ std::vector<Vec2> read_points(lua_State* L, int index, const std::string& what) 
     throw Error((what.empty() ? "argument" : what) + " must be a curve or a table of {x, y} points, got " + describe(L, index));
   std::vector<Vec2> pts;
   const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, index));
+  check_budget(static_cast<double>(n), run_budget(L), "a table of points");  // before copying it
+  pts.reserve(static_cast<std::size_t>(n));
   for (lua_Integer i = 1; i <= n; ++i) {
     lua_rawgeti(L, index, i);
     pts.push_back(read_point(L, -1, (what.empty() ? "" : what + " ") + "point " + std::to_string(i)));
