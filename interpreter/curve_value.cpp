@@ -107,7 +107,9 @@ int curve_transform(lua_State* L) {
     if (!(scale != 0)) throw Error("option 'scale' must be non-zero");
     const Similarity2 t{scale * polar(std::fmod(degrees, 360.0) * std::numbers::pi / 180), shift, mirror};
     check_budget(static_cast<double>(c.points.size()), run_budget(L), "transform");
-    push_curve(L, transformed(c, t));
+    Polyline result = transformed(c, t);
+    if (!result.finite()) throw Error("the result has non-finite coordinates (an overflow: scale the input down)");
+    push_curve(L, std::move(result));
     return 1;
   });
 }
@@ -134,8 +136,6 @@ int make_polyline(lua_State* L, const char* fn, bool closed) {
 }  // namespace
 
 void push_curve(lua_State* L, Polyline&& c) {
-  // Every curve a recipe gets is finite: a NaN never reaches a file or a later kernel.
-  if (!c.finite()) throw Error("the result has non-finite coordinates (an overflow: scale the input down)");
   const std::size_t bytes = c.points.capacity() * sizeof(Vec2) + c.path_ends.capacity() * sizeof(std::size_t);
   const double points = static_cast<double>(c.points.size());
   push_value(L, curve_type, std::move(c), points);

@@ -11,6 +11,8 @@ namespace selfsim::interp {
 
 inline constexpr const char* curve_type = "selfsim.Curve";
 
+// Pushes a new Curve; kernels guarantee it is finite (they check their results), and its points count
+// against the run's budget while it lives.
 void push_curve(lua_State* L, Polyline&& c);
 // The curve at index, or nullptr if the value is not a curve.
 Polyline* test_curve(lua_State* L, int index);

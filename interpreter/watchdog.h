@@ -23,7 +23,7 @@ class Watchdog {
   Watchdog& operator=(const Watchdog&) = delete;
 
   // How long a cooperative stop may take before the watchdog ends the process.
-  static constexpr std::chrono::milliseconds grace{500};
+  static constexpr std::chrono::milliseconds grace{1000};
 
  private:
   void watch();

@@ -184,7 +184,7 @@ void curve_into(const Grammar& g, const CurveOptions& opt, Progress& progress, P
   bool finite = true;
   for (Vec2& p : out.points) {
     p = place(p);
-    finite = finite && is_finite(p);
+    finite &= is_finite(p);
   }
   if (!finite) throw Error("level " + std::to_string(opt.level) + " has non-finite coordinates (shrink^level overflows)");
 }

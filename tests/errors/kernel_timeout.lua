@@ -1,3 +1,5 @@
 -- args: --timeout 0.1
-local curves = require "selfsim.curves"
-local c = curves.dragon():curve { level = 27 }
+-- about a billion symbols to walk for a million points ('[]' keeps the precomputed blocks out): the stop
+-- comes from inside the kernel, whatever the machine's speed
+local g = lsystem { axiom = "X", rules = { X = "X[]" .. string.rep("+-", 500) .. "FX" } }
+local c = g:curve { level = 20 }
