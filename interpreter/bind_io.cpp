@@ -27,7 +27,7 @@ int save(lua_State* L) {
     RunContext& run = RunContext::of(L);
     // Finalizers may run after the recipe has returned or failed; nothing is written then.
     if (run.ended) throw Error("the recipe has ended: nothing more is written (save from a finalizer?)");
-    const Polyline* c = test_curve(L, 1);
+    const Held<Polyline> c = test_curve(L, 1);
     if (c == nullptr) throw Error("argument 1 must be a curve, got " + describe(L, 1));
     if (lua_type(L, 2) != LUA_TSTRING) throw Error("argument 2 must be a file name, got " + describe(L, 2));
     const std::string name = text_value(L, 2, "argument 2 (the file name)");

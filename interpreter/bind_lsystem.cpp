@@ -73,7 +73,7 @@ Grammar read_grammar(lua_State* L, int index) {
   return g;
 }
 
-Grammar& self(lua_State* L, const char* method) { return check_self<Grammar>(L, grammar_type, method); }
+Held<Grammar> self(lua_State* L, const char* method) { return check_self<Grammar>(L, grammar_type, method); }
 
 // The level argument of g:string(n) / g:count(n).
 int level_argument(lua_State* L, int index) {
@@ -85,7 +85,8 @@ int level_argument(lua_State* L, int index) {
 }
 
 int grammar_curve(lua_State* L) {
-  Grammar& g = self(L, "curve");
+  const Held<Grammar> held = self(L, "curve");
+  const Grammar& g = *held;
   return call_kernel(L, "curve", [&] {
     RunContext& run = RunContext::of(L);
     lsystem::CurveOptions opt;
@@ -108,7 +109,8 @@ int grammar_curve(lua_State* L) {
 }
 
 int grammar_string(lua_State* L) {
-  Grammar& g = self(L, "string");
+  const Held<Grammar> held = self(L, "string");
+  const Grammar& g = *held;
   return call_kernel(L, "string", [&] {
     const std::string s = lsystem::expand_string(g, level_argument(L, 2), 1e7);
     lua_pushlstring(L, s.data(), s.size());
@@ -117,7 +119,8 @@ int grammar_string(lua_State* L) {
 }
 
 int grammar_count(lua_State* L) {
-  Grammar& g = self(L, "count");
+  const Held<Grammar> held = self(L, "count");
+  const Grammar& g = *held;
   return call_kernel(L, "count", [&] {
     const double n = lsystem::predict_counts(g, level_argument(L, 2), RunContext::of(L)).segments;
     if (n < 9e15) lua_pushinteger(L, static_cast<lua_Integer>(n));
@@ -127,7 +130,8 @@ int grammar_count(lua_State* L) {
 }
 
 int grammar_tostring(lua_State* L) {
-  const Grammar& g = self(L, "tostring");
+  const Held<Grammar> held = self(L, "tostring");
+  const Grammar& g = *held;
   lua_pushfstring(L, "Grammar(axiom '%s', %d rules)", g.axiom.c_str(), static_cast<int>(g.rules.size()));
   return 1;
 }

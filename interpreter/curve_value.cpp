@@ -47,33 +47,39 @@ std::vector<Vec2> read_points(lua_State* L, int index, const std::string& what) 
 }
 
 int curve_points(lua_State* L) {
-  const Polyline& c = check_self<Polyline>(L, curve_type, "points");
+  const Held<Polyline> held = check_self<Polyline>(L, curve_type, "points");
+  const Polyline& c = *held;
   lua_pushinteger(L, static_cast<lua_Integer>(c.points.size()));
   return 1;
 }
 int curve_segments(lua_State* L) {
-  const Polyline& c = check_self<Polyline>(L, curve_type, "segments");
+  const Held<Polyline> held = check_self<Polyline>(L, curve_type, "segments");
+  const Polyline& c = *held;
   lua_pushinteger(L, static_cast<lua_Integer>(c.segments()));
   return 1;
 }
 int curve_paths(lua_State* L) {
-  const Polyline& c = check_self<Polyline>(L, curve_type, "paths");
+  const Held<Polyline> held = check_self<Polyline>(L, curve_type, "paths");
+  const Polyline& c = *held;
   lua_pushinteger(L, static_cast<lua_Integer>(c.paths()));
   return 1;
 }
 int curve_length(lua_State* L) {
-  const Polyline& c = check_self<Polyline>(L, curve_type, "length");
+  const Held<Polyline> held = check_self<Polyline>(L, curve_type, "length");
+  const Polyline& c = *held;
   lua_pushnumber(L, c.length());
   return 1;
 }
 int curve_level(lua_State* L) {
-  const Polyline& c = check_self<Polyline>(L, curve_type, "level");
+  const Held<Polyline> held = check_self<Polyline>(L, curve_type, "level");
+  const Polyline& c = *held;
   lua_pushinteger(L, c.level);
   return 1;
 }
 // {min = {x, y}, max = {x, y}}
 int curve_bbox(lua_State* L) {
-  const Polyline& c = check_self<Polyline>(L, curve_type, "bbox");
+  const Held<Polyline> held = check_self<Polyline>(L, curve_type, "bbox");
+  const Polyline& c = *held;
   const BBox2 b = c.bbox();
   lua_createtable(L, 0, 2);
   push_point(L, b.min);
@@ -84,7 +90,8 @@ int curve_bbox(lua_State* L) {
 }
 // c:point(i): the i-th point (1-based) as {x, y}, for checks in recipes; no bulk export to Lua.
 int curve_point(lua_State* L) {
-  const Polyline& c = check_self<Polyline>(L, curve_type, "point");
+  const Held<Polyline> held = check_self<Polyline>(L, curve_type, "point");
+  const Polyline& c = *held;
   const lua_Integer i = luaL_checkinteger(L, 2);
   if (i < 1 || i > static_cast<lua_Integer>(c.points.size()))
     return luaL_error(L, "point: index %I out of range [1, %I]", i, static_cast<lua_Integer>(c.points.size()));
@@ -94,7 +101,8 @@ int curve_point(lua_State* L) {
 // c:transform{ mirror, scale, rotate, translate } -> a new curve: mirrored across the x axis, scaled
 // about the origin, rotated by degrees counterclockwise, then translated, in that order.
 int curve_transform(lua_State* L) {
-  const Polyline& c = check_self<Polyline>(L, curve_type, "transform");
+  const Held<Polyline> held = check_self<Polyline>(L, curve_type, "transform");
+  const Polyline& c = *held;
   return call_kernel(L, "transform", [&] {
     Options o(L, 2);
     const bool mirror = o.boolean("mirror", false);
@@ -115,7 +123,8 @@ int curve_transform(lua_State* L) {
 }
 
 int curve_tostring(lua_State* L) {
-  const Polyline& c = check_self<Polyline>(L, curve_type, "tostring");
+  const Held<Polyline> held = check_self<Polyline>(L, curve_type, "tostring");
+  const Polyline& c = *held;
   lua_pushfstring(L, "Curve(%I points, %I paths, level %d)", static_cast<lua_Integer>(c.points.size()),
                   static_cast<lua_Integer>(c.paths()), c.level);
   return 1;
@@ -144,10 +153,10 @@ void push_curve(lua_State* L, Polyline&& c) {
   lua_gc(L, LUA_GCSTEP, static_cast<int>(std::min<std::size_t>(bytes / 1024, 1 << 30)));
 }
 
-Polyline* test_curve(lua_State* L, int index) { return test_value<Polyline>(L, index, curve_type); }
+Held<Polyline> test_curve(lua_State* L, int index) { return test_value<Polyline>(L, index, curve_type); }
 
 Polyline to_polyline(lua_State* L, int index, const std::string& what) {
-  if (const Polyline* c = test_curve(L, index)) return *c;
+  if (const Held<Polyline> c = test_curve(L, index)) return *c;
   return Polyline::single(read_points(L, lua_absindex(L, index), what));
 }
 

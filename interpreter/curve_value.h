@@ -3,6 +3,7 @@
 
 #include <lua.hpp>
 
+#include <memory>
 #include <string>
 
 #include "kernels/geom/polyline.h"
@@ -14,8 +15,8 @@ inline constexpr const char* curve_type = "selfsim.Curve";
 // Pushes a new Curve; kernels guarantee it is finite (they check their results), and its points count
 // against the run's budget while it lives.
 void push_curve(lua_State* L, Polyline&& c);
-// The curve at index, or nullptr if the value is not a curve.
-Polyline* test_curve(lua_State* L, int index);
+// The curve at index, or null if the value is not a curve; hold it for as long as it is used.
+std::shared_ptr<const Polyline> test_curve(lua_State* L, int index);
 // A curve userdata, or a table of {x, y} points read as one open path. Throws Error naming `what`.
 Polyline to_polyline(lua_State* L, int index, const std::string& what);
 

@@ -19,9 +19,10 @@ void note_refusal(LuaMemory& m, std::size_t bytes, bool over_limit) {
   m.refused = bytes;
   m.over_limit = over_limit;
   try {
-    m.where = m.L ? stack_where(m.L, m.library, 0) : std::string();
+    // Keep the last recipe line known: a refusal outside the recipe (while reporting) has no line of its own.
+    std::string where = m.L ? stack_where(m.L, m.library, 0) : std::string();
+    if (!where.empty()) m.where = std::move(where);
   } catch (...) {
-    m.where.clear();
   }
 }
 

@@ -4,8 +4,8 @@
 
 #include <lua.hpp>
 
+#include <memory>
 #include <new>
-#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -66,9 +66,14 @@ int call_kernel(lua_State* L, const char* fn, Body&& body) {
 
 // A C++ value in a Lua userdata. The finalizer empties `value` but Lua frees the block only later, so a
 // value resurrected by a recipe's own finalizer stays a valid, recognisably dead object, never freed memory.
+// Values are shared: a binding holds its own reference for the whole call, so a finalizer that runs while
+// the call is back in Lua (an options table's __index, a garbage collection) cannot free it under the call.
+template <class T>
+using Held = std::shared_ptr<const T>;
+
 template <class T>
 struct Box {
-  std::optional<T> value;
+  Held<T> value;
   double points = 0;  // counted against the run's --max-points budget while alive
 };
 
@@ -96,31 +101,31 @@ auto with_budget(lua_State* L, Make&& make) {
 
 // Pushes a new userdata of metatable `type` holding value, whose `points` count against the run's budget.
 template <class T>
-T& push_value(lua_State* L, const char* type, T&& value, double points = 0) {
-  auto* box = new (lua_newuserdatauv(L, sizeof(Box<T>), 0)) Box<T>{std::forward<T>(value), points};
+void push_value(lua_State* L, const char* type, T&& value, double points = 0) {
+  Held<T> held = std::make_shared<const T>(std::forward<T>(value));
+  new (lua_newuserdatauv(L, sizeof(Box<T>), 0)) Box<T>{std::move(held), points};
   luaL_setmetatable(L, type);
   hold_points(L, points);
-  return *box->value;
 }
 
-// The value at index if it is a userdata of `type`, else nullptr. Throws Error for a value of that type
-// whose finalizer has run ("Curve used after it was freed").
+// The value at index if it is a userdata of `type`, else null. Throws Error for a value of that type whose
+// finalizer has run ("Curve used after it was freed"). Keep the result for as long as the value is used.
 template <class T>
-T* test_value(lua_State* L, int index, const char* type) {
+Held<T> test_value(lua_State* L, int index, const char* type) {
   auto* box = static_cast<Box<T>*>(luaL_testudata(L, index, type));
   if (box == nullptr) return nullptr;
   if (!box->value) throw Error(type_word(type) + " used after it was freed (kept alive by a finalizer)");
-  return &*box->value;
+  return box->value;
 }
 
-// The method's receiver (argument 1) as a T, or a recipe error that points at the usual slip, a '.'
-// written for ':'.
+// The method's receiver (argument 1), or a recipe error that points at the usual slip, a '.' written for
+// ':'. Keep the result for the whole call.
 template <class T>
-T& check_self(lua_State* L, const char* type, const char* method) {
+Held<T> check_self(lua_State* L, const char* type, const char* method) {
   {
     std::string message;
     try {
-      if (T* v = test_value<T>(L, 1, type)) return *v;
+      if (Held<T> v = test_value<T>(L, 1, type)) return v;
       message = "expected a " + type_word(type) + " before ':' (write value:" + method + "(...)), got " + describe(L, 1);
     } catch (const Error& e) {
       message = e.what();

@@ -27,32 +27,41 @@ const char* const error_where_key = "selfsim.error_where";
 // whatever was raised (a table, a number, nil, a value whose __tostring raises). Runs at the error site, so
 // it can still read the stack; the location is also kept for errors whose handler fails.
 int message_handler(lua_State* L) {
+  RunContext& run = RunContext::of(L);
+  run.ended = true;  // the recipe is over: a __tostring called below cannot save either
   const std::string where = recipe_where(L);
   lua_pushstring(L, where.c_str());
   lua_setfield(L, LUA_REGISTRYINDEX, error_where_key);
   if (lua_type(L, 1) == LUA_TSTRING) return 1;
   // A __tostring is called under pcall: one that raises or loops (the hook stops it) still gives a line.
+  std::string text;
   lua_getglobal(L, "tostring");
   lua_pushvalue(L, 1);
   const bool has_text = luaL_getmetafield(L, 1, "__tostring") != LUA_TNIL;
   if (has_text) lua_pop(L, 1);
   if (has_text && lua_pcall(L, 1, 1, 0) == LUA_OK && lua_type(L, -1) == LUA_TSTRING) {
-    lua_pushfstring(L, "%serror: %s", where.c_str(), lua_tostring(L, -1));
-    return 1;
+    std::size_t n = 0;
+    const char* own = lua_tolstring(L, -1, &n);
+    text = where + "error: " + std::string(own, n);
+  } else if (const std::string stop = run.stop_reason(); !stop.empty()) {
+    text = where + stop;
+  } else {
+    text = where + "error raised with " + describe(L, 1);
   }
-  lua_pushfstring(L, "%serror raised with %s", where.c_str(), describe(L, 1).c_str());
+  lua_pushlstring(L, text.data(), text.size());
   return 1;
 }
 
 // The text of a failed pcall as one line that starts with a recipe location.
 std::string failure_message(lua_State* L, RunContext& run, int status) {
+  if (status == LUA_ERRMEM) return memory_message(run.memory);  // before anything that may allocate
   lua_getfield(L, LUA_REGISTRYINDEX, error_where_key);
   const std::string where = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : run.config.recipe.string() + ": ";
   lua_pop(L, 1);
-  if (status == LUA_ERRMEM) return memory_message(run.memory);
   std::size_t n = 0;
   const char* text = lua_type(L, -1) == LUA_TSTRING ? lua_tolstring(L, -1, &n) : nullptr;
   if (text == nullptr) return where + "error (status " + std::to_string(status) + ")";
+  // Lua's own messages end where the recipe's text does; a long error string is cut after 2000 bytes.
   std::string message = shown_text(std::string_view(text, n), 2000);
   // Lua adds no location to some errors ("error in error handling", error("x", 0)): add the recipe's.
   static const std::regex located(R"(^[^:\s][^:]*:[0-9]+: )");
@@ -85,6 +94,8 @@ int run_command(const RunConfig& config) {
   int code = 0;
   if (status != LUA_OK) {
     std::fprintf(stderr, "%s\n", failure_message(L, run, status).c_str());
+    std::fflush(stderr);
+    run.reported = true;
     code = interrupted.load() ? 130 : 1;
   } else {
     for (const auto& [key, value] : config.sets)

@@ -45,6 +45,7 @@ class RunContext : public Progress {
   std::vector<std::string> saved;     // files written, for the summary
   double held_points = 0;             // points held by live values (curves), against --max-points
   bool ended = false;                 // the recipe has returned or failed: nothing more may be written
+  std::atomic<bool> reported{false};  // the run's error line is printed: the watchdog adds none
   LuaMemory memory;                   // the Lua state's allocator and its --max-memory limit
 
   // What the run's values may still make: --max-points less what live values hold.

@@ -131,6 +131,15 @@ void open_safe_os_and_io(lua_State* L) {
   lua_setglobal(L, "io");
 }
 
+// math.randomseed(...) with upvalues (the original, --seed): with no argument, the run's seed.
+int seeded_randomseed(lua_State* L) {
+  if (lua_gettop(L) == 0) lua_pushvalue(L, lua_upvalueindex(2));
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
+  return lua_gettop(L);
+}
+
 // Errors outside any protected call would abort the process; selfsim runs everything under lua_pcall, so
 // this is a last resort that still ends with one line and no partial file.
 int panic(lua_State* L) {
@@ -176,12 +185,22 @@ lua_State* new_sandbox(RunContext& run) {
   lua_setfield(L, LUA_REGISTRYINDEX, loaded_key);
   lua_register(L, "require", sandbox_require);
 
-  // Same recipe, same seed, same files: math.random is seeded from --seed, never from the clock.
+  // Same recipe, same seed, same files: math.random is seeded from --seed, never from the clock, and
+  // math.randomseed() without a seed reseeds from --seed too.
   lua_getglobal(L, "math");
   lua_getfield(L, -1, "randomseed");
   lua_pushinteger(L, run.config.seed);
-  lua_call(L, 1, 0);
+  lua_pushcclosure(L, seeded_randomseed, 2);
+  lua_pushvalue(L, -1);
+  lua_call(L, 0, 0);
+  lua_setfield(L, -2, "randomseed");
   lua_pop(L, 1);
+  // The string metatable is shared with the DSL's own scripts: locked like the values' metatables.
+  lua_pushliteral(L, "");
+  lua_getmetatable(L, -1);
+  lua_pushliteral(L, "locked");
+  lua_setfield(L, -2, "__metatable");
+  lua_pop(L, 2);
 
   run.install(L);
   install_ordered_pairs(L);

@@ -4,11 +4,12 @@
 
 #include <cstdlib>
 
+#include "interpreter/lua_support.h"
 #include "kernels/io/output_file.h"
 
 namespace selfsim::interp {
 
-Watchdog::Watchdog(const RunContext& run, std::string recipe) : run_(run), recipe_(std::move(recipe)), thread_([this] { watch(); }) {}
+Watchdog::Watchdog(const RunContext& run, std::string recipe) : run_(run), recipe_(shown_text(recipe, 500)), thread_([this] { watch(); }) {}
 
 Watchdog::~Watchdog() {
   {
@@ -35,8 +36,10 @@ void Watchdog::watch() {
     if (now - stop_seen < grace) continue;
     // The run did not stop by itself: end it here. Nothing is unwound, so only what is safe without the
     // main thread's cooperation is done: one line on stderr, named temporaries removed, exit.
-    const std::string line = std::string(::isatty(2) ? "\r\x1b[K" : "") + recipe_ + ": " + reason + "\n";
-    [[maybe_unused]] const auto written = ::write(2, line.data(), line.size());
+    if (!run_.reported.load()) {
+      const std::string line = std::string(::isatty(2) ? "\r\x1b[K" : "") + recipe_ + ": " + reason + "\n";
+      [[maybe_unused]] const auto written = ::write(2, line.data(), line.size());
+    }
     io::remove_temporaries();
     std::_Exit(interrupted.load() ? 130 : 1);
   }

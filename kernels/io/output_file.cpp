@@ -138,7 +138,17 @@ void OutputFile::name_temporary() {
 
 void OutputFile::commit() {
   flush();
-  if (temporary_.empty()) name_temporary();
+  if (temporary_.empty()) {
+    // A new file is linked straight under its name: nothing is ever visible but the whole file. Only a file
+    // replacing an older one needs a named step (link, then rename over the old one): a SIGKILL in that
+    // instant leaves the dot-named temporary.
+    const std::string proc = "/proc/self/fd/" + std::to_string(fd_);
+    if (::linkat(AT_FDCWD, proc.c_str(), dir_, leaf_.c_str(), AT_SYMLINK_FOLLOW) == 0) {
+      committed_ = true;
+      return;
+    }
+    name_temporary();
+  }
   if (::renameat(dir_, temporary_.c_str(), dir_, leaf_.c_str()) != 0) {
     const int err = errno;
     throw Error("cannot write '" + display_ + "': " +

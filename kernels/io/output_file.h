@@ -4,7 +4,8 @@
 // never following a symbolic link (O_NOFOLLOW), so a link planted inside the folder cannot lead a write
 // outside it. The output folder itself is the user's choice and may be a link.
 // Atomicity: the data goes to an anonymous file (O_TMPFILE), which a crash, a SIGKILL or the watchdog
-// leaves no trace of; commit() links it under a fresh name and renames that over the target in one step.
+// leaves no trace of; commit() links a new file straight under its name, and to replace an older file links
+// it under a fresh dot-name and renames that over the target in one step.
 // Where the filesystem has no O_TMPFILE, the temporary is a named file created exclusively (O_EXCL, never
 // through a link) and removed on failure and by remove_temporaries().
 #pragma once

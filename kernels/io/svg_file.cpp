@@ -4,6 +4,7 @@
 // any size reads the same. (vector-effect: non-scaling-stroke would say this too, but librsvg and some
 // other renderers ignore it.)
 #include <charconv>
+#include <cmath>
 
 #include "kernels/geom/error.h"
 #include "kernels/io/save.h"
@@ -29,6 +30,9 @@ void write_svg(const Polyline& c, OutputFile& out, const SaveOptions& opt, Progr
   const Vec2 lo = b.min - Vec2{margin, margin};
   extent = extent + Vec2{2 * margin, 2 * margin};
   const double px = opt.size / std::max(extent.x, extent.y);
+  // Everything the header derives from the extent must be a number a viewer can read.
+  for (double v : {lo.x, lo.y + extent.y, extent.x * px, extent.y * px, opt.stroke_width / px})
+    if (!std::isfinite(v)) throw Error("the curve's extent and the options give a non-finite SVG size or stroke width (scale the curve)");
 
   std::string s;  // written out every megabyte or so: memory stays flat whatever the curve
   auto flush = [&] {

@@ -1,6 +1,7 @@
 #include "kernels/lsystem/grammar.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "kernels/geom/error.h"
 
@@ -22,8 +23,14 @@ void require_balanced(const std::string& s, const std::string& what) {
   }
 }
 
+std::string number_text(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.14g", v);
+  return buf;
+}
+
 void require_finite(double v, const std::string& what) {
-  if (!std::isfinite(v)) throw Error("option '" + what + "' must be a finite number, got " + std::to_string(v));
+  if (!std::isfinite(v)) throw Error("option '" + what + "' must be a finite number, got " + number_text(v));
 }
 
 }  // namespace
@@ -41,7 +48,7 @@ void Grammar::validate() const {
   if (start_angles.empty()) throw Error("option 'start_angle' must be a number or a non-empty list of numbers");
   for (double a : start_angles) require_finite(a, "start_angle");
   require_finite(shrink, "shrink");
-  if (!(shrink > 0)) throw Error("option 'shrink' must be a positive number, got " + std::to_string(shrink));
+  if (!(shrink > 0)) throw Error("option 'shrink' must be a positive number, got " + number_text(shrink));
   for (char c : draw)
     if (moves(c)) throw Error("option 'draw': symbol '" + shown(c) + "' is also in 'move'");
   for (const auto& [option, symbols] : {std::pair{"draw", &draw}, std::pair{"move", &move}})

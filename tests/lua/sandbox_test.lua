@@ -47,3 +47,29 @@ assert(not ok and message == "plain")
 local co = coroutine.wrap(function(a) local _, b = pcall(coroutine.yield, a + 1); return b * 2 end)
 assert(co(1) == 2 and co(5) == 10)
 assert(xpcall(function() return true end, print))
+
+-- A finalizer that empties a value while a method is still using it (here from the options table's
+-- __index, in the middle of transform) cannot free it under the call: the call holds its own reference.
+collectgarbage("incremental", 100, 100, 1) -- small steps, so finalizers run a few at a time
+collectgarbage("stop")
+local held
+do
+  local c = polyline { { 0, 0 }, { 3, 4 } }
+  for _ = 1, 200 do setmetatable({}, { __gc = function() end }) end
+  setmetatable({ c = c }, { __gc = function(o) held = o.c end })
+end
+repeat collectgarbage("step", 0) until held -- held is back, its own finalizer still queued
+local collecting = setmetatable({}, { __index = function() collectgarbage(); collectgarbage() end })
+local moved = held:transform(collecting)
+assert(moved:point(2)[1] == 3 and moved:point(2)[2] == 4, "the call kept its curve")
+ok, message = pcall(function() return held:points() end)
+assert(not ok and message:find("used after it was freed"), message)
+collectgarbage("restart")
+collectgarbage("incremental", 200, 100, 13)
+
+-- math.randomseed() without a seed reseeds from --seed (default 0), never from the clock.
+math.randomseed()
+local first = math.random()
+math.randomseed(0)
+assert(math.random() == first)
+assert(getmetatable("") == "locked", "the string metatable is shared with scripts/: locked")

@@ -1,0 +1,1 @@
+lsystem { axiom = "F", shrink = -1e-200 }
