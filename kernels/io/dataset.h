@@ -3,11 +3,17 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
 
 namespace selfsim::io {
+
+// The most memory a Dataset read back from a file may need (its values as doubles): 2^28 points, the
+// default --max-points, with their cells and a few fields fit. Readers refuse files that declare more
+// before allocating anything.
+inline constexpr std::uint64_t read_budget_bytes = std::uint64_t{16} << 30;
 
 struct Field {
   int components = 1;

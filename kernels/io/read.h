@@ -1,4 +1,7 @@
 // Reading geometry files back, for `selfsim diff` and `selfsim info`: the reader is chosen by extension.
+// Every failure (a missing, empty, truncated, garbage or crafted file, a directory, FIFO or device, a file
+// over the reading limit) throws Error with one line, "cannot read 'FILE': REASON"; nothing else escapes,
+// and nothing is printed.
 #pragma once
 
 #include <filesystem>
@@ -11,7 +14,7 @@ namespace selfsim::io {
 Dataset read_dataset(const std::filesystem::path& file);
 
 // Format-specific readers.
-Dataset read_vtp(const std::filesystem::path& file);
-Dataset read_svg(const std::filesystem::path& file);
+Dataset read_vtp(const std::filesystem::path& file);  // see vtp_read.cpp for how hostile files are handled
+Dataset read_svg(const std::filesystem::path& file);  // absolute M/L path data, streamed
 
 }  // namespace selfsim::io

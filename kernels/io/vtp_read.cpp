@@ -1,53 +1,227 @@
-// Reading .vtp files back (selfsim diff / info) with VTK's own reader, the one ParaView uses.
+// Reading .vtp files back (selfsim diff / info) with VTK's own reader, the one ParaView uses, so that every
+// flavour of the format (ascii, inline base64, appended raw or base64, zlib / LZ4 / LZMA compression,
+// either header type and byte order) reads as ParaView reads it. VTK's reader trusts the file, so a
+// hostile or broken file goes through three guards:
+//   1. check_vtp_header (vtp_header_check.h) streams the XML part and checks every declared size against
+//      the file and a memory budget, so the crashes, std::bad_alloc aborts and hangs that crafted headers
+//      cause in VTK never start. This alone handles every crafted file we know of.
+//   2. VTK then reads in a forked child process (child_process.h) with an address-space limit and a time
+//      limit. Whatever the checks did not foresee (a crash, an allocation failure, a loop deep inside VTK)
+//      ends the child, not us, and becomes one line: "the VTK reader crashed (Segmentation fault)". The
+//      child's stdout and stderr go to /dev/null and VTK's messages go to an output window that keeps the
+//      first error, which comes back as the reason; nothing VTK says reaches the terminal. The Dataset
+//      comes back over a pipe. The cost is a fork per file, nothing next to reading it.
+//   3. The Dataset is checked (dataset_check.h) and must hold the points and cells the header declared.
+// Simpler alternatives fall short: catching exceptions cannot catch a segfault, and checks alone cannot
+// prove that a third-party reader never misbehaves.
+#include <cstdlib>
+#include <unistd.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkLogger.h>
 #include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkOutputWindow.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkXMLPolyDataReader.h>
 
 #include "kernels/geom/error.h"
+#include "kernels/io/child_process.h"
+#include "kernels/io/dataset_check.h"
+#include "kernels/io/dataset_pipe.h"
 #include "kernels/io/read.h"
+#include "kernels/io/read_error.h"
+#include "kernels/io/regular_file.h"
+#include "kernels/io/vtp_header_check.h"
 
 namespace selfsim::io {
 
 namespace {
 
-Field field_of(vtkDataArray* a) {
-  Field f;
-  f.components = a->GetNumberOfComponents();
+// Keeps VTK's first error message and drops everything else VTK would print.
+class FirstErrorWindow : public vtkOutputWindow {
+ public:
+  static FirstErrorWindow* New();
+  vtkTypeMacro(FirstErrorWindow, vtkOutputWindow);
+  void DisplayText(const char*) override {}
+  void DisplayErrorText(const char* text) override {
+    if (first_error.empty() && text) first_error = text;
+  }
+  void DisplayWarningText(const char*) override {}
+  void DisplayGenericWarningText(const char*) override {}
+  void DisplayDebugText(const char*) override {}
+  std::string first_error;
+};
+vtkStandardNewMacro(FirstErrorWindow);
+
+// "ERROR: In .../vtkXMLReader.cxx, line 42\nvtkXMLPolyDataReader (0x55d0): Error parsing ...\n\n" -> the message.
+std::string vtk_reason(const std::string& text, const std::string& vtk_name, const std::string& shown_name) {
+  std::string reason;
+  std::size_t begin = 0;
+  while (begin < text.size()) {
+    std::size_t end = text.find('\n', begin);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(begin, end - begin);
+    begin = end + 1;
+    if (line.empty() || line.rfind("ERROR: In ", 0) == 0) continue;
+    if (line.rfind("vtk", 0) == 0)
+      if (const std::size_t object = line.find("): "); object != std::string::npos && object < 80) line.erase(0, object + 3);
+    reason += (reason.empty() ? "" : " ") + line;
+  }
+  for (std::size_t at; (at = reason.find("  ")) != std::string::npos;) reason.erase(at, 1);
+  for (std::size_t at; !vtk_name.empty() && (at = reason.find(vtk_name)) != std::string::npos;) reason.replace(at, vtk_name.size(), shown_name);
+  if (reason.size() > 300) reason = reason.substr(0, 300) + "...";
+  return reason.empty() ? "VTK could not read it" : "VTK: " + reason;
+}
+
+// Sends the values of a's tuples as doubles (the count goes first, from the caller): straight from
+// memory when they already are doubles, in chunks otherwise.
+void send_values(PipeOut& out, vtkDataArray* a, int components) {
   const vtkIdType n = a->GetNumberOfTuples();
-  f.values.reserve(static_cast<std::size_t>(n * f.components));
-  for (vtkIdType i = 0; i < n; ++i)
-    for (int k = 0; k < f.components; ++k) f.values.push_back(a->GetComponent(i, k));
-  return f;
+  if (auto* doubles = vtkDoubleArray::FastDownCast(a); doubles && n > 0) {
+    out.write(doubles->GetPointer(0), static_cast<std::size_t>(n) * static_cast<std::size_t>(components) * sizeof(double));
+    return;
+  }
+  std::vector<double> chunk;
+  for (vtkIdType begin = 0; begin < n; begin += 8192) {
+    const vtkIdType end = std::min<vtkIdType>(n, begin + 8192);
+    chunk.clear();
+    for (vtkIdType i = begin; i < end; ++i)
+      for (int k = 0; k < components; ++k) chunk.push_back(a->GetComponent(i, k));
+    out.write(chunk.data(), chunk.size() * sizeof(double));
+  }
+}
+
+void send_fields(PipeOut& out, vtkFieldData* data) {
+  std::vector<vtkDataArray*> arrays;  // numeric arrays only: string arrays have no geometry to compare
+  for (int i = 0; i < data->GetNumberOfArrays(); ++i)
+    if (vtkDataArray* a = data->GetArray(i)) arrays.push_back(a);
+  put_count(out, arrays.size());
+  for (vtkDataArray* a : arrays) {
+    put_name(out, a->GetName() ? a->GetName() : "?");
+    put_count(out, static_cast<std::uint64_t>(a->GetNumberOfComponents()));
+    put_count(out, static_cast<std::uint64_t>(a->GetNumberOfTuples()) * static_cast<std::uint64_t>(a->GetNumberOfComponents()));
+    send_values(out, a, a->GetNumberOfComponents());
+  }
+}
+
+// The polydata in dataset_pipe.h's format. Cells in VTK's cell order, which cell data follows: verts,
+// lines, polys, strips.
+void send_polydata(PipeOut& out, vtkPolyData* poly) {
+  vtkPoints* points = poly->GetPoints();
+  if (points && points->GetData()) {
+    if (points->GetData()->GetNumberOfComponents() != 3) throw Error("points without 3 components");  // VTK ensures 3
+    put_count(out, static_cast<std::uint64_t>(points->GetNumberOfPoints()));
+    send_values(out, points->GetData(), 3);
+  } else {
+    put_count(out, 0);
+  }
+  vtkCellArray* const kinds[] = {poly->GetVerts(), poly->GetLines(), poly->GetPolys(), poly->GetStrips()};
+  std::uint64_t cells = 0, ids = 0;
+  for (vtkCellArray* c : kinds)
+    if (c) cells += static_cast<std::uint64_t>(c->GetNumberOfCells()), ids += static_cast<std::uint64_t>(c->GetNumberOfConnectivityIds());
+  std::vector<std::uint64_t> chunk;
+  auto flush = [&](bool force) {
+    if (chunk.size() >= 8192 || (force && !chunk.empty())) {
+      out.write(chunk.data(), chunk.size() * sizeof(std::uint64_t));
+      chunk.clear();
+    }
+  };
+  for (int pass = 0; pass < 2; ++pass) {  // cell ends, then their point ids
+    put_count(out, pass == 0 ? cells : ids);
+    std::uint64_t end = 0;
+    for (vtkCellArray* c : kinds) {
+      if (!c) continue;
+      const vtkIdType* cell = nullptr;
+      vtkIdType count = 0;
+      for (c->InitTraversal(); c->GetNextCell(count, cell);) {
+        end += static_cast<std::uint64_t>(count);
+        if (pass == 0) chunk.push_back(end);
+        else
+          for (vtkIdType k = 0; k < count; ++k) chunk.push_back(static_cast<std::uint64_t>(cell[k]));  // a negative id fails the range check
+        flush(false);
+      }
+    }
+    flush(true);
+  }
+  send_fields(out, poly->GetPointData());
+  send_fields(out, poly->GetCellData());
+}
+
+// In the child: read with VTK, answer 'D' and the Dataset, or 'E' and the reason.
+int read_in_child(PipeOut& out, const std::string& vtk_name, const std::string& shown_name) {
+  // No TBB threads in a forked child (TBB's state does not survive fork). vtkSMPTools.h itself does not
+  // compile as C++20, so the backend is chosen through the variable VTK reads at its first SMP use.
+  ::setenv("VTK_SMP_BACKEND_IN_USE", "Sequential", 1);
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  vtkNew<FirstErrorWindow> window;
+  vtkOutputWindow::SetInstance(window);
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->SetFileName(vtk_name.c_str());
+  reader->Update();
+  vtkPolyData* poly = reader->GetOutput();
+  std::string error;
+  if (!window->first_error.empty()) error = vtk_reason(window->first_error, vtk_name, shown_name);
+  else if (reader->GetErrorCode() != 0 || poly == nullptr) error = "VTK could not read it";
+  const char kind = error.empty() ? 'D' : 'E';
+  out.write(&kind, 1);
+  if (!error.empty()) {
+    const std::uint64_t n = error.size();
+    out.write(&n, sizeof n);
+    out.write(error.data(), error.size());
+  } else {
+    send_polydata(out, poly);
+  }
+  return 0;
+}
+
+Dataset read_checked(const std::filesystem::path& file) {
+  const RegularFile f(file);
+  const VtpDeclared declared = check_vtp_header(f);
+  // VTK opens the file we checked, through our descriptor, not whatever the name points to by then.
+  std::string vtk_name = "/proc/self/fd/" + std::to_string(f.fd());
+  if (::access(vtk_name.c_str(), R_OK) != 0) vtk_name = file.string();
+  ChildLimits limits;
+  limits.what = "the VTK reader";
+  limits.memory_bytes = (std::uint64_t{1} << 30) + 3 * declared.bytes;
+  limits.seconds = 30 + static_cast<double>(f.size() + declared.bytes) / (8 << 20);
+  Dataset d;
+  run_in_child(
+      limits, [&](PipeOut& out) { return read_in_child(out, vtk_name, one_line(file.string())); },
+      [&](PipeIn& in) {
+        char kind = 0;
+        in.read(&kind, 1);
+        if (kind == 'E') {
+          std::uint64_t n = 0;
+          in.read(&n, sizeof n);
+          if (n > 4096) throw Error("the VTK reader sent a malformed answer");
+          std::string reason(static_cast<std::size_t>(n), '\0');
+          in.read(reason.data(), reason.size());
+          throw Error(reason);
+        }
+        if (kind != 'D') throw Error("the VTK reader sent a malformed answer");
+        d = receive_dataset(in, read_budget_bytes / 8);
+      });
+  check_dataset(d);
+  if (d.points.size() != declared.points || d.cell_ends.size() != declared.cells)
+    throw Error("VTK read " + std::to_string(d.points.size()) + " points and " + std::to_string(d.cell_ends.size()) +
+                " cells, but the file declares " + std::to_string(declared.points) + " and " + std::to_string(declared.cells));
+  return d;
 }
 
 }  // namespace
 
 Dataset read_vtp(const std::filesystem::path& file) {
-  vtkNew<vtkXMLPolyDataReader> reader;
-  reader->SetFileName(file.c_str());
-  reader->Update();
-  vtkPolyData* poly = reader->GetOutput();
-  if (reader->GetErrorCode() != 0 || poly == nullptr) throw Error("cannot read '" + file.string() + "' as VTK PolyData");
-  Dataset d;
-  d.points.resize(static_cast<std::size_t>(poly->GetNumberOfPoints()));
-  for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i) poly->GetPoint(i, d.points[static_cast<std::size_t>(i)].data());
-  for (vtkCellArray* cells : {poly->GetVerts(), poly->GetLines(), poly->GetPolys(), poly->GetStrips()}) {
-    const vtkIdType* ids = nullptr;
-    vtkIdType count = 0;
-    for (cells->InitTraversal(); cells->GetNextCell(count, ids);) {
-      d.cell_points.insert(d.cell_points.end(), ids, ids + count);
-      d.cell_ends.push_back(d.cell_points.size());
-    }
+  try {
+    return read_checked(file);
+  } catch (const std::bad_alloc&) {
+    throw Error(cannot_read(file, "out of memory"));
+  } catch (const std::exception& e) {
+    throw Error(cannot_read(file, e.what()));
   }
-  for (int i = 0; i < poly->GetPointData()->GetNumberOfArrays(); ++i)
-    if (vtkDataArray* a = poly->GetPointData()->GetArray(i)) d.point_fields[a->GetName() ? a->GetName() : "?"] = field_of(a);
-  for (int i = 0; i < poly->GetCellData()->GetNumberOfArrays(); ++i)
-    if (vtkDataArray* a = poly->GetCellData()->GetArray(i)) d.cell_fields[a->GetName() ? a->GetName() : "?"] = field_of(a);
-  return d;
 }
 
 }  // namespace selfsim::io

@@ -1,0 +1,29 @@
+// A Dataset sent from a reader child process to its parent (see child_process.h). The wire format, in
+// native byte order (both ends are the same program on the same machine):
+//   points:       count, then count x (x, y, z) doubles
+//   cell ends:    count, then count uint64
+//   cell points:  count, then count uint64
+//   point fields, then cell fields: count, then per field: name length, name bytes, components,
+//                 value count, then the values as doubles
+// where every count is a uint64. The child writes it straight from its reader's arrays, without building
+// a Dataset of its own; the parent rebuilds the Dataset.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "kernels/io/child_process.h"
+#include "kernels/io/dataset.h"
+
+namespace selfsim::io {
+
+inline void put_count(PipeOut& out, std::uint64_t n) { out.write(&n, sizeof n); }
+inline void put_name(PipeOut& out, const std::string& name) {
+  put_count(out, name.size());
+  out.write(name.data(), name.size());
+}
+
+// Refuses counts over max_values (the reader's memory budget in values) before allocating for them.
+Dataset receive_dataset(PipeIn& in, std::uint64_t max_values);
+
+}  // namespace selfsim::io

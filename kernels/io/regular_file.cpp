@@ -1,0 +1,86 @@
+#include "kernels/io/regular_file.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "kernels/geom/error.h"
+
+namespace selfsim::io {
+
+std::string error_text(int code) {
+  std::string s = std::strerror(code);
+  if (!s.empty() && std::isupper(static_cast<unsigned char>(s[0])) && (s.size() < 2 || std::islower(static_cast<unsigned char>(s[1]))))
+    s[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(s[0])));
+  return s;
+}
+
+namespace {
+
+std::string kind_of(mode_t mode) {
+  if (S_ISDIR(mode)) return "is a directory";
+  if (S_ISFIFO(mode)) return "is a FIFO, not a regular file";
+  if (S_ISCHR(mode) || S_ISBLK(mode)) return "is a device, not a regular file";
+  if (S_ISSOCK(mode)) return "is a socket, not a regular file";
+  return "is not a regular file";
+}
+
+}  // namespace
+
+RegularFile::RegularFile(const std::filesystem::path& file) {
+  if (file.empty()) throw Error("empty file name");
+  // O_NONBLOCK: a FIFO opens at once instead of waiting for a writer; fstat then refuses it.
+  do fd_ = ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+  while (fd_ < 0 && errno == EINTR);
+  if (fd_ < 0) throw Error(error_text(errno));
+  struct stat st {};
+  if (::fstat(fd_, &st) != 0) {
+    const int code = errno;
+    ::close(fd_);
+    throw Error(error_text(code));
+  }
+  if (!S_ISREG(st.st_mode)) {
+    ::close(fd_);
+    throw Error(kind_of(st.st_mode));
+  }
+  const int flags = ::fcntl(fd_, F_GETFL);
+  if (flags >= 0) ::fcntl(fd_, F_SETFL, flags & ~O_NONBLOCK);
+  size_ = static_cast<std::uint64_t>(st.st_size);
+  if (size_ == 0) {
+    ::close(fd_);
+    throw Error("the file is empty");
+  }
+}
+
+RegularFile::~RegularFile() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+std::size_t RegularFile::read_at(std::uint64_t pos, void* buffer, std::size_t n) const {
+  if (pos >= size_) return 0;
+  n = static_cast<std::size_t>(std::min<std::uint64_t>(n, size_ - pos));
+  std::size_t done = 0;
+  while (done < n) {
+    const ssize_t r = ::pread(fd_, static_cast<char*>(buffer) + done, n - done, static_cast<off_t>(pos + done));
+    if (r < 0 && errno == EINTR) continue;
+    if (r < 0) throw Error(error_text(errno));
+    if (r == 0) throw Error("the file shrank while it was read");
+    done += static_cast<std::size_t>(r);
+  }
+  return n;
+}
+
+ChunkReader::ChunkReader(const RegularFile& file, std::size_t chunk)
+    : file_(file), buffer_(static_cast<std::size_t>(std::min<std::uint64_t>(chunk, file.size())), '\0') {}
+
+std::string_view ChunkReader::next() {
+  const std::size_t n = file_.read_at(pos_, buffer_.data(), buffer_.size());
+  pos_ += n;
+  return {buffer_.data(), n};
+}
+
+}  // namespace selfsim::io

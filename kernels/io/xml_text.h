@@ -1,0 +1,24 @@
+// Small pieces shared by the streaming XML scanners of the readers (vtp_header_check.cpp, svg_read.cpp).
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <string_view>
+
+namespace selfsim::io {
+
+inline bool xml_space(int c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+
+// Streaming search for `end` (at most 4 characters: "-->", "?>", "]]>"): given how many of its first
+// characters the text seen so far ends with, returns that count after character c.
+inline std::size_t advance_match(std::string_view end, std::size_t matched, char c) {
+  char seen[5];
+  for (std::size_t i = 0; i < matched; ++i) seen[i] = end[i];
+  seen[matched] = c;
+  const std::string_view s(seen, matched + 1);
+  for (std::size_t k = std::min(s.size(), end.size()); k > 0; --k)
+    if (s.substr(s.size() - k) == end.substr(0, k)) return k;
+  return 0;
+}
+
+}  // namespace selfsim::io
