@@ -2,21 +2,17 @@
 
 #include <gtest/gtest.h>
 
+#include "io_fixtures.h"
+
 #include <fstream>
 
 #include "kernels/geom/error.h"
 
 using namespace selfsim;
 namespace fs = std::filesystem;
+using io_fixtures::TempDir;
 
 namespace {
-
-struct TempDir {
-  fs::path path = fs::temp_directory_path() / ("selfsim_out_" + std::to_string(::getpid()) + "_" +
-                                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  TempDir() { fs::create_directories(path); }
-  ~TempDir() { fs::remove_all(path); }
-};
 
 std::string read(const fs::path& p) {
   std::ifstream in(p);

@@ -3,6 +3,8 @@
 #include "kernels/io/read.h"
 
 #include <gtest/gtest.h>
+
+#include "io_fixtures.h"
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -16,18 +18,10 @@
 
 using namespace selfsim;
 namespace fs = std::filesystem;
+using io_fixtures::TempDir;
+using io_fixtures::two_paths;
 
 namespace {
-
-struct TempDir {
-  fs::path path = fs::temp_directory_path() / ("selfsim_read_" + std::to_string(::getpid()) + "_" +
-                                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  TempDir() { fs::create_directories(path); }
-  ~TempDir() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-};
 
 std::string slurp(const fs::path& f) {
   std::ifstream in(f, std::ios::binary);
@@ -56,14 +50,6 @@ void expect_read_error(const fs::path& f, const std::string& reason) {
   EXPECT_EQ(m.rfind("cannot read '", 0), 0u) << m;
   EXPECT_EQ(m.find('\n'), std::string::npos) << m;
   EXPECT_NE(m.find(reason), std::string::npos) << "expected '" << reason << "' in: " << m;
-}
-
-Polyline sample() {
-  Polyline c;
-  c.points = {{0, 0}, {1, 0}, {1, 1}, {2, 2}, {3, 2.5}};
-  c.path_ends = {3, 5};
-  c.level = 7;
-  return c;
 }
 
 std::string replaced(std::string s, const std::string& from, const std::string& to) {
@@ -175,7 +161,7 @@ std::string ascii_vtp(const std::string& points, const std::string& connectivity
 void expect_every_prefix_fails(const fs::path& full, const fs::path& part) {
   const std::string bytes = slurp(full);
   const io::Dataset whole = io::read_dataset(full);
-  ASSERT_EQ(whole.points.size(), sample().points.size());
+  ASSERT_EQ(whole.points.size(), two_paths().points.size());
   for (std::size_t k = 0; k < bytes.size(); ++k) {
     write(part, bytes.substr(0, k));
     const std::string m = read_error(part);
@@ -193,13 +179,13 @@ void expect_every_prefix_fails(const fs::path& full, const fs::path& part) {
 
 TEST(ReadVtp, EveryTruncationOfASavedFileIsAnError) {
   TempDir dir;
-  io::save_curve(sample(), dir.path / "c.vtp", {}, no_progress());
+  io::save_curve(two_paths(), dir.path / "c.vtp", {}, no_progress());
   expect_every_prefix_fails(dir.path / "c.vtp", dir.path / "part.vtp");
 }
 
 TEST(ReadSvg, EveryTruncationOfASavedFileIsAnError) {
   TempDir dir;
-  io::save_curve(sample(), dir.path / "c.svg", {}, no_progress());
+  io::save_curve(two_paths(), dir.path / "c.svg", {}, no_progress());
   expect_every_prefix_fails(dir.path / "c.svg", dir.path / "part.svg");
 }
 
@@ -220,7 +206,7 @@ TEST(ReadVtp, EveryTruncationOfACompressedFileIsAnError) {
 TEST(ReadVtp, CraftedHeadersAreErrors) {
   // Each a file VTK's reader alone would crash on, abort on or misread.
   TempDir dir;
-  io::save_curve(sample(), dir.path / "c.vtp", {}, no_progress());
+  io::save_curve(two_paths(), dir.path / "c.vtp", {}, no_progress());
   const std::string good = slurp(dir.path / "c.vtp");
   const struct {
     std::string attribute, value, reason;

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "io_fixtures.h"
+
 #include <fstream>
 
 #include "kernels/analysis/dataset_diff.h"
@@ -10,23 +12,10 @@
 
 using namespace selfsim;
 namespace fs = std::filesystem;
+using io_fixtures::TempDir;
+using io_fixtures::two_paths;
 
 namespace {
-
-struct TempDir {
-  fs::path path = fs::temp_directory_path() / ("selfsim_io_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  TempDir() { fs::create_directories(path); }
-  ~TempDir() { fs::remove_all(path); }
-};
-
-Polyline two_paths() {
-  Polyline c;
-  c.points = {{0, 0}, {1, 0}, {1, 1}, {2, 2}, {3, 2.5}};
-  c.path_ends = {3, 5};
-  c.level = 7;
-  return c;
-}
 
 }  // namespace
 

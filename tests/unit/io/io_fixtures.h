@@ -1,0 +1,35 @@
+// Shared by the io tests: a fresh folder per test, and a small curve of two paths.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+
+#include "kernels/geom/polyline.h"
+
+namespace io_fixtures {
+
+// A folder named after the process and the test, removed with everything in it at the end of the test.
+struct TempDir {
+  std::filesystem::path path = std::filesystem::temp_directory_path() /
+                               ("selfsim_io_" + std::to_string(::getpid()) + "_" +
+                                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  TempDir() { std::filesystem::create_directories(path); }
+  ~TempDir() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+};
+
+// Two paths: (0,0) (1,0) (1,1), then (2,2) (3,2.5); level 7.
+inline selfsim::Polyline two_paths() {
+  selfsim::Polyline c;
+  c.points = {{0, 0}, {1, 0}, {1, 1}, {2, 2}, {3, 2.5}};
+  c.path_ends = {3, 5};
+  c.level = 7;
+  return c;
+}
+
+}  // namespace io_fixtures
