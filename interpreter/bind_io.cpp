@@ -25,8 +25,6 @@ io::SaveOptions read_save_options(lua_State* L, int index) {
 int save(lua_State* L) {
   return call_kernel(L, "save", [&] {
     RunContext& run = RunContext::of(L);
-    // Finalizers may run after the recipe has returned or failed; nothing is written then.
-    if (run.ended) throw Error("the recipe has ended: nothing more is written (save from a finalizer?)");
     const Held<Polyline> c = test_curve(L, 1);
     if (c == nullptr) throw Error("argument 1 must be a curve, got " + describe(L, 1));
     if (lua_type(L, 2) != LUA_TSTRING) throw Error("argument 2 must be a file name, got " + describe(L, 2));

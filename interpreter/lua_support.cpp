@@ -83,6 +83,8 @@ void hold_points(lua_State* L, double points) { RunContext::of(L).held_points +=
 
 PointBudget run_budget(lua_State* L) { return RunContext::of(L).budget(); }
 
+bool run_has_ended(lua_State* L) { return RunContext::of(L).ended; }
+
 namespace {
 
 // Keys of a table in the order they are visited: numbers by value, then strings by their bytes, then

@@ -38,6 +38,9 @@ std::string describe(lua_State* L, int index);
 // no C++ object with a destructor is alive in the frame: lua_error longjmps past destructors.
 void push_error(lua_State* L, const char* fn, const std::string& message);
 
+// True once the recipe has returned or failed.
+bool run_has_ended(lua_State* L);
+
 // Message for a cancelled kernel: the timeout or the interrupt that caused it.
 std::string cancel_message(lua_State* L);
 
@@ -49,6 +52,9 @@ int call_kernel(lua_State* L, const char* fn, Body&& body) {
   {
     std::string message;
     try {
+      // Finalizers may run after the recipe has returned or failed (while the state closes, Lua no longer
+      // finalizes new values): nothing is made or written then.
+      if (run_has_ended(L)) throw Error("the recipe has ended: nothing more is made or written (called from a finalizer?)");
       return std::forward<Body>(body)();
     } catch (const Cancelled&) {
       message = cancel_message(L);

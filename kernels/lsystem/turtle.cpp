@@ -145,7 +145,7 @@ void curve_into(const Grammar& g, const CurveOptions& opt, Progress& progress, P
   opt.validate();
   const LevelCounts counts = predict_counts(g, opt.level, progress);
   const std::string what = "level " + std::to_string(opt.level);
-  check_budget(counts.segments + 1, opt.budget, what);
+  check_budget(counts.max_points(), opt.budget, what);  // every path break adds a point
   // Each branch left open keeps a saved turtle state (32 bytes, two points' worth) until it closes.
   if (counts.max_depth > 0)
     check_budget(counts.max_points() + 2 * counts.max_depth, opt.budget,

@@ -81,6 +81,11 @@ recipe late_ok 'setmetatable({}, { __gc = function() save(polyline { { 0, 0 }, {
 run_selfsim run late_ok.lua -o out_late -q
 check "a finalizer at exit cannot save (exit $code)" empty_dir out_late
 check "the refused late save is a one-line warning" grep -q "the recipe has ended" "$tmp/err"
+# Lua registers no finalizer for a value made while the state closes: making one is refused, not leaked.
+recipe late_make 'setmetatable({}, { __gc = function() polyline { { 0, 0 }, { 1, 0 } } end })'
+run_selfsim run late_make.lua -o out_late_make -q
+check "a value made by a finalizer at exit is refused (exit $code, $(first_err))" [ "$code" = 0 ]
+check "the refused value is a one-line warning" grep -q "polyline: the recipe has ended" "$tmp/err"
 
 # --- Same recipe and seed, same bytes: pairs() order is fixed -------------------------------------------
 recipe order 'local pts, names = {}, { pear = 1, apple = 2, fig = 3, kiwi = 4, lime = 5, plum = 6, date = 7, yuzu = 8, sloe = 9 }

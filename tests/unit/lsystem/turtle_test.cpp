@@ -187,6 +187,13 @@ TEST(Turtle, OpenBranchesAreBudgeted) {
   EXPECT_NO_THROW(curve(open, {.level = 12, .budget = {1e6}}, no_progress()));
 }
 
+TEST(Turtle, BudgetCountsThePointsPathBreaksAdd) {
+  // Four paths of one segment: 4 segments but 8 points (found by the grammar fuzzer).
+  const Grammar broken{.axiom = "FfFfFfFf"};
+  EXPECT_THROW(curve(broken, {.level = 0, .budget = {5}}, no_progress()), BudgetError);
+  EXPECT_EQ(curve(broken, {.level = 0, .budget = {9}}, no_progress()).points.size(), 8u);
+}
+
 TEST(Turtle, BudgetCountsHeldPoints) {
   // 1025 points fit a limit of 2000, but not beside 1000 points already held.
   EXPECT_NO_THROW(curve(table1::dragon(), {.level = 10, .budget = {2000, 0}}, no_progress()));
