@@ -138,7 +138,12 @@ int grammar_tostring(lua_State* L) {
 
 int make_lsystem(lua_State* L) {
   return call_kernel(L, "lsystem", [&] {
-    push_value(L, grammar_type, read_grammar(L, 1));
+    Grammar g = read_grammar(L, 1);
+    // A grammar's rules are recipe data held in C++ memory: they count against --max-memory like Lua's
+    // own strings, so a recipe cannot hoard gigabytes of grammars.
+    std::size_t bytes = sizeof(Grammar) + g.axiom.size() + g.draw.size() + g.move.size();
+    for (const auto& [symbol, rule] : g.rules) bytes += rule.size() + 64;
+    push_value(L, grammar_type, std::move(g), 0, bytes);
     return 1;
   });
 }

@@ -148,9 +148,10 @@ void push_curve(lua_State* L, Polyline&& c) {
   const std::size_t bytes = c.points.capacity() * sizeof(Vec2) + c.path_ends.capacity() * sizeof(std::size_t);
   const double points = static_cast<double>(c.points.size());
   push_value(L, curve_type, std::move(c), points);
-  // Lua only sees the userdata's few bytes; tell its collector about the arrays, so that curves a recipe
-  // has dropped are freed before the next big one instead of piling up.
-  lua_gc(L, LUA_GCSTEP, static_cast<int>(std::min<std::size_t>(bytes / 1024, 1 << 30)));
+  // Lua only sees the userdata's few bytes; tell its collector about big arrays, so that curves a recipe
+  // has dropped are freed before the next big one instead of piling up. (Small curves are left to the
+  // collector's own pace: a step per tiny curve costs time in proportion to the whole heap.)
+  if (bytes >= (std::size_t{1} << 20)) lua_gc(L, LUA_GCSTEP, static_cast<int>(std::min<std::size_t>(bytes / 1024, 1 << 30)));
 }
 
 Held<Polyline> test_curve(lua_State* L, int index) { return test_value<Polyline>(L, index, curve_type); }

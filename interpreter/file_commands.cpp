@@ -5,6 +5,7 @@
 #include <new>
 
 #include "interpreter/commands.h"
+#include "interpreter/lua_support.h"
 #include "kernels/analysis/dataset_diff.h"
 #include "kernels/geom/error.h"
 #include "kernels/io/read.h"
@@ -39,7 +40,7 @@ int diff_command(const std::string& a, const std::string& b, double tol) {
   try {
     const io::Dataset da = io::read_dataset(a), db = io::read_dataset(b);
     const auto differences = analysis::dataset_diff(da, db, tol);
-    for (const auto& d : differences) std::printf("%s\n", d.c_str());
+    for (const auto& d : differences) std::printf("%s\n", shown_text(d, 2000).c_str());
     if (differences.empty()) std::printf("same: %zu points, %zu cells\n", da.points.size(), da.cell_ends.size());
     return differences.empty() ? 0 : 1;
   } catch (...) {
@@ -58,8 +59,8 @@ int info_command(const std::string& file) {
       }
     std::printf("file: %s\npoints: %zu\ncells: %zu\n", file.c_str(), d.points.size(), d.cell_ends.size());
     std::printf("bbox: [%.9g, %.9g, %.9g] .. [%.9g, %.9g, %.9g]\n", lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
-    for (const auto& [name, f] : d.point_fields) std::printf("point field: %s (%d component%s)\n", name.c_str(), f.components, f.components == 1 ? "" : "s");
-    for (const auto& [name, f] : d.cell_fields) std::printf("cell field: %s (%d component%s)\n", name.c_str(), f.components, f.components == 1 ? "" : "s");
+    for (const auto& [name, f] : d.point_fields) std::printf("point field: %s (%d component%s)\n", shown_text(name, 200).c_str(), f.components, f.components == 1 ? "" : "s");
+    for (const auto& [name, f] : d.cell_fields) std::printf("cell field: %s (%d component%s)\n", shown_text(name, 200).c_str(), f.components, f.components == 1 ? "" : "s");
     return 0;
   } catch (...) {
     return report("info");

@@ -83,6 +83,17 @@ void hold_points(lua_State* L, double points) { RunContext::of(L).held_points +=
 
 PointBudget run_budget(lua_State* L) { return RunContext::of(L).budget(); }
 
+void hold_memory(lua_State* L, double bytes) {
+  LuaMemory& m = RunContext::of(L).memory;
+  if (bytes > 0 && static_cast<double>(m.used) + bytes > m.limit) {
+    m.over_limit = true;
+    m.refused = static_cast<std::size_t>(bytes);
+    m.where = recipe_where(L);
+    throw Error(memory_message(m).substr(m.where.size()));
+  }
+  m.used = static_cast<std::size_t>(static_cast<double>(m.used) + bytes);
+}
+
 bool run_has_ended(lua_State* L) { return RunContext::of(L).ended; }
 
 namespace {

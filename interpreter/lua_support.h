@@ -80,7 +80,8 @@ using Held = std::shared_ptr<const T>;
 template <class T>
 struct Box {
   Held<T> value;
-  double points = 0;  // counted against the run's --max-points budget while alive
+  double points = 0;      // counted against the run's --max-points budget while alive
+  std::size_t bytes = 0;  // C++ memory counted against --max-memory while alive (a grammar's rules)
 };
 
 // The value's type name without the "selfsim." prefix: "Curve".
@@ -105,11 +106,17 @@ auto with_budget(lua_State* L, Make&& make) {
   return make(run_budget(L));
 }
 
-// Pushes a new userdata of metatable `type` holding value, whose `points` count against the run's budget.
+// Counts `bytes` of C++ memory against --max-memory (negative to release them); throws Error with the
+// out-of-memory message when they do not fit.
+void hold_memory(lua_State* L, double bytes);
+
+// Pushes a new userdata of metatable `type` holding value, whose `points` count against the run's point
+// budget and `bytes` against its memory limit.
 template <class T>
-void push_value(lua_State* L, const char* type, T&& value, double points = 0) {
+void push_value(lua_State* L, const char* type, T&& value, double points = 0, std::size_t bytes = 0) {
+  hold_memory(L, static_cast<double>(bytes));
   Held<T> held = std::make_shared<const T>(std::forward<T>(value));
-  new (lua_newuserdatauv(L, sizeof(Box<T>), 0)) Box<T>{std::move(held), points};
+  new (lua_newuserdatauv(L, sizeof(Box<T>), 0)) Box<T>{std::move(held), points, bytes};
   luaL_setmetatable(L, type);
   hold_points(L, points);
 }
@@ -154,6 +161,7 @@ void register_type(lua_State* L, const char* type, const luaL_Reg* methods, lua_
     if (box != nullptr && box->value) {
       box->value.reset();
       hold_points(S, -box->points);
+      hold_memory(S, -static_cast<double>(box->bytes));
     }
     return 0;
   }, 1);

@@ -11,6 +11,7 @@ namespace {
 // The iterator: upvalue 1 the sorted keys, upvalue 2 how many have been visited. Keys removed during the
 // loop (assigned nil) are skipped, as next() would.
 int ordered_next(lua_State* L) {
+  luaL_checktype(L, 1, LUA_TTABLE);  // the iterator may be called by hand, with anything
   lua_Integer i = lua_tointeger(L, lua_upvalueindex(2));
   const auto n = static_cast<lua_Integer>(lua_rawlen(L, lua_upvalueindex(1)));
   while (++i <= n) {

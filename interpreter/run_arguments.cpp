@@ -40,7 +40,10 @@ RunConfig parse_run_arguments(const std::vector<std::string>& args) {
       if (i + 1 >= args.size()) throw UsageError(a + " expects a value");
       return args[++i];
     };
-    if (a == "-o" || a == "--output") c.out_dir = value();
+    if (a == "-o" || a == "--output") {
+      c.out_dir = value();
+      if (c.out_dir.empty()) throw UsageError(a + " expects a folder name, got ''");
+    }
     else if (a == "--set") {
       const std::string& kv = value();
       const auto eq = kv.find('=');

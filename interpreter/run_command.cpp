@@ -100,7 +100,8 @@ int run_command(const RunConfig& config) {
   } else {
     for (const auto& [key, value] : config.sets)
       if (!run.used_params.contains(key))
-        std::fprintf(stderr, "selfsim: warning: --set %s=%s was not read by any param() in the recipe\n", key.c_str(), value.c_str());
+        std::fprintf(stderr, "selfsim: warning: --set %s=%s was not read by any param() in the recipe\n", shown_text(key).c_str(),
+                     shown_text(value).c_str());
     if (!config.quiet)
       for (const auto& s : run.saved) std::printf("wrote %s\n", s.c_str());
   }

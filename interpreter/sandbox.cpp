@@ -50,6 +50,16 @@ bool load_module(lua_State* L, const std::string& name) {
     const std::filesystem::path file = dir / rel;
     std::error_code ec;  // never throw through Lua: a name too long is just "not found"
     if (!std::filesystem::is_regular_file(file, ec)) continue;
+    // Modules come from inside their folder: a symbolic link leading out of it is refused, as save does.
+    std::error_code file_ec, dir_ec;
+    const auto real = std::filesystem::canonical(file, file_ec);
+    const auto home = std::filesystem::canonical(dir.empty() ? std::filesystem::path(".") : dir, dir_ec);
+    const auto inside = std::mismatch(home.begin(), home.end(), real.begin(), real.end()).first == home.end();
+    if (file_ec || dir_ec || !inside) {
+      lua_pushfstring(L, "%srequire: module '%s' (%s) leads outside its folder through a symbolic link", recipe_where(L).c_str(),
+                      module, file.c_str());
+      return false;
+    }
     if (luaL_loadfilex(L, file.c_str(), "t") != LUA_OK) {
       // Syntax errors name the module's file and line already; others (a binary chunk) name nothing.
       const std::string chunk = file.string() + ":";

@@ -2,10 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace selfsim::analysis {
 
 namespace {
+
+// All the digits a double needs: two values that differ never print alike.
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
 
 bool close(double a, double b, double tol) {
   if (std::isnan(a) || std::isnan(b)) return std::isnan(a) && std::isnan(b);
@@ -37,7 +45,7 @@ void compare_fields(const char* kind, const std::map<std::string, io::Field>& a,
     for (std::size_t i = 0; i < fa.values.size() && !r.full(); ++i)
       if (!close(fa.values[i], fb.values[i], tol)) {
         r.add(std::string(kind) + " field '" + name + "' differs at tuple " + std::to_string(i / static_cast<std::size_t>(fa.components)) +
-              ": " + std::to_string(fa.values[i]) + " vs " + std::to_string(fb.values[i]));
+              ": " + num(fa.values[i]) + " vs " + num(fb.values[i]));
         break;
       }
   }
@@ -55,9 +63,9 @@ std::vector<std::string> dataset_diff(const io::Dataset& a, const io::Dataset& b
     for (std::size_t i = 0; i < a.points.size() && !r.full(); ++i)
       for (int k = 0; k < 3; ++k)
         if (!close(a.points[i][k], b.points[i][k], tol)) {
-          r.add("point " + std::to_string(i) + " differs: (" + std::to_string(a.points[i][0]) + ", " + std::to_string(a.points[i][1]) +
-                ", " + std::to_string(a.points[i][2]) + ") vs (" + std::to_string(b.points[i][0]) + ", " +
-                std::to_string(b.points[i][1]) + ", " + std::to_string(b.points[i][2]) + ")");
+          r.add("point " + std::to_string(i) + " differs: (" + num(a.points[i][0]) + ", " + num(a.points[i][1]) +
+                ", " + num(a.points[i][2]) + ") vs (" + num(b.points[i][0]) + ", " +
+                num(b.points[i][1]) + ", " + num(b.points[i][2]) + ")");
           break;
         }
   if (a.cell_ends != b.cell_ends || a.cell_points != b.cell_points)

@@ -10,10 +10,12 @@
 
 namespace selfsim::io {
 
-// The most memory a Dataset read back from a file may need (its values as doubles): 2^28 points, the
-// default --max-points, with their cells and a few fields fit. Readers refuse files that declare more
-// before allocating anything.
-inline constexpr std::uint64_t read_budget_bytes = std::uint64_t{16} << 30;
+// The most memory a Dataset read back from a file may need (its values as doubles): a sixth of this
+// machine's memory, at most 16 GiB (2^28 points, the default --max-points, with cells and fields). Reading
+// holds the data about twice (VTK's arrays in the reading child, then the Dataset), so a file declaring the
+// most still leaves two thirds of the machine free. Readers refuse files that declare more before
+// allocating anything: a few megabytes of compressed zeros cannot declare their way to an OOM kill.
+std::uint64_t read_budget_bytes();
 
 struct Field {
   int components = 1;

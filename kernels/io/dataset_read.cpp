@@ -1,3 +1,5 @@
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
 
@@ -8,12 +10,21 @@
 
 namespace selfsim::io {
 
+std::uint64_t read_budget_bytes() {
+  const double memory = static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGESIZE));
+  return static_cast<std::uint64_t>(std::min(memory / 6, 16.0 * (std::uint64_t{1} << 30)));
+}
+
 Dataset read_dataset(const std::filesystem::path& file) {
   try {
     std::string ext = file.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (ext == ".vtp") return read_vtp(file);
-    if (ext == ".svg") return read_svg(file);
+    if (ext == ".vtp" || ext == ".svg") {
+      // selfsim never writes an empty file, and two broken files must never compare as "same".
+      Dataset d = ext == ".vtp" ? read_vtp(file) : read_svg(file);
+      if (d.points.empty()) throw Error("it holds no points");
+      return d;
+    }
     const RegularFile exists(file);  // a missing or unreadable file says so first
     throw Error(cannot_read(file, "expected a .vtp or .svg file"));
   } catch (const Error& e) {

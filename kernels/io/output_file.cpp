@@ -49,6 +49,8 @@ OutputFile::OutputFile(const std::filesystem::path& root, const std::string& nam
   if (name.empty() || name.find('\0') != std::string::npos || rel.is_absolute() || rel.empty() || *rel.begin() == ".." ||
       !rel.has_filename() || rel.filename() == "." || rel.filename() == "..")
     throw Error("path '" + name + "' is outside the output folder (give a relative file name such as 'curve.vtp')");
+  for (unsigned char c : name)
+    if (c < 32 || c == 127) throw Error("file names must not contain control characters (a newline, a tab)");
   for (const auto& part : rel)
     if (part.string().size() > NAME_MAX)
       throw Error("name '" + part.string().substr(0, 40) + "...' is longer than " + std::to_string(NAME_MAX) + " bytes");

@@ -115,7 +115,7 @@ class PathData {
       return;
     }
     pending_ = false;
-    if (d_.points.size() >= read_budget_bytes / 40) throw Error("the path data holds more points than the reading limit");
+    if (d_.points.size() >= read_budget_bytes() / 40) throw Error("the path data holds more points than the reading limit");
     d_.cell_points.push_back(d_.points.size());
     d_.points.push_back({x_, v, 0});
     ++points_in_subpath_;

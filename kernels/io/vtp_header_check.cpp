@@ -185,8 +185,8 @@ class Checker {
   }
 
   void add_bytes(std::uint64_t values, std::uint64_t bytes_each) {
-    if (values > read_budget_bytes / bytes_each || (declared_.bytes += values * bytes_each) > read_budget_bytes)
-      throw Error("the file declares more data than the reading limit of " + std::to_string(read_budget_bytes >> 30) + " GiB");
+    if (values > read_budget_bytes() / bytes_each || (declared_.bytes += values * bytes_each) > read_budget_bytes())
+      throw Error("the file declares more data than the reading limit of " + std::to_string(read_budget_bytes() >> 30) + " GiB");
   }
 
   void piece(const XmlTag& t) {
@@ -290,7 +290,7 @@ class Checker {
           l.end = appended_end_;
         }
         const std::uint64_t need = !a.tuples_known ? 0 : a.type == "Bit" ? (values + 7) / 8 : values * static_cast<std::uint64_t>(size);
-        const std::uint64_t held = check_vtk_binary_data(file_, l, need, read_budget_bytes);
+        const std::uint64_t held = check_vtk_binary_data(file_, l, need, read_budget_bytes());
         if (!a.tuples_known) count = size > 0 ? held / static_cast<std::uint64_t>(size) : held;
       }
     } catch (const Error& e) {

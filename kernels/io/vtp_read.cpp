@@ -69,7 +69,8 @@ std::string vtk_reason(const std::string& text, const std::string& vtk_name, con
     if (line.empty() || line.rfind("ERROR: In ", 0) == 0) continue;
     if (line.rfind("vtk", 0) == 0)
       if (const std::size_t object = line.find("): "); object != std::string::npos && object < 80) line.erase(0, object + 3);
-    reason += (reason.empty() ? "" : " ") + line;
+    reason = line;
+    break;  // the first line says what failed; what follows is VTK's dump of its pipeline, with addresses
   }
   for (std::size_t at; (at = reason.find("  ")) != std::string::npos;) reason.erase(at, 1);
   for (std::size_t at; !vtk_name.empty() && (at = reason.find(vtk_name)) != std::string::npos;) reason.replace(at, vtk_name.size(), shown_name);
@@ -186,7 +187,7 @@ Dataset read_checked(const std::filesystem::path& file) {
   if (::access(vtk_name.c_str(), R_OK) != 0) vtk_name = file.string();
   ChildLimits limits;
   limits.what = "the VTK reader";
-  limits.memory_bytes = (std::uint64_t{1} << 30) + 3 * declared.bytes;
+  limits.memory_bytes = std::min((std::uint64_t{1} << 30) + 3 * declared.bytes, 3 * read_budget_bytes());  // half the machine
   limits.seconds = 30 + static_cast<double>(f.size() + declared.bytes) / (8 << 20);
   Dataset d;
   run_in_child(
@@ -203,7 +204,7 @@ Dataset read_checked(const std::filesystem::path& file) {
           throw Error(reason);
         }
         if (kind != 'D') throw Error("the VTK reader sent a malformed answer");
-        d = receive_dataset(in, read_budget_bytes / 8);
+        d = receive_dataset(in, read_budget_bytes() / 8);
       });
   check_dataset(d);
   if (d.points.size() != declared.points || d.cell_ends.size() != declared.cells)

@@ -40,7 +40,9 @@ int XmlTagReader::get() {
 
 void XmlTagReader::skip_past(std::string_view end, const char* what) {
   std::size_t matched = 0;
-  for (;;) {
+  // Bounded like tags: VTK's parser takes time quadratic in a comment's length (20 MB: over 30 s).
+  for (std::size_t skipped = 0;; ++skipped) {
+    if (skipped > max_tag_bytes) throw Error(std::string(what) + " is longer than 64 KiB");
     const int c = get();
     if (c < 0) throw Error(std::string("the file ends inside ") + what + " (truncated?)");
     matched = advance_match(end, matched, static_cast<char>(c));

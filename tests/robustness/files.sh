@@ -133,4 +133,17 @@ done
 one_error diff "$tmp/loop.vtp" "$long"
 one_error diff "$good_svg" "$tmp/fifo.svg"
 
+# Found by the second hostile round: well-formed but empty files, and comments VTK parses in quadratic time.
+printf '<svg xmlns="http://www.w3.org/2000/svg"></svg>' >"$tmp/empty.svg"
+run_selfsim info "$tmp/empty.svg"
+check "an empty SVG is exit 2 (got $code)" [ "$code" = 2 ]
+check "an empty SVG says it holds no points ($(first_err))" grep -q "holds no points" "$tmp/err"
+run_selfsim diff "$tmp/empty.svg" "$tmp/empty.svg"
+check "two empty files never diff as same (exit $code)" [ "$code" = 2 ]
+python3 -c "import sys; sys.stdout.write('<?xml version=\"1.0\"?>\n<!--' + 'x' * (1 << 20) + '-->\n')" >"$tmp/comment.vtp"
+started=$(date +%s%N)
+run_selfsim info "$tmp/comment.vtp"
+ms=$(( ($(date +%s%N) - started) / 1000000 ))
+check "a 1 MiB comment is refused (exit $code, $(first_err))" [ "$code" = 2 ]
+check "at once ($ms ms)" [ "$ms" -lt 5000 ]
 finish

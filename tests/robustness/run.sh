@@ -76,6 +76,16 @@ check "saving over a planted file link works (exit $code)" [ "$code" = 0 ]
 check "the planted link is replaced, not written through" [ ! -L out_links/planted.svg ]
 check "nothing was written outside ($(ls -A elsewhere | tr '\n' ' '))" empty_dir elsewhere
 
+# --- require never follows a link out of the recipe's folder ----------------------------------------------
+mkdir -p req outside
+echo 'return { secret = "outside" }' >outside/secret.lua
+ln -s "$tmp/outside/secret.lua" req/cfg.lua
+recipe req/uses_link 'print(require("cfg").secret)'
+run_selfsim run req/uses_link.lua -o out_req -q
+check "require through a link out of the folder is refused (exit $code)" [ "$code" = 1 ]
+check "and says so ($(first_err))" grep -q "leads outside its folder" "$tmp/err"
+check "and prints nothing of the file" bash -c "! grep -q outside '$tmp/out'"
+
 # --- Nothing is written after the recipe ends -------------------------------------------------------------
 recipe late_ok 'setmetatable({}, { __gc = function() save(polyline { { 0, 0 }, { 1, 0 } }, "late.svg") end })'
 run_selfsim run late_ok.lua -o out_late -q
