@@ -5,8 +5,12 @@ JOBS       ?= $(shell nproc)
 PACKAGES   := cmake g++ make libopenvdb-dev libboost-iostreams-dev liblua5.4-dev libopenmesh-dev libvtk9-dev \
               libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev python3-vtk9 xvfb xauth libgl1-mesa-dri \
               libglx-mesa0 librsvg2-bin
+# Only `make fuzz` installs these (clang with libFuzzer and the sanitizer runtimes); `make test` never does.
+FUZZ_PACKAGES := clang-14 libclang-rt-14-dev
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 60
 
-.PHONY: deps build demo test sanitize bench clean
+.PHONY: deps build demo test sanitize bench fuzz clean
 
 # Installs only what is missing: one dpkg query when everything is there.
 deps:
@@ -43,6 +47,15 @@ bench: deps
 	cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DSELFSIM_BENCH=ON
 	cmake --build build-bench -j $(JOBS)
 	build-bench/bench/selfsim_bench
+
+# libFuzzer targets (fuzz/README.md) built with clang in $(FUZZ_BUILD)/, never in the main build: replays
+# fuzz/regressions/, fuzzes each target for FUZZ_SECONDS, and turns each new crash or hang into a
+# regression input. Fails if any regression input still fails or anything new was found.
+fuzz:
+	@$(MAKE) --no-print-directory deps PACKAGES="$(PACKAGES) $(FUZZ_PACKAGES)"
+	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 -DSELFSIM_FUZZ=ON
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzz_all
+	FUZZ_SECONDS=$(FUZZ_SECONDS) fuzz/run.sh $(FUZZ_BUILD)
 
 clean:
 	rm -rf $(BUILD) $(SANITIZE_BUILD) build-bench out

@@ -16,6 +16,7 @@ std::string num(double v) {
 }
 
 bool close(double a, double b, double tol) {
+  if (a == b) return true;  // equal infinities too, whose difference is NaN
   if (std::isnan(a) || std::isnan(b)) return std::isnan(a) && std::isnan(b);
   return std::abs(a - b) <= tol * std::max({1.0, std::abs(a), std::abs(b)});
 }

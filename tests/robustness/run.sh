@@ -10,23 +10,34 @@ recipe() { printf '%s\n' "$2" >"$1.lua"; }
 empty_dir() { [ ! -e "$1" ] || [ -z "$(ls -A "$1")" ]; }
 
 # --- Signals: SIGTERM and SIGINT stop a kernel, a writer, a finalizer and the closing state ---------------
-recipe big 'local c = require("selfsim.curves").dragon():curve(24); save(c, "big.vtp"); save(c, "big.svg")'
-recipe gc_loop 'setmetatable({}, { __gc = function() while true do end end }); collectgarbage()'
-recipe close_loop 'setmetatable({}, { __gc = function() while true do end end })'
-recipe c_call 'print(("a"):rep(3e5):find(".-b"))'
+# Each recipe first saves started.svg, so the signal comes once the run is under way, however busy the
+# machine. The time bounds below tell "stops" from "hangs" (the promise is about a second); they are not
+# speed measurements.
+marker='save(polyline { { 0, 0 }, { 1, 0 } }, "started.svg")'
+recipe big "$marker"'; local c = require("selfsim.curves").dragon():curve(24); save(c, "big.vtp"); save(c, "big.svg")'
+recipe gc_loop "$marker"'; setmetatable({}, { __gc = function() while true do end end }); collectgarbage()'
+recipe close_loop "$marker"'; setmetatable({}, { __gc = function() while true do end end })'
+recipe c_call "$marker"'; print(("a"):rep(3e5):find(".-b"))'
+# whole_files DIR: no temporary (dot-file) in DIR, and every file there reads back whole.
+whole_files() {
+  [ -z "$(ls -A "$1" 2>/dev/null | grep '^\.')" ] || return 1
+  local f
+  for f in "$1"/*; do [ -e "$f" ] || continue; "$selfsim" info "$f" >/dev/null 2>&1 || return 1; done
+}
 for sig in TERM INT HUP; do
   for r in big gc_loop close_loop c_call; do
     "$selfsim" run $r.lua -o "out_$r$sig" -q 2>"err_$r$sig" &
     pid=$!
-    sleep 0.4
+    for _ in $(seq 200); do [ -e "out_$r$sig/started.svg" ] && break; sleep 0.05; done
+    sleep 0.2
     started=$(date +%s%N)
     kill -$sig $pid
     wait $pid
     code=$?
     ms=$(( ($(date +%s%N) - started) / 1000000 ))
     check "$r: SIG$sig exits 130 (got $code)" [ "$code" = 130 ]
-    check "$r: SIG$sig ends within 2 s (took $ms ms)" [ "$ms" -lt 2000 ]
-    check "$r: SIG$sig leaves no file ($(ls -A "out_$r$sig" 2>/dev/null | tr '\n' ' '))" empty_dir "out_$r$sig"
+    check "$r: SIG$sig ends, not hangs (took $ms ms)" [ "$ms" -lt 5000 ]
+    check "$r: SIG$sig leaves no partial file ($(ls -A "out_$r$sig" 2>/dev/null | tr '\n' ' '))" whole_files "out_$r$sig"
     check "$r: SIG$sig prints one line ($(head -c 200 "err_$r$sig"))" [ "$(wc -l <"err_$r$sig")" = 1 ]
     check "$r: SIG$sig says interrupted" grep -q "interrupted" "err_$r$sig"
   done
@@ -41,9 +52,10 @@ for r in pcall_loop xpcall_loop wrap_loop gc_loop close_loop c_call big; do
   run_selfsim run $r.lua -o "out_t$r" -q --timeout 0.5
   ms=$(( ($(date +%s%N) - started) / 1000000 ))
   check "$r: --timeout exits 1 (got $code)" [ "$code" = 1 ]
-  check "$r: --timeout 0.5 ends within 2 s (took $ms ms)" [ "$ms" -lt 2000 ]
+  check "$r: --timeout 0.5 ends, not hangs (took $ms ms)" [ "$ms" -lt 5000 ]
   check "$r: --timeout message ($(first_err))" grep -q "stopped: --timeout of 0.5 s reached" "$tmp/err"
-  check "$r: --timeout leaves no file" empty_dir "out_t$r"
+  # a file finished before the deadline may stay; nothing partial or temporary may
+  check "$r: --timeout leaves no partial file ($(ls -A "out_t$r" 2>/dev/null | tr '\n' ' '))" whole_files "out_t$r"
 done
 
 # --- SIGKILL mid-write leaves no partial file, and no temporary ------------------------------------------

@@ -1,0 +1,12 @@
+local n = param("scale", 1.0) + (param("flag", false) and 1 or 0)
+local name = param("name", "curve")
+local t = setmetatable({}, { __gc = function(o) print("collected", o) end })
+t = nil
+collectgarbage()
+local co = coroutine.wrap(function()
+  coroutine.yield(lsystem { axiom = "F", rules = { F = "F+F-F" }, angle = 90 }:curve(3))
+end)
+print(co(), n, name)
+print(pcall(lsystem, { axiom = "F", anlge = 90 }))
+print(pcall(save, polyline { { 0, 0 }, { 1, 0 } }, "../x.svg"))
+error({ code = 1 })
