@@ -15,6 +15,8 @@ std::string gib(double bytes) {
   return buf;
 }
 
+bool fits(const LuaMemory& m, double more) { return static_cast<double>(m.used) + more <= m.limit; }
+
 void note_refusal(LuaMemory& m, std::size_t bytes, bool over_limit) {
   m.refused = bytes;
   m.over_limit = over_limit;
@@ -36,7 +38,7 @@ void* limited_alloc(void* ud, void* ptr, std::size_t osize, std::size_t nsize) n
     m.used -= old;
     return nullptr;
   }
-  if (nsize > old && static_cast<double>(m.used - old + nsize) > m.limit) {
+  if (nsize > old && !fits(m, static_cast<double>(nsize - old))) {
     note_refusal(m, nsize, true);
     return nullptr;
   }
@@ -50,11 +52,22 @@ void* limited_alloc(void* ud, void* ptr, std::size_t osize, std::size_t nsize) n
   return block;
 }
 
-std::string memory_message(const LuaMemory& m) {
-  if (m.over_limit)
-    return m.where + "out of memory: the recipe's Lua strings and tables would need more than --max-memory of " + gib(m.limit) +
-           " (raise it with --max-memory)";
-  return m.where + "out of memory: the system refused " + gib(static_cast<double>(m.refused)) + " for the recipe's Lua values";
+bool hold_external(LuaMemory& m, double bytes) {
+  if (bytes > 0 && !fits(m, bytes)) {
+    note_refusal(m, static_cast<std::size_t>(bytes), true);
+    return false;
+  }
+  m.used = static_cast<std::size_t>(static_cast<double>(m.used) + bytes);
+  return true;
 }
+
+std::string memory_reason(const LuaMemory& m) {
+  if (m.over_limit)
+    return "out of memory: the recipe's Lua strings and tables would need more than --max-memory of " + gib(m.limit) +
+           " (raise it with --max-memory)";
+  return "out of memory: the system refused " + gib(static_cast<double>(m.refused)) + " for the recipe's Lua values";
+}
+
+std::string memory_message(const LuaMemory& m) { return m.where + memory_reason(m); }
 
 }  // namespace selfsim::interp

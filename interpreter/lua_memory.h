@@ -23,7 +23,13 @@ struct LuaMemory {
 // The lua_Alloc for a state whose ud is a LuaMemory.
 void* limited_alloc(void* ud, void* ptr, std::size_t osize, std::size_t nsize) noexcept;
 
-// "recipe.lua:12: out of memory: ..." for the last refusal, naming the flag that raises the limit.
+// Counts `bytes` of the recipe's C++ data (a grammar's rules) against the same limit, or releases them when
+// negative. Returns false, counting nothing, when they do not fit.
+bool hold_external(LuaMemory& m, double bytes);
+
+// "out of memory: ..." for the last refusal, naming the flag that raises the limit; memory_message puts
+// the recipe line of the refusal in front.
+std::string memory_reason(const LuaMemory& m);
 std::string memory_message(const LuaMemory& m);
 
 }  // namespace selfsim::interp

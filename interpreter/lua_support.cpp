@@ -85,13 +85,7 @@ PointBudget run_budget(lua_State* L) { return RunContext::of(L).budget(); }
 
 void hold_memory(lua_State* L, double bytes) {
   LuaMemory& m = RunContext::of(L).memory;
-  if (bytes > 0 && static_cast<double>(m.used) + bytes > m.limit) {
-    m.over_limit = true;
-    m.refused = static_cast<std::size_t>(bytes);
-    m.where = recipe_where(L);
-    throw Error(memory_message(m).substr(m.where.size()));
-  }
-  m.used = static_cast<std::size_t>(static_cast<double>(m.used) + bytes);
+  if (!hold_external(m, bytes)) throw Error(memory_reason(m));  // call_kernel adds the recipe line
 }
 
 bool run_has_ended(lua_State* L) { return RunContext::of(L).ended; }

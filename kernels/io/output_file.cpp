@@ -121,13 +121,19 @@ void OutputFile::flush() {
   buffer_.clear();
 }
 
-// Gives the anonymous file a fresh name beside the target (through /proc, which needs no privilege).
-void OutputFile::name_temporary() {
+// Links the anonymous file under `name` in the folder (through /proc, which needs no privilege); fails
+// with EEXIST if the name is taken.
+bool OutputFile::link_as(const std::string& name) {
   const std::string proc = "/proc/self/fd/" + std::to_string(fd_);
+  return ::linkat(AT_FDCWD, proc.c_str(), dir_, name.c_str(), AT_SYMLINK_FOLLOW) == 0;
+}
+
+// Gives the anonymous file a fresh name beside the target.
+void OutputFile::name_temporary() {
   for (int attempt = 0; attempt < 100; ++attempt) {
     const std::string name = temporary_name(leaf_);
     track(dir_, name);
-    if (::linkat(AT_FDCWD, proc.c_str(), dir_, name.c_str(), AT_SYMLINK_FOLLOW) == 0) {
+    if (link_as(name)) {
       temporary_ = name;
       return;
     }
@@ -144,8 +150,7 @@ void OutputFile::commit() {
     // A new file is linked straight under its name: nothing is ever visible but the whole file. Only a file
     // replacing an older one needs a named step (link, then rename over the old one): a SIGKILL in that
     // instant leaves the dot-named temporary.
-    const std::string proc = "/proc/self/fd/" + std::to_string(fd_);
-    if (::linkat(AT_FDCWD, proc.c_str(), dir_, leaf_.c_str(), AT_SYMLINK_FOLLOW) == 0) {
+    if (link_as(leaf_)) {
       committed_ = true;
       return;
     }

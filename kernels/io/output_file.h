@@ -37,6 +37,7 @@ class OutputFile {
 
  private:
   void flush();
+  bool link_as(const std::string& name);
   void name_temporary();
 
   int dir_ = -1, fd_ = -1;

@@ -35,7 +35,6 @@ std::string local(const std::string& name) {
   const std::size_t colon = name.rfind(':');
   return colon == std::string::npos ? name : name.substr(colon + 1);
 }
-std::string shown(const std::string& s) { return one_line(s.size() > 40 ? s.substr(0, 40) + "..." : s); }
 
 // The numbers of one d="..." attribute, parsed as they stream past.
 class PathData {

@@ -23,11 +23,6 @@ constexpr std::size_t max_arrays = 100000;
 
 bool space(int c) { return xml_space(c); }
 
-std::string shown(std::string_view v) {
-  std::string s = one_line(std::string(v.substr(0, 40)));
-  return v.size() > 40 ? s + "..." : s;
-}
-
 // A plain non-negative decimal ("26", not "-5", "1e15", "0x10" or "+3"); surrounding blanks allowed.
 bool plain_count(std::string_view s, std::uint64_t max, std::uint64_t& out) {
   while (!s.empty() && space(s.front())) s.remove_prefix(1);

@@ -10,11 +10,6 @@ namespace {
 
 constexpr std::size_t max_tag_bytes = std::size_t{1} << 16;
 
-std::string shown(std::string_view v) {
-  std::string s = one_line(std::string(v.substr(0, 40)));
-  return v.size() > 40 ? s + "..." : s;
-}
-
 }  // namespace
 
 const std::string* XmlTag::find(std::string_view key) const {

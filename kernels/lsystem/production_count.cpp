@@ -46,12 +46,6 @@ SymbolWeights symbol_weights(const Grammar& g, Weight weight) {
   return weights_of([&](char s) { return g.draws(s) ? 1.0 : 0.0; });
 }
 
-SymbolWeights per_symbol_counts(const Grammar& g, int depth, Weight weight) {
-  SymbolWeights w = symbol_weights(g, weight);
-  for (int d = 1; d <= depth; ++d) rewrite_weights(g, w);
-  return w;
-}
-
 LevelCounts predict_counts(const Grammar& g, int level, Progress& progress) {
   SymbolWeights symbols = symbol_weights(g, Weight::Symbols), segments = symbol_weights(g, Weight::Segments);
   SymbolWeights breaks = weights_of([&](char s) { return s == ']' || g.moves(s) ? 1.0 : 0.0; });

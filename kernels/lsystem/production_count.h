@@ -28,10 +28,9 @@ LevelCounts predict_counts(const Grammar& g, int level, Progress& progress = no_
 using SymbolWeights = std::array<double, 256>;
 void rewrite_weights(const Grammar& g, SymbolWeights& w);
 
-// What each single symbol becomes after `depth` rewriting steps: its number of symbols, or of drawn
-// segments. Indexed by symbol byte.
+// Each single symbol's own weight before any rewriting: 1 for every symbol, or 1 for those that draw.
+// rewrite_weights then gives what each symbol becomes after one more step. Indexed by symbol byte.
 enum class Weight { Symbols, Segments };
 SymbolWeights symbol_weights(const Grammar& g, Weight weight);
-SymbolWeights per_symbol_counts(const Grammar& g, int depth, Weight weight);
 
 }  // namespace selfsim::lsystem

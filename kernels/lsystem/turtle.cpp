@@ -159,7 +159,7 @@ void curve_into(const Grammar& g, const CurveOptions& opt, Progress& progress, P
   out.points.clear();
   out.path_ends.clear();
   out.level = opt.level;
-  out.points.reserve(static_cast<std::size_t>(std::min(counts.max_points(), opt.budget.left())));
+  out.points.reserve(static_cast<std::size_t>(counts.max_points()));  // within the budget: checked above
   advise_huge_pages(out.points);
   progress.start("L-system");
 
