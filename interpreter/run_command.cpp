@@ -2,7 +2,7 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
-#include <regex>
+#include <string_view>
 
 #include "interpreter/bindings.h"
 #include "interpreter/commands.h"
@@ -52,6 +52,16 @@ int message_handler(lua_State* L) {
   return 1;
 }
 
+// True when text starts with "FILE:LINE: ", as Lua's located messages do.
+bool starts_with_location(std::string_view text) {
+  const std::size_t colon = text.find(':');
+  if (colon == 0 || colon == std::string_view::npos || text.substr(0, colon).find_first_of(" \t") != std::string_view::npos)
+    return false;
+  std::size_t i = colon + 1;
+  while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i;
+  return i > colon + 1 && text.substr(i, 2) == ": ";
+}
+
 // The text of a failed pcall as one line that starts with a recipe location.
 std::string failure_message(lua_State* L, RunContext& run, int status) {
   if (status == LUA_ERRMEM) return memory_message(run.memory);  // before anything that may allocate
@@ -64,8 +74,7 @@ std::string failure_message(lua_State* L, RunContext& run, int status) {
   // Lua's own messages end where the recipe's text does; a long error string is cut after 2000 bytes.
   std::string message = shown_text(std::string_view(text, n), 2000);
   // Lua adds no location to some errors ("error in error handling", error("x", 0)): add the recipe's.
-  static const std::regex located(R"(^[^:\s][^:]*:[0-9]+: )");
-  if (!std::regex_search(message, located)) message = where + message;
+  if (!starts_with_location(message)) message = where + message;
   return message;
 }
 
