@@ -12,7 +12,9 @@ using namespace selfsim;
 namespace {
 
 lsystem::Grammar dragon() { return {.axiom = "FX", .rules = {{'X', "X-YF"}, {'Y', "FX+Y"}}, .angle = 90}; }
-lsystem::Grammar koch_snowflake() { return {.axiom = "F++F++F", .rules = {{'F', "F-F++F-F"}}, .angle = 60, .shrink = 1.0 / 3}; }
+lsystem::Grammar koch_snowflake() {
+  return {.axiom = "F++F++F", .rules = {{'F', "F-F++F-F"}}, .angle = 60, .shrink = 1.0 / 3};
+}
 
 // The baseline: rewrite whole strings level by level, then walk the final string with a turtle.
 std::vector<Vec2> string_then_turtle(const lsystem::Grammar& g, int level) {
@@ -21,8 +23,10 @@ std::vector<Vec2> string_then_turtle(const lsystem::Grammar& g, int level) {
     std::string next;
     for (char c : s) {
       auto it = g.rules.find(c);
-      if (it == g.rules.end()) next += c;
-      else next += it->second;
+      if (it == g.rules.end())
+        next += c;
+      else
+        next += it->second;
     }
     s.swap(next);
   }
@@ -48,7 +52,8 @@ void streaming(benchmark::State& state, lsystem::Grammar g) {
     segments = c.segments();
     benchmark::DoNotOptimize(c.points.data());
   }
-  state.counters["segments/s"] = benchmark::Counter(static_cast<double>(segments) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["segments/s"] =
+      benchmark::Counter(static_cast<double>(segments) * state.iterations(), benchmark::Counter::kIsRate);
 }
 
 // Warm: the output array is reused, so this is the kernel's own speed without the operating system's
@@ -61,7 +66,8 @@ void streaming_warm(benchmark::State& state, lsystem::Grammar g) {
     lsystem::curve_into(g, {.level = level}, no_progress(), c);
     benchmark::DoNotOptimize(c.points.data());
   }
-  state.counters["segments/s"] = benchmark::Counter(static_cast<double>(c.segments()) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["segments/s"] =
+      benchmark::Counter(static_cast<double>(c.segments()) * state.iterations(), benchmark::Counter::kIsRate);
 }
 
 void baseline(benchmark::State& state, lsystem::Grammar g) {
@@ -72,7 +78,8 @@ void baseline(benchmark::State& state, lsystem::Grammar g) {
     segments = pts.size() - 1;
     benchmark::DoNotOptimize(pts.data());
   }
-  state.counters["segments/s"] = benchmark::Counter(static_cast<double>(segments) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["segments/s"] =
+      benchmark::Counter(static_cast<double>(segments) * state.iterations(), benchmark::Counter::kIsRate);
 }
 
 }  // namespace

@@ -9,10 +9,10 @@
 //   - for small levels, its points are those of a plain turtle walking expand_string's string (the
 //     streamed, lattice-block expansion against the obvious one).
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -29,7 +29,7 @@ namespace {
 using namespace selfsim;
 using fuzz::require;
 
-constexpr double max_reference = 2e5;    // symbols of the reference string
+constexpr double max_reference = 2e5;  // symbols of the reference string
 
 // The obvious turtle over the expanded string, unit steps, in the kernel's conventions: draw beats move,
 // which beats '[' / ']', which beat turns; '[' keeps the current path, ']' and moves end it.
@@ -77,7 +77,8 @@ bool moderate_turns(const lsystem::Grammar& g) {
 
 void check_curve(const lsystem::Grammar& g, const lsystem::CurveOptions& opt, const lsystem::LevelCounts& counts,
                  const Polyline& c) {
-  require(c.level == opt.level, "curve level " + std::to_string(c.level) + " != requested " + std::to_string(opt.level));
+  require(c.level == opt.level,
+          "curve level " + std::to_string(c.level) + " != requested " + std::to_string(opt.level));
   require(c.finite(), "curve has non-finite points");
   std::size_t begin = 0;
   for (std::size_t end : c.path_ends) {
@@ -91,8 +92,9 @@ void check_curve(const lsystem::Grammar& g, const lsystem::CurveOptions& opt, co
   require(static_cast<double>(c.points.size()) <= counts.max_points(),
           "points " + std::to_string(c.points.size()) + " > predicted bound " + std::to_string(counts.max_points()));
   // --max-points: "refuse, before any work, a curve predicted to need more points" (README).
-  require(static_cast<double>(c.points.size()) <= opt.budget.limit,
-          "curve of " + std::to_string(c.points.size()) + " points accepted under a budget of " + std::to_string(opt.budget.limit));
+  require(static_cast<double>(c.points.size()) <= opt.budget.limit, "curve of " + std::to_string(c.points.size()) +
+                                                                        " points accepted under a budget of " +
+                                                                        std::to_string(opt.budget.limit));
   (void)g;
 }
 
@@ -109,8 +111,9 @@ void check_against_reference(const lsystem::Grammar& g, int level, const Polylin
   if (!reference_turtle(g, s, g.start_angle(level), ref)) {
     fuzz::finding("the kernel drew a curve whose string pops an empty turtle stack");
   }
-  require(ref.path_ends == streamed.path_ends, "paths differ from the reference turtle's (" + std::to_string(ref.paths()) +
-                                                   " vs " + std::to_string(streamed.paths()) + " paths)");
+  require(ref.path_ends == streamed.path_ends, "paths differ from the reference turtle's (" +
+                                                   std::to_string(ref.paths()) + " vs " +
+                                                   std::to_string(streamed.paths()) + " paths)");
   const double scale = std::pow(g.shrink, level);
   const double m = static_cast<double>(ref.points.size());
   const double tol = (1e-9 + 1e-8 * m * m) * scale;
@@ -121,7 +124,8 @@ void check_against_reference(const lsystem::Grammar& g, int level, const Polylin
                     "), the reference turtle has (" + std::to_string(want.x) + ", " + std::to_string(want.y) + ")");
   }
   if (fuzz::env_flag("SELFSIM_FUZZ_VERBOSE"))
-    std::fprintf(stderr, "level %d: %zu points in %zu paths, same as the reference turtle\n", level, ref.points.size(), ref.paths());
+    std::fprintf(stderr, "level %d: %zu points in %zu paths, same as the reference turtle\n", level, ref.points.size(),
+                 ref.paths());
 }
 
 }  // namespace

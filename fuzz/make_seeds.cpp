@@ -61,7 +61,8 @@ int main(int argc, char** argv) {
   }
   const fs::path dir = argv[1];
   fs::create_directories(dir / "grammar");
-  for (const Seed& s : grammars) std::ofstream(dir / "grammar" / (std::string(s.name) + ".txt"), std::ios::binary) << s.text;
+  for (const Seed& s : grammars)
+    std::ofstream(dir / "grammar" / (std::string(s.name) + ".txt"), std::ios::binary) << s.text;
 
   struct File {
     const char* name;
@@ -72,7 +73,8 @@ int main(int argc, char** argv) {
   files.push_back({"dragon3", seed_curve("F", "F+F-", 90, 3, true), {}});
   files.push_back({"koch2", seed_curve("F", "F+F--F+F", 60, 2, true), {}});
   files.push_back({"branches", seed_curve("F", "F[+F]F[-F]", 30, 1, false), {.stroke = "black", .fill = "#a8dadc"}});
-  files.push_back({"square", Polyline::single({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}}, 0), {.stroke_width = 2, .size = 64}});
+  files.push_back(
+      {"square", Polyline::single({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}}, 0), {.stroke_width = 2, .size = 64}});
   for (const char* ext : {".vtp", ".svg"}) {
     const fs::path sub = dir / (ext + 1);
     fs::create_directories(sub);

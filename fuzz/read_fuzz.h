@@ -53,7 +53,8 @@ inline int read_one(const std::uint8_t* data, std::size_t size, const char* exte
     // quote anything in the reasons VTK or the header check give).
     const std::string own = "cannot read '" + file.string() + "': the VTK reader ";
     if (strict && message.substr(0, own.size()) == own)
-      for (const char* what : {"crashed (", "failed (exit status", "did not finish within", "was killed", "ran out of memory"})
+      for (const char* what :
+           {"crashed (", "failed (exit status", "did not finish within", "was killed", "ran out of memory"})
         if (message.substr(own.size()).starts_with(what))
           finding(std::string("check_vtp_header let through a file VTK cannot read: the VTK reader ") + what);
     return 0;
@@ -70,7 +71,8 @@ inline int read_one(const std::uint8_t* data, std::size_t size, const char* exte
   try {
     // What `selfsim diff` does: a file compared with itself has no differences (NaN matches NaN).
     const auto differences = analysis::dataset_diff(d, d, 1e-9);
-    require(differences.empty(), "dataset_diff of a dataset with itself: " + (differences.empty() ? "" : differences[0]));
+    require(differences.empty(),
+            "dataset_diff of a dataset with itself: " + (differences.empty() ? "" : differences[0]));
   } catch (...) {
     unexpected_exception("analysis::dataset_diff");
   }

@@ -23,10 +23,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <lua.hpp>
 #include <string>
 #include <thread>
-
-#include <lua.hpp>
 
 #include "fuzz/fuzz_support.h"
 #include "interpreter/bindings.h"
@@ -68,7 +67,9 @@ void check_and_clean(const fs::path& out_dir) {
   for (const auto& entry : fs::directory_iterator(root())) {
     const std::string name = entry.path().filename().string();
     if (name == "recipe") {
-      if (!fs::is_empty(entry.path())) fuzz::finding("a file was written in the recipe's folder: " + fs::directory_iterator(entry.path())->path().string());
+      if (!fs::is_empty(entry.path()))
+        fuzz::finding("a file was written in the recipe's folder: " +
+                      fs::directory_iterator(entry.path())->path().string());
     } else if (entry.path() != out_dir) {
       fuzz::finding("a file was written outside the output folder: " + entry.path().string());
     }
@@ -85,8 +86,10 @@ void watchdog() {
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
     const Clock::rep started = input_started.load();
     if (started != 0 && Clock::now() - Clock::time_point(Clock::duration(started)) > stall) {
-      std::fprintf(stderr, "FUZZ-WATCHDOG: the input did not stop within %lld s; selfsim run's watchdog would end the run here\n",
-                   static_cast<long long>(stall.count()));
+      std::fprintf(
+          stderr,
+          "FUZZ-WATCHDOG: the input did not stop within %lld s; selfsim run's watchdog would end the run here\n",
+          static_cast<long long>(stall.count()));
       std::fflush(stderr);
       std::_Exit(0);
     }
@@ -128,7 +131,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     status = luaL_loadbufferx(L, reinterpret_cast<const char*>(data), size, chunkname.c_str(), "t");
     if (status == LUA_OK) status = lua_pcall(L, 0, 0, 0);
     run.ended = true;  // as run_command: finalizers still to run at lua_close can no longer write
-    if (status != LUA_OK && status != LUA_ERRRUN && status != LUA_ERRMEM && status != LUA_ERRERR && status != LUA_ERRSYNTAX) {
+    if (status != LUA_OK && status != LUA_ERRRUN && status != LUA_ERRMEM && status != LUA_ERRERR &&
+        status != LUA_ERRSYNTAX) {
       const char* message = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : "(not a string)";
       fuzz::finding("lua_pcall returned status " + std::to_string(status) +
                     ": a C++ exception escaped a binding; message on the stack: " + message);

@@ -25,7 +25,8 @@ char symbol_key(lua_State* L, int index, const char* table) {
 // reported is the same every run), with the value on top.
 template <class F>
 void each_symbol(lua_State* L, const char* table, F&& f) {
-  if (lua_type(L, -1) != LUA_TTABLE) throw Error(std::string("option '") + table + "' must be a table, got " + describe(L, -1));
+  if (lua_type(L, -1) != LUA_TTABLE)
+    throw Error(std::string("option '") + table + "' must be a table, got " + describe(L, -1));
   const int n = push_sorted_keys(L, -1);
   for (int i = 1; i <= n; ++i) {
     lua_rawgeti(L, -1, i);
@@ -43,14 +44,15 @@ Grammar read_grammar(lua_State* L, int index) {
   if (!o.has("axiom")) throw Error("option 'axiom' is required");
   g.axiom = o.string("axiom", "");
   if (o.push("rules") != LUA_TNIL) {
-    each_symbol(L, "rules", [&](char s) {
-      g.rules[s] = text_value(L, -1, std::string("option 'rules': rule for '") + s + "'");
-    });
+    each_symbol(L, "rules",
+                [&](char s) { g.rules[s] = text_value(L, -1, std::string("option 'rules': rule for '") + s + "'"); });
   }
   lua_pop(L, 1);
   g.angle = o.number("angle", g.angle);
   if (o.push("angles") != LUA_TNIL)
-    each_symbol(L, "angles", [&](char s) { g.angles[s] = finite_number(L, -1, std::string("option 'angles' value for '") + s + "'"); });
+    each_symbol(L, "angles", [&](char s) {
+      g.angles[s] = finite_number(L, -1, std::string("option 'angles' value for '") + s + "'");
+    });
   lua_pop(L, 1);
   const int t = o.push("start_angle");
   if (t == LUA_TTABLE) {
@@ -80,7 +82,8 @@ int level_argument(lua_State* L, int index) {
   if (!lua_isinteger(L, index)) throw Error("level must be an integer, got " + describe(L, index));
   const lua_Integer n = lua_tointeger(L, index);
   if (n < 0 || n > lsystem::max_level)
-    throw Error("level must be an integer in [0, " + std::to_string(lsystem::max_level) + "], got " + std::to_string(n));
+    throw Error("level must be an integer in [0, " + std::to_string(lsystem::max_level) + "], got " +
+                std::to_string(n));
   return static_cast<int>(n);
 }
 
@@ -100,9 +103,9 @@ int grammar_curve(lua_State* L) {
       o.finish();
     }
     push_curve(L, with_budget(L, [&](const PointBudget& b) {
-      opt.budget = b;
-      return lsystem::curve(g, opt, run);
-    }));
+                 opt.budget = b;
+                 return lsystem::curve(g, opt, run);
+               }));
     run.finish_bar();
     return 1;
   });
@@ -123,8 +126,10 @@ int grammar_count(lua_State* L) {
   const Grammar& g = *held;
   return call_kernel(L, "count", [&] {
     const double n = lsystem::predict_counts(g, level_argument(L, 2), RunContext::of(L)).segments;
-    if (n < 9e15) lua_pushinteger(L, static_cast<lua_Integer>(n));
-    else lua_pushnumber(L, n);
+    if (n < 9e15)
+      lua_pushinteger(L, static_cast<lua_Integer>(n));
+    else
+      lua_pushnumber(L, n);
     return 1;
   });
 }

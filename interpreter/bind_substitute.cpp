@@ -19,9 +19,11 @@ std::vector<SegmentTransform> read_transforms(lua_State* L) {
   if (lua_type(L, -1) != LUA_TTABLE) throw Error("option 'transforms' must be a list of names, got " + describe(L, -1));
   for (lua_Integer i = 1; i <= static_cast<lua_Integer>(lua_rawlen(L, -1)); ++i) {
     lua_rawgeti(L, -1, i);
-    const std::string name = lua_type(L, -1) == LUA_TSTRING ? shown_text(text_value(L, -1, "option 'transforms'")) : describe(L, -1);
+    const std::string name =
+        lua_type(L, -1) == LUA_TSTRING ? shown_text(text_value(L, -1, "option 'transforms'")) : describe(L, -1);
     lua_pop(L, 1);
-    out.push_back(static_cast<SegmentTransform>(enum_index(name, transform_names, "transform", " (entry " + std::to_string(i) + ")")));
+    out.push_back(static_cast<SegmentTransform>(
+        enum_index(name, transform_names, "transform", " (entry " + std::to_string(i) + ")")));
   }
   return out;
 }
@@ -44,9 +46,9 @@ int make_substitute(lua_State* L) {
     lua_pop(L, 1);
     o.finish();
     push_curve(L, with_budget(L, [&](const PointBudget& b) {
-      opt.budget = b;
-      return substitute::substitute(path, generator, opt, run);
-    }));
+                 opt.budget = b;
+                 return substitute::substitute(path, generator, opt, run);
+               }));
     run.finish_bar();
     return 1;
   });

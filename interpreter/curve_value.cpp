@@ -23,7 +23,8 @@ void push_point(lua_State* L, Vec2 p) {
 // {x, y} at index, both finite numbers.
 Vec2 read_point(lua_State* L, int index, const std::string& what) {
   index = lua_absindex(L, index);
-  if (lua_type(L, index) != LUA_TTABLE || lua_rawlen(L, index) != 2) throw Error(what + " must be {x, y}, got " + describe(L, index));
+  if (lua_type(L, index) != LUA_TTABLE || lua_rawlen(L, index) != 2)
+    throw Error(what + " must be {x, y}, got " + describe(L, index));
   lua_rawgeti(L, index, 1);
   lua_rawgeti(L, index, 2);
   const Vec2 p{finite_number(L, -2, what + " x"), finite_number(L, -1, what + " y")};
@@ -33,7 +34,8 @@ Vec2 read_point(lua_State* L, int index, const std::string& what) {
 
 std::vector<Vec2> read_points(lua_State* L, int index, const std::string& what) {
   if (lua_type(L, index) != LUA_TTABLE)
-    throw Error((what.empty() ? "argument" : what) + " must be a curve or a table of {x, y} points, got " + describe(L, index));
+    throw Error((what.empty() ? "argument" : what) + " must be a curve or a table of {x, y} points, got " +
+                describe(L, index));
   std::vector<Vec2> pts;
   const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, index));
   check_budget(static_cast<double>(n), run_budget(L), "a table of points");  // before copying it
@@ -151,7 +153,8 @@ void push_curve(lua_State* L, Polyline&& c) {
   // Lua only sees the userdata's few bytes; tell its collector about big arrays, so that curves a recipe
   // has dropped are freed before the next big one instead of piling up. (Small curves are left to the
   // collector's own pace: a step per tiny curve costs time in proportion to the whole heap.)
-  if (bytes >= (std::size_t{1} << 20)) lua_gc(L, LUA_GCSTEP, static_cast<int>(std::min<std::size_t>(bytes / 1024, 1 << 30)));
+  if (bytes >= (std::size_t{1} << 20))
+    lua_gc(L, LUA_GCSTEP, static_cast<int>(std::min<std::size_t>(bytes / 1024, 1 << 30)));
 }
 
 Held<Polyline> test_curve(lua_State* L, int index) { return test_value<Polyline>(L, index, curve_type); }
@@ -162,8 +165,8 @@ Polyline to_polyline(lua_State* L, int index, const std::string& what) {
 }
 
 void open_curve(lua_State* L) {
-  static const luaL_Reg methods[] = {{"points", curve_points}, {"segments", curve_segments}, {"paths", curve_paths},
-                                     {"length", curve_length}, {"level", curve_level},       {"bbox", curve_bbox},
+  static const luaL_Reg methods[] = {{"points", curve_points}, {"segments", curve_segments},   {"paths", curve_paths},
+                                     {"length", curve_length}, {"level", curve_level},         {"bbox", curve_bbox},
                                      {"point", curve_point},   {"transform", curve_transform}, {nullptr, nullptr}};
   register_type<Polyline>(L, curve_type, methods, curve_tostring);
   lua_register(L, "polyline", [](lua_State* S) { return make_polyline(S, "polyline", false); });

@@ -59,8 +59,12 @@ int info_command(const std::string& file) {
       }
     std::printf("file: %s\npoints: %zu\ncells: %zu\n", file.c_str(), d.points.size(), d.cell_ends.size());
     std::printf("bbox: [%.9g, %.9g, %.9g] .. [%.9g, %.9g, %.9g]\n", lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
-    for (const auto& [name, f] : d.point_fields) std::printf("point field: %s (%d component%s)\n", shown_text(name, 200).c_str(), f.components, f.components == 1 ? "" : "s");
-    for (const auto& [name, f] : d.cell_fields) std::printf("cell field: %s (%d component%s)\n", shown_text(name, 200).c_str(), f.components, f.components == 1 ? "" : "s");
+    for (const auto& [name, f] : d.point_fields)
+      std::printf("point field: %s (%d component%s)\n", shown_text(name, 200).c_str(), f.components,
+                  f.components == 1 ? "" : "s");
+    for (const auto& [name, f] : d.cell_fields)
+      std::printf("cell field: %s (%d component%s)\n", shown_text(name, 200).c_str(), f.components,
+                  f.components == 1 ? "" : "s");
     return 0;
   } catch (...) {
     return report("info");

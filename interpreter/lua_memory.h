@@ -3,21 +3,20 @@
 // Lua calls no message handler for memory errors.
 #pragma once
 
-#include <lua.hpp>
-
 #include <cstddef>
+#include <lua.hpp>
 #include <string>
 
 namespace selfsim::interp {
 
 struct LuaMemory {
-  double limit = 0;          // bytes
-  std::size_t used = 0;      // bytes held by the Lua state now
-  lua_State* L = nullptr;    // set once the state exists, to read the recipe line of a refusal
-  std::string library;       // "@<scripts dir>": frames skipped when naming the recipe line
-  std::string where;         // "recipe.lua:12: " of the last refusal
-  std::size_t refused = 0;   // bytes of the last refused request
-  bool over_limit = false;   // the last refusal was the limit's (else the system's)
+  double limit = 0;         // bytes
+  std::size_t used = 0;     // bytes held by the Lua state now
+  lua_State* L = nullptr;   // set once the state exists, to read the recipe line of a refusal
+  std::string library;      // "@<scripts dir>": frames skipped when naming the recipe line
+  std::string where;        // "recipe.lua:12: " of the last refusal
+  std::size_t refused = 0;  // bytes of the last refused request
+  bool over_limit = false;  // the last refusal was the limit's (else the system's)
 };
 
 // The lua_Alloc for a state whose ud is a LuaMemory.

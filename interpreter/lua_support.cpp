@@ -39,9 +39,12 @@ std::string describe(lua_State* L, int index) {
       const char* text = lua_tolstring(L, index, &n);
       return "'" + shown_text(std::string_view(text, n)) + "'";
     }
-    case LUA_TNIL: return "nil";
-    case LUA_TNONE: return "nothing";
-    case LUA_TBOOLEAN: return lua_toboolean(L, index) ? "true" : "false";
+    case LUA_TNIL:
+      return "nil";
+    case LUA_TNONE:
+      return "nothing";
+    case LUA_TBOOLEAN:
+      return lua_toboolean(L, index) ? "true" : "false";
     default: {
       const char* name = luaL_typename(L, index);
       if (luaL_getmetafield(L, index, "__name") == LUA_TSTRING) {
@@ -63,12 +66,14 @@ std::string shown_text(std::string_view text, std::size_t max_bytes) {
   std::string out;
   for (std::size_t i = 0; i < text.size() && out.size() < max_bytes; ++i) {
     const auto c = static_cast<unsigned char>(text[i]);
-    if (c == '\n') out += "\\n";
+    if (c == '\n')
+      out += "\\n";
     else if (c < 32 || c == 127) {
       char buf[8];
       std::snprintf(buf, sizeof buf, "\\x%02x", c);
       out += buf;
-    } else out += static_cast<char>(c);
+    } else
+      out += static_cast<char>(c);
     if (out.size() >= max_bytes && i + 1 < text.size()) out += "... (" + std::to_string(text.size()) + " bytes)";
   }
   return out;
@@ -143,7 +148,8 @@ int push_sorted_keys(lua_State* L, int table) {
         k.rank = 2;
         k.x = lua_toboolean(L, -1);
         break;
-      default: break;
+      default:
+        break;
     }
     order.push_back(k);
   }

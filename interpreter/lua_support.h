@@ -3,7 +3,6 @@
 #pragma once
 
 #include <lua.hpp>
-
 #include <memory>
 #include <new>
 #include <string>
@@ -54,7 +53,8 @@ int call_kernel(lua_State* L, const char* fn, Body&& body) {
     try {
       // Finalizers may run after the recipe has returned or failed (while the state closes, Lua no longer
       // finalizes new values): nothing is made or written then.
-      if (run_has_ended(L)) throw Error("the recipe has ended: nothing more is made or written (called from a finalizer?)");
+      if (run_has_ended(L))
+        throw Error("the recipe has ended: nothing more is made or written (called from a finalizer?)");
       return std::forward<Body>(body)();
     } catch (const Cancelled&) {
       message = cancel_message(L);
@@ -139,7 +139,8 @@ Held<T> check_self(lua_State* L, const char* type, const char* method) {
     std::string message;
     try {
       if (Held<T> v = test_value<T>(L, 1, type)) return v;
-      message = "expected a " + type_word(type) + " before ':' (write value:" + method + "(...)), got " + describe(L, 1);
+      message =
+          "expected a " + type_word(type) + " before ':' (write value:" + method + "(...)), got " + describe(L, 1);
     } catch (const Error& e) {
       message = e.what();
     }
@@ -156,15 +157,18 @@ void register_type(lua_State* L, const char* type, const luaL_Reg* methods, lua_
   luaL_newmetatable(L, type);
   lua_pushstring(L, type);
   // Type-checked and idempotent: only a live Box of this type is emptied, once.
-  lua_pushcclosure(L, [](lua_State* S) {
-    auto* box = static_cast<Box<T>*>(luaL_testudata(S, 1, lua_tostring(S, lua_upvalueindex(1))));
-    if (box != nullptr && box->value) {
-      box->value.reset();
-      hold_points(S, -box->points);
-      hold_memory(S, -static_cast<double>(box->bytes));
-    }
-    return 0;
-  }, 1);
+  lua_pushcclosure(
+      L,
+      [](lua_State* S) {
+        auto* box = static_cast<Box<T>*>(luaL_testudata(S, 1, lua_tostring(S, lua_upvalueindex(1))));
+        if (box != nullptr && box->value) {
+          box->value.reset();
+          hold_points(S, -box->points);
+          hold_memory(S, -static_cast<double>(box->bytes));
+        }
+        return 0;
+      },
+      1);
   lua_setfield(L, -2, "__gc");
   lua_pushcfunction(L, tostring);
   lua_setfield(L, -2, "__tostring");

@@ -154,7 +154,8 @@ void Options::finish() {
   if (unknown.empty()) return;
   const std::vector<std::string> known(read_.begin(), read_.end());
   const std::string near = suggestion(unknown.front(), known);
-  throw Error("unknown option '" + shown_text(unknown.front()) + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)") +
+  throw Error("unknown option '" + shown_text(unknown.front()) + "'" +
+              (near.empty() ? "" : " (did you mean '" + near + "'?)") +
               (unknown.size() > 1 ? " (and " + std::to_string(unknown.size() - 1) + " more unknown)" : ""));
 }
 

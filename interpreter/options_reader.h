@@ -5,7 +5,6 @@
 #pragma once
 
 #include <lua.hpp>
-
 #include <set>
 #include <string>
 #include <vector>

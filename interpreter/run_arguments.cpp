@@ -4,15 +4,16 @@
 #include <cmath>
 
 #include "interpreter/commands.h"
-#include "kernels/geom/count_text.h"
 #include "interpreter/parse_text.h"
+#include "kernels/geom/count_text.h"
 
 namespace selfsim::interp {
 
 double number_argument(const std::string& flag, const std::string& text, double lo, double hi) {
   const auto v = parse_text<double>(text);
   if (!v || *v < lo || *v > hi)
-    throw UsageError(flag + " expects a number in [" + count_text(lo) + ", " + count_text(hi) + "], got '" + text + "'");
+    throw UsageError(flag + " expects a number in [" + count_text(lo) + ", " + count_text(hi) + "], got '" + text +
+                     "'");
   return *v;
 }
 
@@ -21,11 +22,13 @@ namespace {
 // A size in bytes with an optional binary suffix: 512M, 8G, 1T, or plain bytes.
 double size_argument(const std::string& flag, const std::string& text) {
   const std::string units = "KMGT";
-  const auto u = text.empty() ? std::string::npos : units.find(static_cast<char>(std::toupper(static_cast<unsigned char>(text.back()))));
+  const auto u = text.empty() ? std::string::npos
+                              : units.find(static_cast<char>(std::toupper(static_cast<unsigned char>(text.back()))));
   const double scale = u == std::string::npos ? 1 : std::ldexp(1.0, 10 * (static_cast<int>(u) + 1));
   const auto v = parse_text<double>(u == std::string::npos ? text : text.substr(0, text.size() - 1));
   if (!v || *v * scale < 16.0 * (1 << 20) || *v * scale > std::ldexp(1.0, 50))
-    throw UsageError(flag + " expects a size from 16M to 1024T (bytes, or with a K, M, G or T suffix), got '" + text + "'");
+    throw UsageError(flag + " expects a size from 16M to 1024T (bytes, or with a K, M, G or T suffix), got '" + text +
+                     "'");
   return *v * scale;
 }
 
@@ -43,24 +46,28 @@ RunConfig parse_run_arguments(const std::vector<std::string>& args) {
     if (a == "-o" || a == "--output") {
       c.out_dir = value();
       if (c.out_dir.empty()) throw UsageError(a + " expects a folder name, got ''");
-    }
-    else if (a == "--set") {
+    } else if (a == "--set") {
       const std::string& kv = value();
       const auto eq = kv.find('=');
       if (eq == std::string::npos || eq == 0) throw UsageError("--set expects key=value, got '" + kv + "'");
       c.sets[kv.substr(0, eq)] = kv.substr(eq + 1);
-    } else if (a == "--max-points") c.max_points = std::floor(number_argument(a, value(), 1, highest_max_points));
-    else if (a == "--max-memory") c.max_memory = size_argument(a, value());
-    else if (a == "--timeout") c.timeout = number_argument(a, value(), 0, 1e9);
+    } else if (a == "--max-points")
+      c.max_points = std::floor(number_argument(a, value(), 1, highest_max_points));
+    else if (a == "--max-memory")
+      c.max_memory = size_argument(a, value());
+    else if (a == "--timeout")
+      c.timeout = number_argument(a, value(), 0, 1e9);
     else if (a == "--seed") {
       const std::string& text = value();
       const auto seed = parse_text<long long>(text);
       if (!seed || *seed < 0) throw UsageError("--seed expects a whole number in [0, 2^63), got '" + text + "'");
       c.seed = *seed;
-    }
-    else if (a == "-q" || a == "--quiet") c.quiet = true;
-    else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "' for run");
-    else if (have_recipe) throw UsageError("run takes one recipe, got '" + c.recipe.string() + "' and '" + a + "'");
+    } else if (a == "-q" || a == "--quiet")
+      c.quiet = true;
+    else if (!a.empty() && a[0] == '-')
+      throw UsageError("unknown option '" + a + "' for run");
+    else if (have_recipe)
+      throw UsageError("run takes one recipe, got '" + c.recipe.string() + "' and '" + a + "'");
     else {
       c.recipe = a;
       have_recipe = true;

@@ -55,7 +55,8 @@ int message_handler(lua_State* L) {
 // True when text starts with "FILE:LINE: ", as Lua's located messages do.
 bool starts_with_location(std::string_view text) {
   const std::size_t colon = text.find(':');
-  if (colon == 0 || colon == std::string_view::npos || text.substr(0, colon).find_first_of(" \t") != std::string_view::npos)
+  if (colon == 0 || colon == std::string_view::npos ||
+      text.substr(0, colon).find_first_of(" \t") != std::string_view::npos)
     return false;
   std::size_t i = colon + 1;
   while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i;
@@ -83,7 +84,8 @@ std::string failure_message(lua_State* L, RunContext& run, int status) {
 int run_command(const RunConfig& config) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(config.recipe, ec))
-    throw UsageError("cannot open recipe '" + config.recipe.string() + "'" + (ec ? ": " + ec.message() : std::string()));
+    throw UsageError("cannot open recipe '" + config.recipe.string() + "'" +
+                     (ec ? ": " + ec.message() : std::string()));
   RunContext run(config);
   run.scripts_dir = find_scripts_dir();
   for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, on_interrupt);  // stop cleanly: no partial files
@@ -109,8 +111,8 @@ int run_command(const RunConfig& config) {
   } else {
     for (const auto& [key, value] : config.sets)
       if (!run.used_params.contains(key))
-        std::fprintf(stderr, "selfsim: warning: --set %s=%s was not read by any param() in the recipe\n", shown_text(key).c_str(),
-                     shown_text(value).c_str());
+        std::fprintf(stderr, "selfsim: warning: --set %s=%s was not read by any param() in the recipe\n",
+                     shown_text(key).c_str(), shown_text(value).c_str());
     if (!config.quiet)
       for (const auto& s : run.saved) std::printf("wrote %s\n", s.c_str());
   }

@@ -1,8 +1,9 @@
 #include "interpreter/run_context.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
-#include <unistd.h>
 
 namespace selfsim::interp {
 
@@ -18,7 +19,10 @@ const char* const registry_key = "selfsim.RunContext";
 }
 
 RunContext::RunContext(RunConfig c)
-    : config(std::move(c)), started_(std::chrono::steady_clock::now()), task_started_(started_), tty_(::isatty(2) == 1) {}
+    : config(std::move(c)),
+      started_(std::chrono::steady_clock::now()),
+      task_started_(started_),
+      tty_(::isatty(2) == 1) {}
 
 void RunContext::start(const char* what) {
   finish_bar();
@@ -49,7 +53,8 @@ void RunContext::finish_bar() {
 
 std::string RunContext::stop_reason() const {
   if (interrupted.load()) return "interrupted";
-  if (config.timeout > 0 && std::chrono::steady_clock::now() - started_ > std::chrono::duration<double>(config.timeout)) {
+  if (config.timeout > 0 &&
+      std::chrono::steady_clock::now() - started_ > std::chrono::duration<double>(config.timeout)) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%g", config.timeout);
     return std::string("stopped: --timeout of ") + buf + " s reached";

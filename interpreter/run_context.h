@@ -2,11 +2,10 @@
 // overrides, limits, and the progress/cancellation of the run. Lives in the Lua registry.
 #pragma once
 
-#include <lua.hpp>
-
 #include <atomic>
 #include <chrono>
 #include <filesystem>
+#include <lua.hpp>
 #include <map>
 #include <set>
 #include <string>

@@ -37,7 +37,8 @@ bool load_module(lua_State* L, const std::string& name) {
   lua_getfield(L, LUA_REGISTRYINDEX, loaded_key);
   const int cached = lua_getfield(L, -1, module);
   if (cached == LUA_TLIGHTUSERDATA) {  // the marker set below: the module is still loading
-    lua_pushfstring(L, "%srequire: module '%s' requires itself while loading (a require cycle)", recipe_where(L).c_str(), module);
+    lua_pushfstring(L, "%srequire: module '%s' requires itself while loading (a require cycle)",
+                    recipe_where(L).c_str(), module);
     return false;
   }
   if (cached != LUA_TNIL) return true;
@@ -56,8 +57,8 @@ bool load_module(lua_State* L, const std::string& name) {
     const auto home = std::filesystem::canonical(dir.empty() ? std::filesystem::path(".") : dir, dir_ec);
     const auto inside = std::mismatch(home.begin(), home.end(), real.begin(), real.end()).first == home.end();
     if (file_ec || dir_ec || !inside) {
-      lua_pushfstring(L, "%srequire: module '%s' (%s) leads outside its folder through a symbolic link", recipe_where(L).c_str(),
-                      module, file.c_str());
+      lua_pushfstring(L, "%srequire: module '%s' (%s) leads outside its folder through a symbolic link",
+                      recipe_where(L).c_str(), module, file.c_str());
       return false;
     }
     if (luaL_loadfilex(L, file.c_str(), "t") != LUA_OK) {
@@ -95,10 +96,12 @@ int sandbox_require(lua_State* L) {
     std::string message;
     std::size_t n = 0;
     const char* name = lua_type(L, 1) == LUA_TSTRING ? lua_tolstring(L, 1, &n) : nullptr;
-    if (name == nullptr) message = "module name must be a string, got " + describe(L, 1);
+    if (name == nullptr)
+      message = "module name must be a string, got " + describe(L, 1);
     else if (std::string_view(name, n).find('\0') != std::string_view::npos)
       message = "module name must not contain NUL bytes, got '" + shown_text(std::string_view(name, n)) + "'";
-    else loaded = load_module(L, std::string(name, n));
+    else
+      loaded = load_module(L, std::string(name, n));
     if (!message.empty()) push_error(L, "require", message);
   }  // strings freed before the error unwinds
   if (!loaded) return lua_error(L);
@@ -112,8 +115,9 @@ int unavailable(lua_State* L) {
   std::size_t n = 0;
   const char* text = lua_type(L, 2) == LUA_TSTRING ? lua_tolstring(L, 2, &n) : nullptr;
   lua_pushstring(L, text ? shown_text(std::string_view(text, n)).c_str() : "?");
-  return luaL_error(L, "%s.%s is not available in recipes: they cannot run programs or touch files (write outputs with save)",
-                    lua_tostring(L, -2), lua_tostring(L, -1));
+  return luaL_error(
+      L, "%s.%s is not available in recipes: they cannot run programs or touch files (write outputs with save)",
+      lua_tostring(L, -2), lua_tostring(L, -1));
 }
 
 // Pushes an empty table whose missing fields raise `unavailable`.
@@ -180,8 +184,9 @@ lua_State* new_sandbox(RunContext& run) {
   lua_atpanic(L, panic);
   static std::string pending_warning;
   lua_setwarnf(L, warning, &pending_warning);
-  const luaL_Reg libs[] = {{LUA_GNAME, luaopen_base},        {LUA_TABLIBNAME, luaopen_table}, {LUA_STRLIBNAME, luaopen_string},
-                           {LUA_MATHLIBNAME, luaopen_math},  {LUA_UTF8LIBNAME, luaopen_utf8}, {LUA_COLIBNAME, luaopen_coroutine}};
+  const luaL_Reg libs[] = {{LUA_GNAME, luaopen_base},        {LUA_TABLIBNAME, luaopen_table},
+                           {LUA_STRLIBNAME, luaopen_string}, {LUA_MATHLIBNAME, luaopen_math},
+                           {LUA_UTF8LIBNAME, luaopen_utf8},  {LUA_COLIBNAME, luaopen_coroutine}};
   for (const auto& lib : libs) {
     luaL_requiref(L, lib.name, lib.func, 1);
     lua_pop(L, 1);

@@ -9,7 +9,8 @@
 
 namespace selfsim::interp {
 
-Watchdog::Watchdog(const RunContext& run, std::string recipe) : run_(run), recipe_(shown_text(recipe, 500)), thread_([this] { watch(); }) {}
+Watchdog::Watchdog(const RunContext& run, std::string recipe)
+    : run_(run), recipe_(shown_text(recipe, 500)), thread_([this] { watch(); }) {}
 
 Watchdog::~Watchdog() {
   {

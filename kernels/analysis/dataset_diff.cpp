@@ -30,8 +30,8 @@ struct Report {
   }
 };
 
-void compare_fields(const char* kind, const std::map<std::string, io::Field>& a, const std::map<std::string, io::Field>& b,
-                    double tol, Report& r) {
+void compare_fields(const char* kind, const std::map<std::string, io::Field>& a,
+                    const std::map<std::string, io::Field>& b, double tol, Report& r) {
   for (const auto& [name, fa] : a) {
     auto it = b.find(name);
     if (it == b.end()) {
@@ -45,8 +45,9 @@ void compare_fields(const char* kind, const std::map<std::string, io::Field>& a,
     }
     for (std::size_t i = 0; i < fa.values.size() && !r.full(); ++i)
       if (!close(fa.values[i], fb.values[i], tol)) {
-        r.add(std::string(kind) + " field '" + name + "' differs at tuple " + std::to_string(i / static_cast<std::size_t>(fa.components)) +
-              ": " + num(fa.values[i]) + " vs " + num(fb.values[i]));
+        r.add(std::string(kind) + " field '" + name + "' differs at tuple " +
+              std::to_string(i / static_cast<std::size_t>(fa.components)) + ": " + num(fa.values[i]) + " vs " +
+              num(fb.values[i]));
         break;
       }
   }
@@ -64,13 +65,14 @@ std::vector<std::string> dataset_diff(const io::Dataset& a, const io::Dataset& b
     for (std::size_t i = 0; i < a.points.size() && !r.full(); ++i)
       for (int k = 0; k < 3; ++k)
         if (!close(a.points[i][k], b.points[i][k], tol)) {
-          r.add("point " + std::to_string(i) + " differs: (" + num(a.points[i][0]) + ", " + num(a.points[i][1]) +
-                ", " + num(a.points[i][2]) + ") vs (" + num(b.points[i][0]) + ", " +
-                num(b.points[i][1]) + ", " + num(b.points[i][2]) + ")");
+          r.add("point " + std::to_string(i) + " differs: (" + num(a.points[i][0]) + ", " + num(a.points[i][1]) + ", " +
+                num(a.points[i][2]) + ") vs (" + num(b.points[i][0]) + ", " + num(b.points[i][1]) + ", " +
+                num(b.points[i][2]) + ")");
           break;
         }
   if (a.cell_ends != b.cell_ends || a.cell_points != b.cell_points)
-    r.add("cells differ: " + std::to_string(a.cell_ends.size()) + " vs " + std::to_string(b.cell_ends.size()) + " cells");
+    r.add("cells differ: " + std::to_string(a.cell_ends.size()) + " vs " + std::to_string(b.cell_ends.size()) +
+          " cells");
   compare_fields("point", a.point_fields, b.point_fields, tol, r);
   compare_fields("cell", a.cell_fields, b.cell_fields, tol, r);
   return r.lines;

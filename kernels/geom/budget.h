@@ -31,9 +31,10 @@ struct BudgetError : Error {
 // of L (raise it with --max-points)".
 inline void check_budget(double predicted, const PointBudget& b, const std::string& what) {
   if (!(predicted <= b.left()))
-    throw BudgetError(what + " would make " + count_text(predicted) + " points, over the limit of " + count_text(b.limit) +
-                      (b.held > 0 ? " with " + count_text(b.held) + " held by the recipe's other values" : std::string()) +
-                      " (raise it with --max-points)");
+    throw BudgetError(
+        what + " would make " + count_text(predicted) + " points, over the limit of " + count_text(b.limit) +
+        (b.held > 0 ? " with " + count_text(b.held) + " held by the recipe's other values" : std::string()) +
+        " (raise it with --max-points)");
 }
 
 }  // namespace selfsim

@@ -9,7 +9,9 @@ namespace {
 std::uint64_t get_count(PipeIn& in, std::uint64_t max) {
   std::uint64_t n = 0;
   in.read(&n, sizeof n);
-  if (n > max) throw Error("the reader process sent a count of " + std::to_string(n) + ", over the limit of " + std::to_string(max));
+  if (n > max)
+    throw Error("the reader process sent a count of " + std::to_string(n) + ", over the limit of " +
+                std::to_string(max));
   return n;
 }
 

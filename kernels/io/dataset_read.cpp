@@ -18,7 +18,8 @@ std::uint64_t read_budget_bytes() {
 Dataset read_dataset(const std::filesystem::path& file) {
   try {
     std::string ext = file.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (ext == ".vtp" || ext == ".svg") {
       // selfsim never writes an empty file, and two broken files must never compare as "same".
       Dataset d = ext == ".vtp" ? read_vtp(file) : read_svg(file);

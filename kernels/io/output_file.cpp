@@ -1,12 +1,12 @@
 #include "kernels/io/output_file.h"
 
 #include <fcntl.h>
-#include <climits>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
+#include <climits>
 #include <cstring>
 #include <mutex>
 #include <vector>
@@ -46,21 +46,23 @@ std::string temporary_name(const std::string& leaf) {
 
 OutputFile::OutputFile(const std::filesystem::path& root, const std::string& name) {
   const std::filesystem::path rel = std::filesystem::path(name).lexically_normal();
-  if (name.empty() || name.find('\0') != std::string::npos || rel.is_absolute() || rel.empty() || *rel.begin() == ".." ||
-      !rel.has_filename() || rel.filename() == "." || rel.filename() == "..")
+  if (name.empty() || name.find('\0') != std::string::npos || rel.is_absolute() || rel.empty() ||
+      *rel.begin() == ".." || !rel.has_filename() || rel.filename() == "." || rel.filename() == "..")
     throw Error("path '" + name + "' is outside the output folder (give a relative file name such as 'curve.vtp')");
   for (unsigned char c : name)
     if (c < 32 || c == 127) throw Error("file names must not contain control characters (a newline, a tab)");
   for (const auto& part : rel)
     if (part.string().size() > NAME_MAX)
-      throw Error("name '" + part.string().substr(0, 40) + "...' is longer than " + std::to_string(NAME_MAX) + " bytes");
+      throw Error("name '" + part.string().substr(0, 40) + "...' is longer than " + std::to_string(NAME_MAX) +
+                  " bytes");
   leaf_ = rel.filename().string();
   display_ = (root / rel).string();
 
   std::error_code ec;
   std::filesystem::create_directories(root, ec);
   dir_ = ::open(root.c_str(), O_DIRECTORY | O_RDONLY | O_CLOEXEC);
-  if (dir_ < 0) throw Error("cannot open the output folder '" + root.string() + "': " + (ec ? ec.message() : system_error()));
+  if (dir_ < 0)
+    throw Error("cannot open the output folder '" + root.string() + "': " + (ec ? ec.message() : system_error()));
   std::filesystem::path walked = root;
   for (const auto& part : rel.parent_path()) {
     walked /= part;
@@ -69,7 +71,8 @@ OutputFile::OutputFile(const std::filesystem::path& root, const std::string& nam
     const int next = ::openat(dir_, part.c_str(), O_DIRECTORY | O_NOFOLLOW | O_RDONLY | O_CLOEXEC);
     if (next < 0) {
       if (errno == ELOOP || errno == ENOTDIR)
-        throw Error("'" + walked.string() + "' is a symbolic link or not a folder: selfsim writes only inside the output folder");
+        throw Error("'" + walked.string() +
+                    "' is a symbolic link or not a folder: selfsim writes only inside the output folder");
       throw Error("cannot open folder '" + walked.string() + "': " + system_error());
     }
     ::close(dir_);
@@ -114,7 +117,8 @@ void OutputFile::flush() {
   while (left > 0) {
     const ssize_t n = ::write(fd_, p, left);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) throw Error("cannot write '" + display_ + "': " + (n < 0 ? system_error() : "no progress") + " (disk full?)");
+    if (n <= 0)
+      throw Error("cannot write '" + display_ + "': " + (n < 0 ? system_error() : "no progress") + " (disk full?)");
     p += n;
     left -= static_cast<std::size_t>(n);
   }
@@ -159,7 +163,8 @@ void OutputFile::commit() {
   if (::renameat(dir_, temporary_.c_str(), dir_, leaf_.c_str()) != 0) {
     const int err = errno;
     throw Error("cannot write '" + display_ + "': " +
-                (err == EISDIR || err == ENOTEMPTY || err == EEXIST ? std::string("a folder of that name is in the way") : std::strerror(err)));
+                (err == EISDIR || err == ENOTEMPTY || err == EEXIST ? std::string("a folder of that name is in the way")
+                                                                    : std::strerror(err)));
   }
   untrack(dir_, temporary_);
   committed_ = true;

@@ -1,12 +1,13 @@
 #include "kernels/io/regular_file.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstring>
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include "kernels/geom/error.h"
 
@@ -14,7 +15,8 @@ namespace selfsim::io {
 
 std::string error_text(int code) {
   std::string s = std::strerror(code);
-  if (!s.empty() && std::isupper(static_cast<unsigned char>(s[0])) && (s.size() < 2 || std::islower(static_cast<unsigned char>(s[1]))))
+  if (!s.empty() && std::isupper(static_cast<unsigned char>(s[0])) &&
+      (s.size() < 2 || std::islower(static_cast<unsigned char>(s[1]))))
     s[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(s[0])));
   return s;
 }

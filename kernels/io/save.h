@@ -14,10 +14,10 @@
 namespace selfsim::io {
 
 struct SaveOptions {
-  std::string stroke = "#1d3557"; // .svg: stroke colour
-  double stroke_width = 1;        // .svg: stroke width in screen pixels, whatever the curve's scale
-  std::string fill;               // .svg: fill colour with the even-odd rule; empty for no fill
-  double size = 800;              // .svg: width or height in pixels, whichever is larger
+  std::string stroke = "#1d3557";  // .svg: stroke colour
+  double stroke_width = 1;         // .svg: stroke width in screen pixels, whatever the curve's scale
+  std::string fill;                // .svg: fill colour with the even-odd rule; empty for no fill
+  double size = 800;               // .svg: width or height in pixels, whichever is larger
 
   // Throws Error naming the first bad field.
   void validate() const;
@@ -29,10 +29,11 @@ const std::vector<std::string>& curve_extensions();
 // Writes c to `name` (a relative path) inside the folder `root` and returns the path written; throws Error
 // for an unknown extension, a curve whose extent or length is not finite, a name leaving the folder, or a
 // failed write.
-std::string save_curve(const Polyline& c, const std::filesystem::path& root, const std::string& name, const SaveOptions& opt,
-                       Progress& progress);
+std::string save_curve(const Polyline& c, const std::filesystem::path& root, const std::string& name,
+                       const SaveOptions& opt, Progress& progress);
 // The same for a file given as one path: its folder is the root.
-inline std::string save_curve(const Polyline& c, const std::filesystem::path& file, const SaveOptions& opt, Progress& progress) {
+inline std::string save_curve(const Polyline& c, const std::filesystem::path& file, const SaveOptions& opt,
+                              Progress& progress) {
   return save_curve(c, file.parent_path().empty() ? "." : file.parent_path(), file.filename().string(), opt, progress);
 }
 

@@ -32,7 +32,8 @@ void write_svg(const Polyline& c, OutputFile& out, const SaveOptions& opt, Progr
   const double px = opt.size / std::max(extent.x, extent.y);
   // Everything the header derives from the extent must be a number a viewer can read.
   for (double v : {lo.x, lo.y + extent.y, extent.x * px, extent.y * px, opt.stroke_width / px})
-    if (!std::isfinite(v)) throw Error("the curve's extent and the options give a non-finite SVG size or stroke width (scale the curve)");
+    if (!std::isfinite(v))
+      throw Error("the curve's extent and the options give a non-finite SVG size or stroke width (scale the curve)");
 
   std::string s;  // written out every megabyte or so: memory stays flat whatever the curve
   auto flush = [&] {
@@ -57,7 +58,8 @@ void write_svg(const Polyline& c, OutputFile& out, const SaveOptions& opt, Progr
   for (std::size_t i = 0; i < c.paths(); ++i) {
     char cmd = 'M';
     for (Vec2 p : c.path(i)) {
-      if (++written % (1u << 20) == 0) progress.step(0.9 * static_cast<double>(written) / static_cast<double>(c.points.size()));
+      if (++written % (1u << 20) == 0)
+        progress.step(0.9 * static_cast<double>(written) / static_cast<double>(c.points.size()));
       s += cmd;
       put(s, p.x);
       s += ' ';

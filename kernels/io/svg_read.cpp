@@ -28,8 +28,8 @@ constexpr std::size_t max_name = 256, max_depth = 256, max_number = 64;
 
 bool space(char c) { return xml_space(c); }
 bool name_char(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == ':' || c == '-' || c == '.' ||
-         static_cast<unsigned char>(c) >= 0x80;
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == ':' ||
+         c == '-' || c == '.' || static_cast<unsigned char>(c) >= 0x80;
 }
 std::string local(const std::string& name) {
   const std::size_t colon = name.rfind(':');
@@ -60,10 +60,13 @@ class PathData {
       return;
     }
     const bool sign = c == '+' || c == '-';
-    const bool exponent = (c == 'e' || c == 'E') && !number_.empty() && number_.find_first_of("eE") == std::string::npos;
+    const bool exponent =
+        (c == 'e' || c == 'E') && !number_.empty() && number_.find_first_of("eE") == std::string::npos;
     if ((c >= '0' && c <= '9') || c == '.' || sign || exponent) {
-      if (sign && !number_.empty() && number_.back() != 'e' && number_.back() != 'E') end_number();  // "1-2" is 1 and -2
-      if (number_.size() >= max_number) throw Error("a number in the path data is longer than " + std::to_string(max_number) + " characters");
+      if (sign && !number_.empty() && number_.back() != 'e' && number_.back() != 'E')
+        end_number();  // "1-2" is 1 and -2
+      if (number_.size() >= max_number)
+        throw Error("a number in the path data is longer than " + std::to_string(max_number) + " characters");
       number_ += c;
       return;
     }
@@ -92,7 +95,8 @@ class PathData {
     std::string w = word_;
     word_.clear();
     for (char& ch : w) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    if (w == "nan" || w == "inf" || w == "infinity") throw Error("the path data holds a non-finite number ('" + w + "')");
+    if (w == "nan" || w == "inf" || w == "infinity")
+      throw Error("the path data holds a non-finite number ('" + w + "')");
     if (w.size() == 1) throw Error("unsupported path command '" + w + "' (only absolute M and L are read)");
     throw Error("unexpected text '" + one_line(w) + "' in the path data");
   }
@@ -103,7 +107,8 @@ class PathData {
     const char* end = number_.data() + number_.size();
     double v = 0;
     const auto r = std::from_chars(begin, end, v);
-    if (r.ec == std::errc::result_out_of_range) throw Error("the number '" + number_ + "' in the path data is out of range");
+    if (r.ec == std::errc::result_out_of_range)
+      throw Error("the number '" + number_ + "' in the path data is out of range");
     if (r.ec != std::errc() || r.ptr != end) throw Error("malformed number '" + number_ + "' in the path data");
     if (!std::isfinite(v)) throw Error("the path data holds a non-finite number");
     if (!open_) throw Error("the path data does not start with M");
@@ -114,7 +119,8 @@ class PathData {
       return;
     }
     pending_ = false;
-    if (d_.points.size() >= read_budget_bytes() / 40) throw Error("the path data holds more points than the reading limit");
+    if (d_.points.size() >= read_budget_bytes() / 40)
+      throw Error("the path data holds more points than the reading limit");
     d_.cell_points.push_back(d_.points.size());
     d_.points.push_back({x_, v, 0});
     ++points_in_subpath_;
@@ -143,7 +149,8 @@ class SvgParser {
 
   void feed(std::string_view chunk) {
     for (char c : chunk) {
-      if (position_ < 3 && static_cast<unsigned char>(c) == static_cast<unsigned char>("\xEF\xBB\xBF"[position_]) && bom_ == position_) {
+      if (position_ < 3 && static_cast<unsigned char>(c) == static_cast<unsigned char>("\xEF\xBB\xBF"[position_]) &&
+          bom_ == position_) {
         ++bom_;
         ++position_;
         continue;  // a UTF-8 byte order mark
@@ -161,8 +168,22 @@ class SvgParser {
 
  private:
   enum class State {
-    text, markup, bang, comment_dash, skip, declaration, tag_name, in_tag, self_close, attr_name, after_attr_name, before_value,
-    value, path_data, end_name, end_after
+    text,
+    markup,
+    bang,
+    comment_dash,
+    skip,
+    declaration,
+    tag_name,
+    in_tag,
+    self_close,
+    attr_name,
+    after_attr_name,
+    before_value,
+    value,
+    path_data,
+    end_name,
+    end_after
   };
 
   void fail(const char* what) { throw Error(std::string("malformed XML: ") + what); }
@@ -175,20 +196,30 @@ class SvgParser {
   void byte(char c) {
     switch (state_) {
       case State::text:
-        if (c == '<') state_ = State::markup;
-        else if (!space(c) && stack_.empty()) throw Error(root_seen_ ? "text after </svg>" : "not an SVG file");
+        if (c == '<')
+          state_ = State::markup;
+        else if (!space(c) && stack_.empty())
+          throw Error(root_seen_ ? "text after </svg>" : "not an SVG file");
         return;
       case State::markup:
-        if (c == '?') skip("?>");
-        else if (c == '!') state_ = State::bang;
-        else if (c == '/') name_.clear(), state_ = State::end_name;
-        else if (name_char(c)) name_.assign(1, c), state_ = State::tag_name;
-        else fail("'<' not followed by a name");
+        if (c == '?')
+          skip("?>");
+        else if (c == '!')
+          state_ = State::bang;
+        else if (c == '/')
+          name_.clear(), state_ = State::end_name;
+        else if (name_char(c))
+          name_.assign(1, c), state_ = State::tag_name;
+        else
+          fail("'<' not followed by a name");
         return;
       case State::bang:
-        if (c == '-') state_ = State::comment_dash;
-        else if (c == '[') skip("]]>");  // CDATA
-        else brackets_ = 0, state_ = State::declaration;
+        if (c == '-')
+          state_ = State::comment_dash;
+        else if (c == '[')
+          skip("]]>");  // CDATA
+        else
+          brackets_ = 0, state_ = State::declaration;
         return;
       case State::comment_dash:
         if (c != '-') fail("'<!-' not followed by '-'");
@@ -199,24 +230,35 @@ class SvgParser {
         if (matched_ == skip_end_.size()) state_ = State::text;
         return;
       case State::declaration:  // <!DOCTYPE ...> with an optional [internal subset]
-        if (c == '[') ++brackets_;
-        else if (c == ']') --brackets_;
-        else if (c == '>' && brackets_ <= 0) state_ = State::text;
+        if (c == '[')
+          ++brackets_;
+        else if (c == ']')
+          --brackets_;
+        else if (c == '>' && brackets_ <= 0)
+          state_ = State::text;
         return;
       case State::tag_name:
         if (name_char(c)) return append(name_, c);
         is_path_ = local(name_) == "path";
-        if (space(c)) state_ = State::in_tag;
-        else if (c == '>') open_element(false);
-        else if (c == '/') state_ = State::self_close;
-        else fail("bad character in a tag name");
+        if (space(c))
+          state_ = State::in_tag;
+        else if (c == '>')
+          open_element(false);
+        else if (c == '/')
+          state_ = State::self_close;
+        else
+          fail("bad character in a tag name");
         return;
       case State::in_tag:
         if (space(c)) return;
-        if (c == '>') open_element(false);
-        else if (c == '/') state_ = State::self_close;
-        else if (name_char(c)) attr_.assign(1, c), state_ = State::attr_name;
-        else fail("bad character in a tag");
+        if (c == '>')
+          open_element(false);
+        else if (c == '/')
+          state_ = State::self_close;
+        else if (name_char(c))
+          attr_.assign(1, c), state_ = State::attr_name;
+        else
+          fail("bad character in a tag");
         return;
       case State::self_close:
         if (c != '>') fail("'/' not followed by '>' in a tag");
@@ -224,9 +266,12 @@ class SvgParser {
         return;
       case State::attr_name:
         if (name_char(c)) return append(attr_, c);
-        if (space(c)) state_ = State::after_attr_name;
-        else if (c == '=') state_ = State::before_value;
-        else fail("bad character in an attribute name");
+        if (space(c))
+          state_ = State::after_attr_name;
+        else if (c == '=')
+          state_ = State::before_value;
+        else
+          fail("bad character in an attribute name");
         return;
       case State::after_attr_name:
         if (space(c)) return;
@@ -245,8 +290,10 @@ class SvgParser {
         }
         return;
       case State::value:
-        if (c == quote_) state_ = State::in_tag;
-        else if (c == '<') fail("'<' in an attribute value");
+        if (c == quote_)
+          state_ = State::in_tag;
+        else if (c == '<')
+          fail("'<' in an attribute value");
         return;
       case State::path_data:
         if (c == quote_) {
@@ -258,9 +305,12 @@ class SvgParser {
         return;
       case State::end_name:
         if (name_char(c)) return append(name_, c);
-        if (space(c)) state_ = State::end_after;
-        else if (c == '>') close_element();
-        else fail("bad character in an end tag");
+        if (space(c))
+          state_ = State::end_after;
+        else if (c == '>')
+          close_element();
+        else
+          fail("bad character in an end tag");
         return;
       case State::end_after:
         if (space(c)) return;
@@ -285,14 +335,16 @@ class SvgParser {
       throw Error("an element after </svg>");
     }
     if (self_closing) return;
-    if (stack_.size() >= max_depth) throw Error("the XML is nested deeper than " + std::to_string(max_depth) + " levels");
+    if (stack_.size() >= max_depth)
+      throw Error("the XML is nested deeper than " + std::to_string(max_depth) + " levels");
     stack_.push_back(name_);
   }
 
   void close_element() {
     state_ = State::text;
     if (stack_.empty() || stack_.back() != name_)
-      throw Error("malformed XML: </" + shown(name_) + "> closes " + (stack_.empty() ? std::string("nothing") : "<" + shown(stack_.back()) + ">"));
+      throw Error("malformed XML: </" + shown(name_) + "> closes " +
+                  (stack_.empty() ? std::string("nothing") : "<" + shown(stack_.back()) + ">"));
     stack_.pop_back();
   }
 

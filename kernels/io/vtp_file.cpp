@@ -57,13 +57,14 @@ void write_vtp(const Polyline& c, OutputFile& out, const SaveOptions&, Progress&
   using std::to_string;
   std::string h;
   auto array = [&](const char* type, const char* name, int components, int i) {
-    h += std::string("        <DataArray type=\"") + type + "\" Name=\"" + name + "\" NumberOfComponents=\"" + to_string(components) +
-         "\" format=\"appended\" offset=\"" + to_string(offsets[i]) + "\"/>\n";
+    h += std::string("        <DataArray type=\"") + type + "\" Name=\"" + name + "\" NumberOfComponents=\"" +
+         to_string(components) + "\" format=\"appended\" offset=\"" + to_string(offsets[i]) + "\"/>\n";
   };
   h += "<?xml version=\"1.0\"?>\n"
        "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
        "  <PolyData>\n"
-       "    <Piece NumberOfPoints=\"" + to_string(n) + "\" NumberOfVerts=\"0\" NumberOfLines=\"" + to_string(paths) +
+       "    <Piece NumberOfPoints=\"" +
+       to_string(n) + "\" NumberOfVerts=\"0\" NumberOfLines=\"" + to_string(paths) +
        "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
        "      <PointData Scalars=\"arclength\">\n";
   array("Int32", "level", 1, 0);
@@ -84,8 +85,10 @@ void write_vtp(const Polyline& c, OutputFile& out, const SaveOptions&, Progress&
   double run = 0;
   w.array<double>(n, [&](std::size_t begin, std::size_t end, auto& b) {
     for (std::size_t i = begin; i < end; ++i) {
-      if (i == c.path_begin(path)) run = 0;  // arclength restarts on every path
-      else run += norm(c.points[i] - c.points[i - 1]);
+      if (i == c.path_begin(path))
+        run = 0;  // arclength restarts on every path
+      else
+        run += norm(c.points[i] - c.points[i - 1]);
       b.push_back(run);
       if (i + 1 == c.path_ends[path]) ++path;
     }
@@ -94,7 +97,8 @@ void write_vtp(const Polyline& c, OutputFile& out, const SaveOptions&, Progress&
     for (std::size_t i = begin; i < end; ++i) b.push_back(static_cast<std::int32_t>(i));
   });
   w.array<double>(n * 3, [&](std::size_t begin, std::size_t end, auto& b) {
-    for (std::size_t i = begin; i < end; ++i) b.push_back(i % 3 == 0 ? c.points[i / 3].x : i % 3 == 1 ? c.points[i / 3].y : 0.0);
+    for (std::size_t i = begin; i < end; ++i)
+      b.push_back(i % 3 == 0 ? c.points[i / 3].x : i % 3 == 1 ? c.points[i / 3].y : 0.0);
   });
   w.array<std::int64_t>(n, [](std::size_t begin, std::size_t end, auto& b) {
     for (std::size_t i = begin; i < end; ++i) b.push_back(static_cast<std::int64_t>(i));

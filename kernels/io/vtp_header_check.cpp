@@ -40,15 +40,16 @@ bool plain_count(std::string_view s, std::uint64_t max, std::uint64_t& out) {
 // An attribute already checked as a plain count by start_tag, or the fallback when absent.
 std::uint64_t count_of(const XmlTag& t, std::string_view key, std::uint64_t fallback) {
   std::uint64_t n = fallback;
-  if (const std::string* v = t.find(key); v && !plain_count(*v, max_count, n)) throw Error("bad attribute " + std::string(key));
+  if (const std::string* v = t.find(key); v && !plain_count(*v, max_count, n))
+    throw Error("bad attribute " + std::string(key));
   return n;
 }
 
 // Bytes in a type's values; 0 for String (variable length), 1 for Bit (counted as bits below).
 int type_bytes(const std::string& type) {
-  static const std::pair<const char*, int> known[] = {{"Int8", 1},  {"UInt8", 1},  {"Char", 1},    {"Int16", 2},   {"UInt16", 2},
-                                                       {"Int32", 4}, {"UInt32", 4}, {"Float32", 4}, {"Int64", 8},   {"UInt64", 8},
-                                                       {"Float64", 8}, {"IdType", 8}, {"Bit", 1},    {"String", 0}};
+  static const std::pair<const char*, int> known[] = {
+      {"Int8", 1},    {"UInt8", 1}, {"Char", 1},   {"Int16", 2},   {"UInt16", 2}, {"Int32", 4}, {"UInt32", 4},
+      {"Float32", 4}, {"Int64", 8}, {"UInt64", 8}, {"Float64", 8}, {"IdType", 8}, {"Bit", 1},   {"String", 0}};
   for (const auto& [name, bytes] : known)
     if (type == name) return bytes;
   return -1;
@@ -78,8 +79,10 @@ class Checker {
       if (text.chars > 0) on_text(text);
       if (!more) break;
       if (!xml_.tag(tag)) continue;  // a comment
-      if (tag.end) end_tag(tag.name);
-      else if (start_tag(tag)) break;  // <AppendedData>: the rest is binary
+      if (tag.end)
+        end_tag(tag.name);
+      else if (start_tag(tag))
+        break;  // <AppendedData>: the rest is binary
     }
     if (!appended_found_) {
       if (!root_seen_) throw Error("not a VTK XML file (no <VTKFile> element)");
@@ -117,7 +120,8 @@ class Checker {
       const bool components = key == "NumberOfComponents";
       std::uint64_t n = 0;
       if (!plain_count(value, components ? max_components : max_count, n) || (components && n == 0))
-        throw Error("attribute " + key + "=\"" + shown(value) + "\" of <" + shown(t.name) + "> must be a whole number in [" +
+        throw Error("attribute " + key + "=\"" + shown(value) + "\" of <" + shown(t.name) +
+                    "> must be a whole number in [" +
                     (components ? "1, " + std::to_string(max_components) : "0, " + std::to_string(max_count)) + "]");
     }
     if (stack_.empty()) root(t);
@@ -131,12 +135,15 @@ class Checker {
     if (t.name == "DataArray" || t.name == "Array") {
       const int index = array(t, parent);
       if (arrays_[static_cast<std::size_t>(index)].format != Array::appended) {  // appended ones: at the end
-        if (t.self_closing) check_array(arrays_[static_cast<std::size_t>(index)]);
-        else open.array = index;
+        if (t.self_closing)
+          check_array(arrays_[static_cast<std::size_t>(index)]);
+        else
+          open.array = index;
       }
     }
     if (!t.self_closing) {
-      if (stack_.size() >= max_depth) throw Error("the XML is nested deeper than " + std::to_string(max_depth) + " levels");
+      if (stack_.size() >= max_depth)
+        throw Error("the XML is nested deeper than " + std::to_string(max_depth) + " levels");
       stack_.push_back(open);
     } else if (stack_.empty()) {
       root_closed_ = true;
@@ -146,7 +153,8 @@ class Checker {
 
   void end_tag(const std::string& name) {
     if (stack_.empty() || stack_.back().name != name)
-      throw Error("malformed XML: </" + shown(name) + "> closes " + (stack_.empty() ? std::string("nothing") : "<" + stack_.back().name + ">"));
+      throw Error("malformed XML: </" + shown(name) + "> closes " +
+                  (stack_.empty() ? std::string("nothing") : "<" + stack_.back().name + ">"));
     if (stack_.back().array >= 0) check_array(arrays_[static_cast<std::size_t>(stack_.back().array)]);
     stack_.pop_back();
     if (stack_.empty()) root_closed_ = true;
@@ -156,11 +164,13 @@ class Checker {
     if (t.name != "VTKFile") throw Error("not a VTK XML file (the root element is <" + shown(t.name) + ">)");
     root_seen_ = true;
     const std::string* type = t.find("type");
-    if (!type || *type != "PolyData") throw Error("not a VTK PolyData file (type \"" + (type ? shown(*type) : std::string()) + "\")");
+    if (!type || *type != "PolyData")
+      throw Error("not a VTK PolyData file (type \"" + (type ? shown(*type) : std::string()) + "\")");
     if (const std::string* v = t.find("version")) {
       const std::size_t dot = v->find('.');
       std::uint64_t major = 0, minor = 0;
-      if (!plain_count(v->substr(0, dot), 99, major) || (dot != std::string::npos && !plain_count(v->substr(dot + 1), 99, minor)))
+      if (!plain_count(v->substr(0, dot), 99, major) ||
+          (dot != std::string::npos && !plain_count(v->substr(dot + 1), 99, minor)))
         throw Error("unsupported VTK file version \"" + shown(*v) + "\"");
     }
     if (const std::string* v = t.find("byte_order")) {
@@ -168,20 +178,26 @@ class Checker {
       layout_.big_endian = *v == "BigEndian";
     }
     if (const std::string* v = t.find("header_type")) {
-      if (*v != "UInt32" && *v != "UInt64") throw Error("unknown header_type \"" + shown(*v) + "\" (expected UInt32 or UInt64)");
+      if (*v != "UInt32" && *v != "UInt64")
+        throw Error("unknown header_type \"" + shown(*v) + "\" (expected UInt32 or UInt64)");
       layout_.word_bytes = *v == "UInt64" ? 8 : 4;
     }
     if (const std::string* v = t.find("compressor"); v && !v->empty()) {
-      if (*v == "vtkZLibDataCompressor") layout_.compressor = VtkCompressor::zlib;
-      else if (*v == "vtkLZ4DataCompressor") layout_.compressor = VtkCompressor::lz4;
-      else if (*v == "vtkLZMADataCompressor") layout_.compressor = VtkCompressor::lzma;
-      else throw Error("unknown compressor \"" + shown(*v) + "\"");
+      if (*v == "vtkZLibDataCompressor")
+        layout_.compressor = VtkCompressor::zlib;
+      else if (*v == "vtkLZ4DataCompressor")
+        layout_.compressor = VtkCompressor::lz4;
+      else if (*v == "vtkLZMADataCompressor")
+        layout_.compressor = VtkCompressor::lzma;
+      else
+        throw Error("unknown compressor \"" + shown(*v) + "\"");
     }
   }
 
   void add_bytes(std::uint64_t values, std::uint64_t bytes_each) {
     if (values > read_budget_bytes() / bytes_each || (declared_.bytes += values * bytes_each) > read_budget_bytes())
-      throw Error("the file declares more data than the reading limit of " + std::to_string(read_budget_bytes() >> 30) + " GiB");
+      throw Error("the file declares more data than the reading limit of " + std::to_string(read_budget_bytes() >> 30) +
+                  " GiB");
   }
 
   void piece(const XmlTag& t) {
@@ -211,21 +227,31 @@ class Checker {
     static const char* const cell_kinds[] = {"Verts", "Lines", "Strips", "Polys"};
     a.tuples_known = true;
     a.counted_by_piece = parent == "Points" || (name && *name == "offsets");
-    if (parent == "Points" || parent == "PointData") a.tuples = points_;
-    else if (parent == "CellData") a.tuples = cells;
-    else if (std::find(std::begin(cell_kinds), std::end(cell_kinds), parent) != std::end(cell_kinds) && name && *name == "offsets")
+    if (parent == "Points" || parent == "PointData")
+      a.tuples = points_;
+    else if (parent == "CellData")
+      a.tuples = cells;
+    else if (std::find(std::begin(cell_kinds), std::end(cell_kinds), parent) != std::end(cell_kinds) && name &&
+             *name == "offsets")
       a.tuples = cells_[std::find(std::begin(cell_kinds), std::end(cell_kinds), parent) - std::begin(cell_kinds)];
-    else if (t.find("NumberOfTuples")) a.tuples = count_of(t, "NumberOfTuples", 0);
-    else a.tuples_known = false;  // connectivity: its length comes from the data
+    else if (t.find("NumberOfTuples"))
+      a.tuples = count_of(t, "NumberOfTuples", 0);
+    else
+      a.tuples_known = false;  // connectivity: its length comes from the data
     const std::string* format = t.find("format");
-    if (!format || *format == "ascii") a.format = Array::ascii;
-    else if (*format == "binary") a.format = Array::binary;
-    else if (*format == "appended") a.format = Array::appended;
-    else throw Error(a.label + " has an unknown format \"" + shown(*format) + "\"");
+    if (!format || *format == "ascii")
+      a.format = Array::ascii;
+    else if (*format == "binary")
+      a.format = Array::binary;
+    else if (*format == "appended")
+      a.format = Array::appended;
+    else
+      throw Error(a.label + " has an unknown format \"" + shown(*format) + "\"");
     if (a.format == Array::appended) {
       const std::string* offset = t.find("offset");
       if (!offset || !plain_count(*offset, file_.size(), a.offset))
-        throw Error(a.label + " needs an offset within the file, got \"" + (offset ? shown(*offset) : std::string()) + "\"");
+        throw Error(a.label + " needs an offset within the file, got \"" + (offset ? shown(*offset) : std::string()) +
+                    "\"");
     }
     arrays_.push_back(a);
     return static_cast<int>(arrays_.size() - 1);
@@ -235,18 +261,22 @@ class Checker {
     if (parent != "VTKFile") throw Error("<AppendedData> must be inside <VTKFile>, not inside <" + shown(parent) + ">");
     if (t.self_closing) throw Error("<AppendedData/> holds no data");
     const std::string* encoding = t.find("encoding");
-    if (encoding && *encoding != "raw" && *encoding != "base64") throw Error("unknown AppendedData encoding \"" + shown(*encoding) + "\"");
+    if (encoding && *encoding != "raw" && *encoding != "base64")
+      throw Error("unknown AppendedData encoding \"" + shown(*encoding) + "\"");
     appended_base64_ = encoding && *encoding == "base64";
     int c = xml_.get();
     while (space(c)) c = xml_.get();
-    if (c != '_') throw Error(c < 0 ? "the file ends at <AppendedData> (truncated?)" : "the appended data does not start with '_'");
+    if (c != '_')
+      throw Error(c < 0 ? "the file ends at <AppendedData> (truncated?)" : "the appended data does not start with '_'");
     appended_begin_ = xml_.position();
     appended_found_ = true;
   }
 
   // An appended file ends with </AppendedData> and </VTKFile>; their absence means it was cut short.
   void check_tail() {
-    std::string buffer(static_cast<std::size_t>(std::min<std::uint64_t>(std::uint64_t{1} << 16, file_.size() - appended_begin_)), '\0');
+    std::string buffer(
+        static_cast<std::size_t>(std::min<std::uint64_t>(std::uint64_t{1} << 16, file_.size() - appended_begin_)),
+        '\0');
     const std::uint64_t start = file_.size() - buffer.size();
     std::string_view tail(buffer.data(), file_.read_at(start, buffer.data(), buffer.size()));
     auto strip = [&](std::string_view end) {
@@ -255,19 +285,20 @@ class Checker {
       tail.remove_suffix(end.size());
       return true;
     };
-    if (!strip("</VTKFile>") || !strip("</AppendedData>")) throw Error("the file does not end with </AppendedData></VTKFile> (truncated?)");
+    if (!strip("</VTKFile>") || !strip("</AppendedData>"))
+      throw Error("the file does not end with </AppendedData></VTKFile> (truncated?)");
     appended_end_ = start + tail.size();
   }
 
   void check_array(const Array& a) {
     const int size = type_bytes(a.type);
     const std::uint64_t values = a.tuples * a.components;  // both bounded: no overflow
-    std::uint64_t count = values;                         // values the read dataset will hold
+    std::uint64_t count = values;                          // values the read dataset will hold
     try {
       if (a.format == Array::ascii) {
         if (a.tuples_known && size > 0 && values > a.text_chars)
-          throw Error("it declares " + std::to_string(values) + " values, but its ascii data has only " + std::to_string(a.text_chars) +
-                      " characters");
+          throw Error("it declares " + std::to_string(values) + " values, but its ascii data has only " +
+                      std::to_string(a.text_chars) + " characters");
         if (!a.tuples_known) count = a.text_chars;
       } else {
         VtkBinaryLayout l = layout_;
@@ -284,7 +315,9 @@ class Checker {
           l.begin = appended_begin_ + a.offset;
           l.end = appended_end_;
         }
-        const std::uint64_t need = !a.tuples_known ? 0 : a.type == "Bit" ? (values + 7) / 8 : values * static_cast<std::uint64_t>(size);
+        const std::uint64_t need = !a.tuples_known   ? 0
+                                   : a.type == "Bit" ? (values + 7) / 8
+                                                     : values * static_cast<std::uint64_t>(size);
         const std::uint64_t held = check_vtk_binary_data(file_, l, need, read_budget_bytes());
         if (!a.tuples_known) count = size > 0 ? held / static_cast<std::uint64_t>(size) : held;
       }

@@ -14,7 +14,6 @@
 //   3. The Dataset is checked (dataset_check.h) and must hold the points and cells the header declared.
 // Simpler alternatives fall short: catching exceptions cannot catch a segfault, and checks alone cannot
 // prove that a third-party reader never misbehaves.
-#include <cstdlib>
 #include <unistd.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -27,6 +26,8 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkXMLPolyDataReader.h>
+
+#include <cstdlib>
 
 #include "kernels/geom/error.h"
 #include "kernels/io/child_process.h"
@@ -68,12 +69,14 @@ std::string vtk_reason(const std::string& text, const std::string& vtk_name, con
     begin = end + 1;
     if (line.empty() || line.rfind("ERROR: In ", 0) == 0) continue;
     if (line.rfind("vtk", 0) == 0)
-      if (const std::size_t object = line.find("): "); object != std::string::npos && object < 80) line.erase(0, object + 3);
+      if (const std::size_t object = line.find("): "); object != std::string::npos && object < 80)
+        line.erase(0, object + 3);
     reason = line;
     break;  // the first line says what failed; what follows is VTK's dump of its pipeline, with addresses
   }
   for (std::size_t at; (at = reason.find("  ")) != std::string::npos;) reason.erase(at, 1);
-  for (std::size_t at; !vtk_name.empty() && (at = reason.find(vtk_name)) != std::string::npos;) reason.replace(at, vtk_name.size(), shown_name);
+  for (std::size_t at; !vtk_name.empty() && (at = reason.find(vtk_name)) != std::string::npos;)
+    reason.replace(at, vtk_name.size(), shown_name);
   if (reason.size() > 300) reason = reason.substr(0, 300) + "...";
   return reason.empty() ? "VTK could not read it" : "VTK: " + reason;
 }
@@ -83,7 +86,8 @@ std::string vtk_reason(const std::string& text, const std::string& vtk_name, con
 void send_values(PipeOut& out, vtkDataArray* a, int components) {
   const vtkIdType n = a->GetNumberOfTuples();
   if (auto* doubles = vtkDoubleArray::FastDownCast(a); doubles && n > 0) {
-    out.write(doubles->GetPointer(0), static_cast<std::size_t>(n) * static_cast<std::size_t>(components) * sizeof(double));
+    out.write(doubles->GetPointer(0),
+              static_cast<std::size_t>(n) * static_cast<std::size_t>(components) * sizeof(double));
     return;
   }
   std::vector<double> chunk;
@@ -104,7 +108,8 @@ void send_fields(PipeOut& out, vtkFieldData* data) {
   for (vtkDataArray* a : arrays) {
     put_name(out, a->GetName() ? a->GetName() : "?");
     put_count(out, static_cast<std::uint64_t>(a->GetNumberOfComponents()));
-    put_count(out, static_cast<std::uint64_t>(a->GetNumberOfTuples()) * static_cast<std::uint64_t>(a->GetNumberOfComponents()));
+    put_count(out, static_cast<std::uint64_t>(a->GetNumberOfTuples()) *
+                       static_cast<std::uint64_t>(a->GetNumberOfComponents()));
     send_values(out, a, a->GetNumberOfComponents());
   }
 }
@@ -123,7 +128,9 @@ void send_polydata(PipeOut& out, vtkPolyData* poly) {
   vtkCellArray* const kinds[] = {poly->GetVerts(), poly->GetLines(), poly->GetPolys(), poly->GetStrips()};
   std::uint64_t cells = 0, ids = 0;
   for (vtkCellArray* c : kinds)
-    if (c) cells += static_cast<std::uint64_t>(c->GetNumberOfCells()), ids += static_cast<std::uint64_t>(c->GetNumberOfConnectivityIds());
+    if (c)
+      cells += static_cast<std::uint64_t>(c->GetNumberOfCells()),
+          ids += static_cast<std::uint64_t>(c->GetNumberOfConnectivityIds());
   std::vector<std::uint64_t> chunk;
   auto flush = [&](bool force) {
     if (chunk.size() >= 8192 || (force && !chunk.empty())) {
@@ -140,9 +147,11 @@ void send_polydata(PipeOut& out, vtkPolyData* poly) {
       vtkIdType count = 0;
       for (c->InitTraversal(); c->GetNextCell(count, cell);) {
         end += static_cast<std::uint64_t>(count);
-        if (pass == 0) chunk.push_back(end);
+        if (pass == 0)
+          chunk.push_back(end);
         else
-          for (vtkIdType k = 0; k < count; ++k) chunk.push_back(static_cast<std::uint64_t>(cell[k]));  // a negative id fails the range check
+          for (vtkIdType k = 0; k < count; ++k)
+            chunk.push_back(static_cast<std::uint64_t>(cell[k]));  // a negative id fails the range check
         flush(false);
       }
     }
@@ -165,8 +174,10 @@ int read_in_child(PipeOut& out, const std::string& vtk_name, const std::string& 
   reader->Update();
   vtkPolyData* poly = reader->GetOutput();
   std::string error;
-  if (!window->first_error.empty()) error = vtk_reason(window->first_error, vtk_name, shown_name);
-  else if (reader->GetErrorCode() != 0 || poly == nullptr) error = "VTK could not read it";
+  if (!window->first_error.empty())
+    error = vtk_reason(window->first_error, vtk_name, shown_name);
+  else if (reader->GetErrorCode() != 0 || poly == nullptr)
+    error = "VTK could not read it";
   const char kind = error.empty() ? 'D' : 'E';
   out.write(&kind, 1);
   if (!error.empty()) {
@@ -187,7 +198,8 @@ Dataset read_checked(const std::filesystem::path& file) {
   if (::access(vtk_name.c_str(), R_OK) != 0) vtk_name = file.string();
   ChildLimits limits;
   limits.what = "the VTK reader";
-  limits.memory_bytes = std::min((std::uint64_t{1} << 30) + 3 * declared.bytes, 3 * read_budget_bytes());  // half the machine
+  limits.memory_bytes =
+      std::min((std::uint64_t{1} << 30) + 3 * declared.bytes, 3 * read_budget_bytes());  // half the machine
   limits.seconds = 30 + static_cast<double>(f.size() + declared.bytes) / (8 << 20);
   Dataset d;
   run_in_child(
@@ -209,7 +221,8 @@ Dataset read_checked(const std::filesystem::path& file) {
   check_dataset(d);
   if (d.points.size() != declared.points || d.cell_ends.size() != declared.cells)
     throw Error("VTK read " + std::to_string(d.points.size()) + " points and " + std::to_string(d.cell_ends.size()) +
-                " cells, but the file declares " + std::to_string(declared.points) + " and " + std::to_string(declared.cells));
+                " cells, but the file declares " + std::to_string(declared.points) + " and " +
+                std::to_string(declared.cells));
   return d;
 }
 

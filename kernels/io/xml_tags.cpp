@@ -111,10 +111,12 @@ void XmlTagReader::parse(const std::string& raw, XmlTag& t) const {
     std::string key;
     while (i < raw.size() && name_char(raw[i])) key += raw[i++];
     while (i < raw.size() && xml_space(raw[i])) ++i;
-    if (key.empty() || i == raw.size() || raw[i] != '=') throw Error("malformed XML attribute in <" + shown(t.name) + ">");
+    if (key.empty() || i == raw.size() || raw[i] != '=')
+      throw Error("malformed XML attribute in <" + shown(t.name) + ">");
     ++i;
     while (i < raw.size() && xml_space(raw[i])) ++i;
-    if (i == raw.size() || (raw[i] != '"' && raw[i] != '\'')) throw Error("malformed XML attribute in <" + shown(t.name) + ">");
+    if (i == raw.size() || (raw[i] != '"' && raw[i] != '\''))
+      throw Error("malformed XML attribute in <" + shown(t.name) + ">");
     const char quote = raw[i++];
     const std::size_t end = raw.find(quote, i);
     if (end == std::string::npos) throw Error("malformed XML attribute in <" + shown(t.name) + ">");

@@ -15,10 +15,10 @@
 namespace selfsim::io {
 
 struct XmlTag {
-  std::string name;  // without the '/' of an end tag
+  std::string name;                                             // without the '/' of an end tag
   std::vector<std::pair<std::string, std::string>> attributes;  // as written, entities not expanded
-  bool end = false;           // </name>
-  bool self_closing = false;  // <name/>
+  bool end = false;                                             // </name>
+  bool self_closing = false;                                    // <name/>
 
   const std::string* find(std::string_view key) const;
 };

@@ -13,10 +13,10 @@ Compiled::Compiled(const Grammar& g) {
     const char c = static_cast<char>(s);
     // Reduced exactly (fmod is exact): a turn of 1e20 degrees is the turn it really is, not a rounding of it.
     turn[s] = std::fmod(g.turn_of(c), 360.0);
-    action[s] = g.draws(c) ? Action::Draw
-                : g.moves(c) ? Action::Move
-                : c == '[' ? Action::Push
-                : c == ']' ? Action::Pop
+    action[s] = g.draws(c)     ? Action::Draw
+                : g.moves(c)   ? Action::Move
+                : c == '['     ? Action::Push
+                : c == ']'     ? Action::Pop
                 : turn[s] != 0 ? Action::Turn
                                : Action::None;
   }
@@ -67,7 +67,8 @@ void expand(const Compiled& c, unsigned char s, int d, std::string& out) {
 
 }  // namespace
 
-LatticeBlocks::LatticeBlocks(const Grammar& g, const Compiled& c, const LatticeTable& t, int level, Progress& progress) {
+LatticeBlocks::LatticeBlocks(const Grammar& g, const Compiled& c, const LatticeTable& t, int level,
+                             Progress& progress) {
   block.fill(-1);
   // The deepest d whose blocks all fit the limits.
   SymbolWeights w = symbol_weights(g, Weight::Segments), symbols = symbol_weights(g, Weight::Symbols);
@@ -82,7 +83,8 @@ LatticeBlocks::LatticeBlocks(const Grammar& g, const Compiled& c, const LatticeT
         bytes += w[s] * t.n * sizeof(Vec2);
         steps += symbols[s] * t.n;
       }
-    if (biggest > max_block_points || longest > max_block_symbols || bytes > max_table_bytes || steps > max_build_steps) break;
+    if (biggest > max_block_points || longest > max_block_symbols || bytes > max_table_bytes || steps > max_build_steps)
+      break;
     depth = d;
   }
   if (depth == 0) return;

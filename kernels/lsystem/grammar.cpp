@@ -54,22 +54,27 @@ void Grammar::validate() const {
   for (const auto& [option, symbols] : {std::pair{"draw", &draw}, std::pair{"move", &move}})
     for (char c : *symbols)
       if (c == '[' || c == ']')
-        throw Error(std::string("option '") + option + "': '" + shown(c) + "' is a branch symbol (save and restore the turtle) and cannot also step");
+        throw Error(std::string("option '") + option + "': '" + shown(c) +
+                    "' is a branch symbol (save and restore the turtle) and cannot also step");
   // Bounds the work of predicting a level (levels x grammar size) before any Progress check can run.
   double size = static_cast<double>(axiom.size());
   for (const auto& [symbol, replacement] : rules) size += static_cast<double>(replacement.size());
   if (size > max_grammar_symbols)
-    throw Error("the axiom and rules hold " + std::to_string(static_cast<long long>(size)) + " symbols, over the limit of " +
-                std::to_string(static_cast<long long>(max_grammar_symbols)));
+    throw Error("the axiom and rules hold " + std::to_string(static_cast<long long>(size)) +
+                " symbols, over the limit of " + std::to_string(static_cast<long long>(max_grammar_symbols)));
 }
 
 double Grammar::turn_of(char c) const {
   if (auto it = angles.find(c); it != angles.end()) return it->second;
   switch (c) {
-    case '+': return angle;
-    case '-': return -angle;
-    case '|': return 180;
-    default: return 0;
+    case '+':
+      return angle;
+    case '-':
+      return -angle;
+    case '|':
+      return 180;
+    default:
+      return 0;
   }
 }
 

@@ -58,7 +58,8 @@ LevelCounts predict_counts(const Grammar& g, int level, Progress& progress) {
     rewrite_weights(g, segments);
     rewrite_weights(g, breaks);
     SymbolWeights next_inner = inner;
-    for (const auto& [symbol, replacement] : g.rules) next_inner[static_cast<unsigned char>(symbol)] = peak(replacement, net, inner);
+    for (const auto& [symbol, replacement] : g.rules)
+      next_inner[static_cast<unsigned char>(symbol)] = peak(replacement, net, inner);
     inner = next_inner;
     rewrite_weights(g, net);
   }

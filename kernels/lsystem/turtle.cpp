@@ -96,7 +96,8 @@ Vec2 run_turtle(const Compiled& c, const std::string& axiom, int level, Heading 
       continue;
     }
     switch (c.action[s]) {
-      case Action::None: break;
+      case Action::None:
+        break;
       case Action::Draw:
         if (!path_open) {
           out.points.push_back(pos);
@@ -110,8 +111,12 @@ Vec2 run_turtle(const Compiled& c, const std::string& axiom, int level, Heading 
         path_open = false;
         pos += heading.forward();
         break;
-      case Action::Turn: heading.rotate(s); break;
-      case Action::Push: saved.emplace_back(pos, heading); break;
+      case Action::Turn:
+        heading.rotate(s);
+        break;
+      case Action::Push:
+        saved.emplace_back(pos, heading);
+        break;
       case Action::Pop:
         if (saved.empty()) throw Error("option 'axiom'/'rules': ']' without a matching '['");
         out.close_path();
@@ -153,8 +158,8 @@ void curve_into(const Grammar& g, const CurveOptions& opt, Progress& progress, P
   // Symbols that draw nothing still cost time: refuse levels that would rewrite far more than they draw.
   if (counts.symbols > symbols_per_point * opt.budget.left())
     throw BudgetError(what + " would rewrite " + count_text(counts.symbols) + " symbols, over the limit of " +
-                      count_text(symbols_per_point * opt.budget.left()) + " (" + std::to_string(static_cast<int>(symbols_per_point)) +
-                      " x --max-points)");
+                      count_text(symbols_per_point * opt.budget.left()) + " (" +
+                      std::to_string(static_cast<int>(symbols_per_point)) + " x --max-points)");
 
   out.points.clear();
   out.path_ends.clear();
@@ -186,7 +191,8 @@ void curve_into(const Grammar& g, const CurveOptions& opt, Progress& progress, P
     p = place(p);
     finite &= is_finite(p);
   }
-  if (!finite) throw Error("level " + std::to_string(opt.level) + " has non-finite coordinates (shrink^level overflows)");
+  if (!finite)
+    throw Error("level " + std::to_string(opt.level) + " has non-finite coordinates (shrink^level overflows)");
 }
 
 std::string expand_string(const Grammar& g, int level, double max_symbols) {

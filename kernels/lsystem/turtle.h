@@ -13,9 +13,9 @@
 namespace selfsim::lsystem {
 
 struct CurveOptions {
-  int level = 0;               // rewriting steps applied to the axiom, in [0, max_level]
-  bool normalize = true;       // open curves run from (0,0) to (1,0); see below
-  PointBudget budget;          // refuse (before any work) a level predicted not to fit
+  int level = 0;          // rewriting steps applied to the axiom, in [0, max_level]
+  bool normalize = true;  // open curves run from (0,0) to (1,0); see below
+  PointBudget budget;     // refuse (before any work) a level predicted not to fit
 
   void validate() const;
 };

@@ -13,10 +13,14 @@ namespace {
 
 Similarity2 transform_map(SegmentTransform t) {
   switch (t) {
-    case SegmentTransform::Identity: return {};
-    case SegmentTransform::ReflectSegment: return {{1, 0}, {0, 0}, true};
-    case SegmentTransform::ReflectBisector: return {{-1, 0}, {1, 0}, true};
-    case SegmentTransform::HalfTurn: return {{-1, 0}, {1, 0}, false};
+    case SegmentTransform::Identity:
+      return {};
+    case SegmentTransform::ReflectSegment:
+      return {{1, 0}, {0, 0}, true};
+    case SegmentTransform::ReflectBisector:
+      return {{-1, 0}, {1, 0}, true};
+    case SegmentTransform::HalfTurn:
+      return {{-1, 0}, {1, 0}, false};
   }
   return {};
 }
@@ -24,7 +28,7 @@ Similarity2 transform_map(SegmentTransform t) {
 bool reverses(SegmentTransform t) { return t == SegmentTransform::ReflectBisector || t == SegmentTransform::HalfTurn; }
 
 struct Substitution {
-  std::vector<Similarity2> child;  // generator segment i as a map of the unit segment, transform included
+  std::vector<Similarity2> child;    // generator segment i as a map of the unit segment, transform included
   std::vector<bool> child_reversed;  // true where that copy is walked backwards
   std::vector<Vec2>& out;
   Progress& progress;
@@ -48,20 +52,21 @@ struct Substitution {
 }  // namespace
 
 void SubstituteOptions::validate(std::size_t generator_segments) const {
-  if (levels < 0 || levels > 64) throw Error("option 'levels' must be an integer in [0, 64], got " + std::to_string(levels));
+  if (levels < 0 || levels > 64)
+    throw Error("option 'levels' must be an integer in [0, 64], got " + std::to_string(levels));
   if (!transforms.empty() && transforms.size() != generator_segments)
     throw Error("option 'transforms' must have one entry per generator segment (" + std::to_string(generator_segments) +
                 "), got " + std::to_string(transforms.size()));
 }
 
 Polyline substitute(const Polyline& path, const Polyline& generator, const SubstituteOptions& opt, Progress& progress) {
-  if (path.paths() != 1 || path.segments() < 1) throw Error("option 'path' must be a single path with at least one segment");
+  if (path.paths() != 1 || path.segments() < 1)
+    throw Error("option 'path' must be a single path with at least one segment");
   if (generator.paths() != 1 || generator.segments() < 1)
     throw Error("option 'generator' must be a single path with at least one segment");
   const auto g = generator.path(0);
   const Vec2 g0 = g.front(), g1 = g.back();
-  if (norm(g0) > 1e-9 || norm(g1 - Vec2{1, 0}) > 1e-9)
-    throw Error("option 'generator' must run from (0,0) to (1,0)");
+  if (norm(g0) > 1e-9 || norm(g1 - Vec2{1, 0}) > 1e-9) throw Error("option 'generator' must run from (0,0) to (1,0)");
   if (!path.finite() || !generator.finite()) throw Error("option 'path'/'generator' has non-finite coordinates");
   const std::size_t n = g.size() - 1;
   opt.validate(n);

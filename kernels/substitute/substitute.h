@@ -21,9 +21,9 @@ enum class SegmentTransform {
 };
 
 struct SubstituteOptions {
-  int levels = 1;                           // rounds of substitution, in [0, 64]
-  std::vector<SegmentTransform> transforms; // one per generator segment, or empty for all Identity
-  PointBudget budget;                       // refuse (before any work) results predicted not to fit
+  int levels = 1;                            // rounds of substitution, in [0, 64]
+  std::vector<SegmentTransform> transforms;  // one per generator segment, or empty for all Identity
+  PointBudget budget;                        // refuse (before any work) results predicted not to fit
 
   void validate(std::size_t generator_segments) const;
 };

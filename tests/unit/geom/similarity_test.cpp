@@ -28,9 +28,9 @@ TEST(Similarity2, SegmentMapsAndTheirInverse) {
 TEST(Similarity2, MirroredMapsCompose) {
   const Similarity2 m{{0, 2}, {1, 0}, true};  // z -> 2i·conj(z) + 1
   const Vec2 z{0.25, 0.5};
-  EXPECT_EQ(m(z), (Vec2{2, 0.5}));           // 2i·(0.25 - 0.5i) + 1 = 1 + 1 + 0.5i
+  EXPECT_EQ(m(z), (Vec2{2, 0.5}));  // 2i·(0.25 - 0.5i) + 1 = 1 + 1 + 0.5i
   const Similarity2 mm = m.after(m);
-  EXPECT_FALSE(mm.mirrored);                 // two reflections make a direct similarity
+  EXPECT_FALSE(mm.mirrored);  // two reflections make a direct similarity
   EXPECT_NEAR(norm(mm(z) - m(m(z))), 0, 1e-15);
   const Similarity2 d{{0.5, 0.5}, {0, 1}};
   EXPECT_NEAR(norm(m.after(d)(z) - m(d(z))), 0, 1e-15);

@@ -2,10 +2,9 @@
 
 #include <gtest/gtest.h>
 
-#include "io_fixtures.h"
-
 #include <fstream>
 
+#include "io_fixtures.h"
 #include "kernels/geom/error.h"
 
 using namespace selfsim;

@@ -3,8 +3,6 @@
 #include "kernels/io/read.h"
 
 #include <gtest/gtest.h>
-
-#include "io_fixtures.h"
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -12,6 +10,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "io_fixtures.h"
 #include "kernels/analysis/dataset_diff.h"
 #include "kernels/geom/error.h"
 #include "kernels/io/save.h"
@@ -102,11 +101,14 @@ std::string raw_vtp(std::uint64_t points_bytes = 72, const std::string& offsets 
   <PolyData>
     <Piece NumberOfPoints="3" NumberOfVerts="0" NumberOfLines="1" NumberOfStrips="0" NumberOfPolys="0">
       <Points>
-        <DataArray type="Float64" Name="Points" NumberOfComponents="3" format="appended" offset=")" + o[0] + R"("/>
+        <DataArray type="Float64" Name="Points" NumberOfComponents="3" format="appended" offset=")" +
+                  o[0] + R"("/>
       </Points>
       <Lines>
-        <DataArray type="Int64" Name="connectivity" format="appended" offset=")" + o[1] + R"("/>
-        <DataArray type="Int64" Name="offsets" format="appended" offset=")" + o[2] + R"("/>
+        <DataArray type="Int64" Name="connectivity" format="appended" offset=")" +
+                  o[1] + R"("/>
+        <DataArray type="Int64" Name="offsets" format="appended" offset=")" +
+                  o[2] + R"("/>
       </Lines>
     </Piece>
   </PolyData>
@@ -120,15 +122,16 @@ std::string raw_vtp(std::uint64_t points_bytes = 72, const std::string& offsets 
 
 // Three points and one line as vtkXMLPolyDataWriter writes them in binary mode: inline base64, UInt64
 // headers, zlib compression (the data strings are that writer's output).
-std::string small_compressed_vtp(const std::string& points_data =
-                                     "AQAAAAAAAAAAgAAAAAAAAEgAAAAAAAAAEgAAAAAAAAA=eJxjYMAHPtjjF0fIAwBSZQOO") {
+std::string small_compressed_vtp(
+    const std::string& points_data = "AQAAAAAAAAAAgAAAAAAAAEgAAAAAAAAAEgAAAAAAAAA=eJxjYMAHPtjjF0fIAwBSZQOO") {
   return R"(<?xml version="1.0"?>
 <VTKFile type="PolyData" version="1.0" byte_order="LittleEndian" header_type="UInt64" compressor="vtkZLibDataCompressor">
   <PolyData>
     <Piece NumberOfPoints="3" NumberOfVerts="0" NumberOfLines="1" NumberOfStrips="0" NumberOfPolys="0">
       <Points>
         <DataArray type="Float64" Name="Points" NumberOfComponents="3" format="binary">
-          )" + points_data + R"(
+          )" +
+         points_data + R"(
         </DataArray>
       </Points>
       <Lines>
@@ -166,7 +169,8 @@ void expect_every_prefix_fails(const fs::path& full, const fs::path& part) {
     write(part, bytes.substr(0, k));
     const std::string m = read_error(part);
     if (m.empty()) {
-      EXPECT_EQ(bytes.find_first_not_of(" \t\r\n", k), std::string::npos) << "a prefix of " << k << " bytes read as a dataset";
+      EXPECT_EQ(bytes.find_first_not_of(" \t\r\n", k), std::string::npos)
+          << "a prefix of " << k << " bytes read as a dataset";
       EXPECT_TRUE(analysis::dataset_diff(io::read_dataset(part), whole, 0).empty());
     } else {
       EXPECT_EQ(m.rfind("cannot read '", 0), 0u) << m;
@@ -272,12 +276,15 @@ TEST(ReadVtp, CraftedDataHeadersAreErrors) {
   expect_read_error(dir.path / "offset.vtp", "file");
 
   // Compression headers: 2^40 blocks; a block claiming to expand past any compressor; blocks past the end.
-  const std::string blocks = small_compressed_vtp(base64(words64({std::uint64_t{1} << 40, 32768, 72, 18})) + "eJxjYMAHPtjjF0fIAwBSZQOO");
+  const std::string blocks =
+      small_compressed_vtp(base64(words64({std::uint64_t{1} << 40, 32768, 72, 18})) + "eJxjYMAHPtjjF0fIAwBSZQOO");
   write(dir.path / "blocks.vtp", blocks);
   expect_read_error(dir.path / "blocks.vtp", "1099511627776 blocks");
-  write(dir.path / "ratio.vtp", small_compressed_vtp(base64(words64({1, std::uint64_t{1} << 30, 0, 18})) + "eJxjYMAHPtjjF0fIAwBSZQOO"));
+  write(dir.path / "ratio.vtp",
+        small_compressed_vtp(base64(words64({1, std::uint64_t{1} << 30, 0, 18})) + "eJxjYMAHPtjjF0fIAwBSZQOO"));
   expect_read_error(dir.path / "ratio.vtp", "which no compressor makes");
-  write(dir.path / "past.vtp", small_compressed_vtp(base64(words64({1, 32768, 72, 5000})) + "eJxjYMAHPtjjF0fIAwBSZQOO"));
+  write(dir.path / "past.vtp",
+        small_compressed_vtp(base64(words64({1, 32768, 72, 5000})) + "eJxjYMAHPtjjF0fIAwBSZQOO"));
   expect_read_error(dir.path / "past.vtp", "file");
   write(dir.path / "notbase64.vtp", small_compressed_vtp("AQAAAAAAAAAAgAAAA*AAAEgAAAAAAAAAEgAAAAAAAAA="));
   expect_read_error(dir.path / "notbase64.vtp", "base64");
@@ -347,7 +354,8 @@ TEST(ReadFiles, GarbageEmptyAndSpecialFilesAreErrors) {
 TEST(ReadSvg, PathDataMustBeFiniteAbsolutePairs) {
   TempDir dir;
   auto svg = [&](const std::string& d, const std::string& tail = "</svg>\n") {
-    write(dir.path / "x.svg", "<?xml version=\"1.0\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"><g><path d=\"" + d + "\"/></g>" + tail);
+    write(dir.path / "x.svg",
+          "<?xml version=\"1.0\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"><g><path d=\"" + d + "\"/></g>" + tail);
     return dir.path / "x.svg";
   };
   const io::Dataset d = io::read_dataset(svg("M0 0L1 1 2,2M-1-2 3e1 4"));

@@ -1,23 +1,20 @@
-#include "kernels/io/read.h"
 #include "kernels/io/save.h"
 
 #include <gtest/gtest.h>
 
-#include "io_fixtures.h"
-
 #include <fstream>
 
+#include "io_fixtures.h"
 #include "kernels/analysis/dataset_diff.h"
 #include "kernels/geom/error.h"
+#include "kernels/io/read.h"
 
 using namespace selfsim;
 namespace fs = std::filesystem;
 using io_fixtures::TempDir;
 using io_fixtures::two_paths;
 
-namespace {
-
-}  // namespace
+namespace {}  // namespace
 
 TEST(SaveVtp, RoundTripKeepsPointsCellsAndFields) {
   TempDir dir;

@@ -3,9 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <vector>
-
 #include <cmath>
+#include <vector>
 
 #include "kernels/lsystem/turtle.h"
 #include "table1.h"
@@ -30,8 +29,8 @@ TEST(ProductionCount, ClosedFormsOfTable1) {
 }
 
 TEST(ProductionCount, PredictionEqualsExpansion) {
-  for (auto g : {table1::dragon(), table1::terdragon(), table1::hilbert(), table1::arrowhead(), table1::koch_snowflake(),
-                 table1::gosper()})
+  for (auto g : {table1::dragon(), table1::terdragon(), table1::hilbert(), table1::arrowhead(),
+                 table1::koch_snowflake(), table1::gosper()})
     for (int n = 0; n <= 6; ++n) {
       const LevelCounts c = predict_counts(g, n);
       EXPECT_EQ(c.symbols, static_cast<double>(expand_string(g, n, 1e9).size()));
@@ -63,14 +62,14 @@ double nesting(const std::string& s) {
 }
 
 TEST(ProductionCount, BranchDepthEqualsExpansion) {
-  const std::vector<Grammar> grammars{
-      {.axiom = "X", .rules = {{'X', "F+[[X]-X]-F[-FX]+X"}, {'F', "FF"}}},
-      {.axiom = "X", .rules = {{'X', "[X[X"}}},
-      {.axiom = "[F]X[", .rules = {{'X', "F[X]X[[F"}, {'F', "F[F]"}}},
-      table1::dragon()};
+  const std::vector<Grammar> grammars{{.axiom = "X", .rules = {{'X', "F+[[X]-X]-F[-FX]+X"}, {'F', "FF"}}},
+                                      {.axiom = "X", .rules = {{'X', "[X[X"}}},
+                                      {.axiom = "[F]X[", .rules = {{'X', "F[X]X[[F"}, {'F', "F[F]"}}},
+                                      table1::dragon()};
   for (const Grammar& g : grammars)
     for (int level = 0; level <= 6; ++level)
-      EXPECT_EQ(predict_counts(g, level).max_depth, nesting(expand_string(g, level, 1e7))) << g.axiom << " level " << level;
+      EXPECT_EQ(predict_counts(g, level).max_depth, nesting(expand_string(g, level, 1e7)))
+          << g.axiom << " level " << level;
   // X -> [X[X: 2^(level+1) - 2 open at once.
   EXPECT_EQ(predict_counts(grammars[1], 24).max_depth, 33554430);
 }

@@ -1,5 +1,4 @@
 #include "kernels/lsystem/turtle.h"
-#include "kernels/lsystem/production_count.h"
 
 #include <gtest/gtest.h>
 
@@ -8,6 +7,7 @@
 #include <set>
 
 #include "kernels/geom/error.h"
+#include "kernels/lsystem/production_count.h"
 #include "table1.h"
 
 using namespace selfsim;
@@ -28,7 +28,8 @@ double shoelace_area(std::span<const Vec2> p) {
 }  // namespace
 
 TEST(Turtle, OpenCurvesRunFromOriginToUnit) {
-  for (auto g : {table1::dragon(), table1::terdragon(), table1::hilbert(), table1::arrowhead(), table1::koch(), table1::gosper()})
+  for (auto g : {table1::dragon(), table1::terdragon(), table1::hilbert(), table1::arrowhead(), table1::koch(),
+                 table1::gosper()})
     for (int n = 0; n <= 9; ++n) {
       const Polyline c = at(g, n);
       ASSERT_EQ(c.paths(), 1u);
@@ -76,7 +77,8 @@ TEST(Turtle, KochSnowflakePerimeterAndArea) {
 }
 
 TEST(Turtle, ClosedCurvesKeepShrinkAndStartAngle) {
-  Grammar square{.axiom = "F+F+F+F", .rules = {{'F', "F+F-F-FF+F+F-F"}}, .angle = 90, .start_angles = {30}, .shrink = 0.25};
+  Grammar square{
+      .axiom = "F+F+F+F", .rules = {{'F', "F+F-F-FF+F+F-F"}}, .angle = 90, .start_angles = {30}, .shrink = 0.25};
   const Polyline c = at(square, 2);
   EXPECT_NEAR(norm(c.points[1] - c.points[0]), 1.0 / 16, 1e-12);
   const Vec2 d = c.points[1] - c.points[0];
@@ -127,9 +129,7 @@ TEST(Turtle, RefusesLevelsOverTheLimitBeforeWork) {
   }
 }
 
-TEST(Turtle, UnbalancedBracketIsAnError) {
-  EXPECT_THROW(at(Grammar{.axiom = "F]F"}, 0), Error);
-}
+TEST(Turtle, UnbalancedBracketIsAnError) { EXPECT_THROW(at(Grammar{.axiom = "F]F"}, 0), Error); }
 
 TEST(Turtle, CancellationStopsTheKernel) {
   struct StopAtOnce : Progress {

@@ -25,7 +25,8 @@ Polyline run(const Polyline& path, const Polyline& generator, int levels, std::v
 // Points of two curves agree to rounding.
 void expect_same(const Polyline& a, const Polyline& b, int level) {
   ASSERT_EQ(a.points.size(), b.points.size()) << level;
-  for (std::size_t i = 0; i < a.points.size(); ++i) ASSERT_NEAR(norm(a.points[i] - b.points[i]), 0, 1e-12) << level << " " << i;
+  for (std::size_t i = 0; i < a.points.size(); ++i)
+    ASSERT_NEAR(norm(a.points[i] - b.points[i]), 0, 1e-12) << level << " " << i;
 }
 
 }  // namespace
@@ -36,7 +37,8 @@ TEST(Substitute, KochSnowflakeEqualsTheLSystem) {
     const Polyline a = run(triangle, koch_generator, n);
     const Polyline b = lsystem::curve(table1::koch_snowflake(), {.level = n}, no_progress());
     ASSERT_EQ(a.points.size(), b.points.size());
-    for (std::size_t i = 0; i < a.points.size(); ++i) ASSERT_NEAR(norm(a.points[i] - b.points[i]), 0, 1e-12) << n << " " << i;
+    for (std::size_t i = 0; i < a.points.size(); ++i)
+      ASSERT_NEAR(norm(a.points[i] - b.points[i]), 0, 1e-12) << n << " " << i;
   }
 }
 
@@ -44,7 +46,8 @@ TEST(Substitute, HeighwayDragonIsATentWithItsSecondHalfTurned) {
   // f1(z) = (1+i)z/2 and f2(z) = 1 - (1-i)z/2: the second copy is the half-turned one, walked backwards.
   using enum SegmentTransform;
   for (int n = 0; n <= 10; ++n)
-    expect_same(run(unit, tent, n, {Identity, HalfTurn}), lsystem::curve(table1::dragon(), {.level = n}, no_progress()), n);
+    expect_same(run(unit, tent, n, {Identity, HalfTurn}), lsystem::curve(table1::dragon(), {.level = n}, no_progress()),
+                n);
 }
 
 TEST(Substitute, TerdragonIsItsFirstLevel) {
@@ -92,7 +95,7 @@ TEST(Substitute, ReflectionsComposeAcrossLevels) {
 
 TEST(Substitute, Errors) {
   EXPECT_THROW(run(unit, Polyline::single({{0, 0}, {0.5, 0.5}}), 1), Error);  // generator not ending at 1
-  EXPECT_THROW(run(unit, tent, 1, {SegmentTransform::Identity}), Error);    // one transform for two segments
+  EXPECT_THROW(run(unit, tent, 1, {SegmentTransform::Identity}), Error);      // one transform for two segments
   EXPECT_THROW(run(unit, tent, -1), Error);
   EXPECT_THROW(substitute::substitute(unit, tent, {.levels = 60, .budget = {1e6}}, no_progress()), Error);
 }
