@@ -16,7 +16,7 @@ void save_dragon(benchmark::State& state, std::string ext) {
   const auto file = std::filesystem::temp_directory_path() / ("selfsim_bench" + ext);
   double bytes = 0;
   for (auto _ : state) {
-    io::save_curve(c, file, {}, no_progress());
+    io::save(&c, file, {}, no_progress());
     bytes = static_cast<double>(std::filesystem::file_size(file));
   }
   std::filesystem::remove(file);

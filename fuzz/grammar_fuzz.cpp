@@ -77,8 +77,9 @@ bool moderate_turns(const lsystem::Grammar& g) {
 
 void check_curve(const lsystem::Grammar& g, const lsystem::CurveOptions& opt, const lsystem::LevelCounts& counts,
                  const Polyline& c) {
-  require(c.level == opt.level,
-          "curve level " + std::to_string(c.level) + " != requested " + std::to_string(opt.level));
+  const Field* level = c.point_fields.find("level");
+  require(level != nullptr && level->uniform && level->at(0) == opt.level,
+          "curve level field missing or != requested " + std::to_string(opt.level));
   require(c.finite(), "curve has non-finite points");
   std::size_t begin = 0;
   for (std::size_t end : c.path_ends) {

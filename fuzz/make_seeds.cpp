@@ -1,5 +1,5 @@
 // Writes the seed corpora of fuzz/corpus/: grammars in the grammar target's text format, and small .vtp
-// and .svg files written by selfsim's own writers (io::save_curve). Run once and commit the output:
+// and .svg files written by selfsim's own writers (io::save). Run once and commit the output:
 //   build-fuzz/fuzz/fuzz_make_seeds fuzz/corpus
 // (The recipe target's seeds are hand-written recipes in fuzz/corpus/recipe/, plus examples/ and
 // tests/errors/, which fuzz/run.sh adds.)
@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
   for (const char* ext : {".vtp", ".svg"}) {
     const fs::path sub = dir / (ext + 1);
     fs::create_directories(sub);
-    for (const File& f : files) io::save_curve(f.curve, sub / (std::string(f.name) + ext), f.opt, no_progress());
+    for (const File& f : files) io::save(&f.curve, sub / (std::string(f.name) + ext), f.opt, no_progress());
   }
   std::printf("wrote %zu grammars and %zu .vtp/.svg files under %s\n", grammars.size(), files.size(), dir.c_str());
   return 0;

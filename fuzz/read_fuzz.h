@@ -6,9 +6,9 @@
 //
 // Environment:
 //   SELFSIM_FUZZ_VERBOSE=1      print each refusal's message, or the size of what was read
-//   SELFSIM_FUZZ_VTP_STRICT=1   .vtp only: VTK misbehaving in read_vtp's child process (a crash, a
+//   SELFSIM_FUZZ_VTP_STRICT=1   .vtp only: VTK misbehaving in read_vtk's child process (a crash, a
 //                               sanitizer report, a hang, running out of memory) is a finding too, although
-//                               read_vtp turns it into an Error by design: it means check_vtp_header let
+//                               read_vtk turns it into an Error by design: it means check_vtk_header let
 //                               through a file that VTK cannot handle.
 #pragma once
 
@@ -49,14 +49,14 @@ inline int read_one(const std::uint8_t* data, std::size_t size, const char* exte
   } catch (const Error& e) {
     const std::string_view message = e.what();
     if (verbose) std::fprintf(stderr, "refused: %s\n", e.what());
-    // Only read_vtp's own words count: the reason comes right after "cannot read 'FILE': " (a file may
+    // Only read_vtk's own words count: the reason comes right after "cannot read 'FILE': " (a file may
     // quote anything in the reasons VTK or the header check give).
     const std::string own = "cannot read '" + file.string() + "': the VTK reader ";
     if (strict && message.substr(0, own.size()) == own)
       for (const char* what :
            {"crashed (", "failed (exit status", "did not finish within", "was killed", "ran out of memory"})
         if (message.substr(own.size()).starts_with(what))
-          finding(std::string("check_vtp_header let through a file VTK cannot read: the VTK reader ") + what);
+          finding(std::string("check_vtk_header let through a file VTK cannot read: the VTK reader ") + what);
     return 0;
   } catch (...) {
     unexpected_exception("io::read_dataset");

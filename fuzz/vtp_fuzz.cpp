@@ -1,4 +1,4 @@
-// Fuzz target: the .vtp reader (kernels/io/vtp_read.cpp, VTK's vtkXMLPolyDataReader underneath), as
+// Fuzz target: the .vtp reader (kernels/io/vtk_read.cpp, VTK's vtkXMLPolyDataReader underneath), as
 // `selfsim info FILE.vtp` and `selfsim diff` reach it. See read_fuzz.h.
 #include <vtkObject.h>
 

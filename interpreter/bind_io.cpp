@@ -1,23 +1,29 @@
 // save(value, "file.ext", opts?) and param(name, default): the recipe's only ways out and in.
+#include <algorithm>
+
 #include "interpreter/bindings.h"
-#include "interpreter/curve_value.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
 #include "interpreter/parse_text.h"
 #include "interpreter/run_context.h"
+#include "interpreter/value_types.h"
 #include "kernels/io/save.h"
 
 namespace selfsim::interp {
 
 namespace {
 
-io::SaveOptions read_save_options(lua_State* L, int index) {
+// The save() options of format f, read by type; an option of another format is named as such, and any
+// other unknown key gets Options' "did you mean" among f's own options.
+io::SaveOptions read_save_options(lua_State* L, int index, const io::Format& f) {
   Options o(L, index);
   io::SaveOptions s;
-  s.stroke = o.string("stroke", s.stroke);
-  s.stroke_width = o.number("stroke_width", s.stroke_width);
-  s.fill = o.string("fill", s.fill);
-  s.size = o.number("size", s.size);
+  auto has = [&](const char* name) { return std::find(f.options.begin(), f.options.end(), name) != f.options.end(); };
+  if (has("stroke")) s.stroke = o.string("stroke", s.stroke);
+  if (has("stroke_width")) s.stroke_width = o.number("stroke_width", s.stroke_width);
+  if (has("fill")) s.fill = o.string("fill", s.fill);
+  if (has("size")) s.size = o.number("size", s.size);
+  io::check_options(f, o.unread());
   o.finish();
   return s;
 }
@@ -25,14 +31,15 @@ io::SaveOptions read_save_options(lua_State* L, int index) {
 int save(lua_State* L) {
   return call_kernel(L, "save", [&] {
     RunContext& run = RunContext::of(L);
-    const Held<Polyline> c = test_curve(L, 1);
-    if (c == nullptr) throw Error("argument 1 must be a curve, got " + describe(L, 1));
+    const std::optional<AnyValue> v = test_any(L, 1);
+    if (!v) throw Error("argument 1 must be a curve or a mesh, got " + describe(L, 1));
     if (lua_type(L, 2) != LUA_TSTRING) throw Error("argument 2 must be a file name, got " + describe(L, 2));
     const std::string name = text_value(L, 2, "argument 2 (the file name)");
-    const io::SaveOptions opt = read_save_options(L, 3);
-    const std::string written = io::save_curve(*c, run.config.out_dir, name, opt, run);
+    const io::Format& format = io::format_for(name, io::kind_of(v->ref()));
+    const io::SaveOptions opt = read_save_options(L, 3, format);
+    const std::string written = io::save(v->ref(), run.config.out_dir, name, opt, run);
     run.finish_bar();
-    run.saved.push_back(written + " (" + std::to_string(c->points.size()) + " points)");
+    run.saved.push_back(written + " (" + std::to_string(v->points()) + " points)");
     return 0;
   });
 }

@@ -8,6 +8,8 @@
 #include "interpreter/lua_support.h"
 #include "kernels/analysis/dataset_diff.h"
 #include "kernels/geom/error.h"
+#include "kernels/geom/mesh_check.h"
+#include "kernels/io/dataset_values.h"
 #include "kernels/io/read.h"
 
 namespace selfsim::interp {
@@ -34,6 +36,18 @@ int report(const char* command) {
   return 2;
 }
 
+// A surface's topology, what a user about to print it wants to know: is it closed and manifold?
+void print_surface(const Mesh& m) {
+  const MeshTopology t = mesh_topology(m);
+  std::printf("triangles: %zu\nsurface: %s, %zu component%s, %zu boundary loop%s, Euler characteristic %lld\n", t.faces,
+              t.closed()     ? "closed manifold"
+              : t.manifold() ? "manifold with boundary"
+                             : "not manifold",
+              t.components, t.components == 1 ? "" : "s", t.boundary_loops, t.boundary_loops == 1 ? "" : "s",
+              t.euler());
+  if (!t.manifold()) std::printf("first problem: %s\n", t.first_problem.c_str());
+}
+
 }  // namespace
 
 int diff_command(const std::string& a, const std::string& b, double tol) {
@@ -57,7 +71,10 @@ int info_command(const std::string& file) {
         lo[k] = i == 0 ? d.points[i][k] : std::min(lo[k], d.points[i][k]);
         hi[k] = i == 0 ? d.points[i][k] : std::max(hi[k], d.points[i][k]);
       }
-    std::printf("file: %s\npoints: %zu\ncells: %zu\n", file.c_str(), d.points.size(), d.cell_ends.size());
+    static const char* const shapes[] = {"polylines", "polygons", "mixed"};
+    std::printf("file: %s\npoints: %zu\ncells: %zu %s\n", shown_text(file, 4096).c_str(), d.points.size(),
+                d.cell_ends.size(), shapes[static_cast<int>(d.shapes)]);
+    if (d.shapes == io::CellShapes::polygons) print_surface(io::dataset_mesh(d));
     std::printf("bbox: [%.9g, %.9g, %.9g] .. [%.9g, %.9g, %.9g]\n", lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
     for (const auto& [name, f] : d.point_fields)
       std::printf("point field: %s (%d component%s)\n", shown_text(name, 200).c_str(), f.components,

@@ -136,11 +136,11 @@ int enum_index(const std::string& value, const std::vector<std::string>& names, 
   throw Error("invalid " + what + " '" + value + "'" + detail + ", expected one of: " + quoted_list(names));
 }
 
-void Options::finish() {
-  if (lua_type(L, index_) != LUA_TTABLE) return;
+std::vector<std::string> Options::unread() {
+  std::vector<std::string> unknown;
+  if (lua_type(L, index_) != LUA_TTABLE) return unknown;
   // Keys in a fixed order, so the key reported is the same on every run.
   const int n = push_sorted_keys(L, index_);
-  std::vector<std::string> unknown;
   for (int i = 1; i <= n; ++i) {
     lua_rawgeti(L, -1, i);
     if (lua_type(L, -1) != LUA_TSTRING)
@@ -151,6 +151,11 @@ void Options::finish() {
     lua_pop(L, 1);
   }
   lua_pop(L, 1);
+  return unknown;
+}
+
+void Options::finish() {
+  const std::vector<std::string> unknown = unread();
   if (unknown.empty()) return;
   const std::vector<std::string> known(read_.begin(), read_.end());
   const std::string near = suggestion(unknown.front(), known);

@@ -23,6 +23,8 @@ class Options {
   std::string string(const char* key, const std::string& fallback);
   // Pushes the value at key (marking it read) and returns its Lua type; the caller pops it.
   int push(const char* key);
+  // The keys no reader asked for, in sorted order.
+  std::vector<std::string> unread();
   // Throws Error naming the first (in sorted order) key that no reader asked for, and the valid ones.
   void finish();
 

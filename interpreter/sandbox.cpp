@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "interpreter/folder_check.h"
 #include "interpreter/lua_support.h"
 
 namespace selfsim::interp {
@@ -52,11 +53,7 @@ bool load_module(lua_State* L, const std::string& name) {
     std::error_code ec;  // never throw through Lua: a name too long is just "not found"
     if (!std::filesystem::is_regular_file(file, ec)) continue;
     // Modules come from inside their folder: a symbolic link leading out of it is refused, as save does.
-    std::error_code file_ec, dir_ec;
-    const auto real = std::filesystem::canonical(file, file_ec);
-    const auto home = std::filesystem::canonical(dir.empty() ? std::filesystem::path(".") : dir, dir_ec);
-    const auto inside = std::mismatch(home.begin(), home.end(), real.begin(), real.end()).first == home.end();
-    if (file_ec || dir_ec || !inside) {
+    if (!resolves_inside(dir, file)) {
       lua_pushfstring(L, "%srequire: module '%s' (%s) leads outside its folder through a symbolic link",
                       recipe_where(L).c_str(), module, file.c_str());
       return false;

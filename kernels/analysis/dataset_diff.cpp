@@ -30,15 +30,15 @@ struct Report {
   }
 };
 
-void compare_fields(const char* kind, const std::map<std::string, io::Field>& a,
-                    const std::map<std::string, io::Field>& b, double tol, Report& r) {
+void compare_fields(const char* kind, const std::map<std::string, io::FieldValues>& a,
+                    const std::map<std::string, io::FieldValues>& b, double tol, Report& r) {
   for (const auto& [name, fa] : a) {
     auto it = b.find(name);
     if (it == b.end()) {
       r.add(std::string(kind) + " field '" + name + "' only in the first file");
       continue;
     }
-    const io::Field& fb = it->second;
+    const io::FieldValues& fb = it->second;
     if (fa.components != fb.components || fa.values.size() != fb.values.size()) {
       r.add(std::string(kind) + " field '" + name + "' has a different size");
       continue;
@@ -53,6 +53,20 @@ void compare_fields(const char* kind, const std::map<std::string, io::Field>& a,
   }
   for (const auto& [name, fb] : b)
     if (!a.contains(name)) r.add(std::string(kind) + " field '" + name + "' only in the second file");
+}
+
+// The point ids of cell i.
+std::vector<std::size_t> cell_of(const io::Dataset& d, std::size_t i) {
+  const std::size_t begin = i == 0 ? 0 : d.cell_ends[i - 1];
+  return {d.cell_points.begin() + static_cast<std::ptrdiff_t>(begin),
+          d.cell_points.begin() + static_cast<std::ptrdiff_t>(d.cell_ends[i])};
+}
+
+// "(0, 1, 2)", at most 8 ids shown.
+std::string ids_text(const std::vector<std::size_t>& ids) {
+  std::string s = "(";
+  for (std::size_t k = 0; k < ids.size() && k < 8; ++k) s += (k ? ", " : "") + std::to_string(ids[k]);
+  return s + (ids.size() > 8 ? ", ... " + std::to_string(ids.size()) + " in all)" : ")");
 }
 
 }  // namespace
@@ -70,9 +84,17 @@ std::vector<std::string> dataset_diff(const io::Dataset& a, const io::Dataset& b
                 num(b.points[i][2]) + ")");
           break;
         }
-  if (a.cell_ends != b.cell_ends || a.cell_points != b.cell_points)
-    r.add("cells differ: " + std::to_string(a.cell_ends.size()) + " vs " + std::to_string(b.cell_ends.size()) +
-          " cells");
+  if (a.cell_ends.size() != b.cell_ends.size())
+    r.add("cell count differs: " + std::to_string(a.cell_ends.size()) + " vs " + std::to_string(b.cell_ends.size()));
+  else if (a.shapes != b.shapes)
+    r.add("cell kinds differ (polylines, polygons or mixed)");
+  else
+    for (std::size_t i = 0; i < a.cell_ends.size(); ++i)
+      if (cell_of(a, i) != cell_of(b, i)) {
+        r.add("cell " + std::to_string(i) + " differs: points " + ids_text(cell_of(a, i)) + " vs " +
+              ids_text(cell_of(b, i)));
+        break;
+      }
   compare_fields("point", a.point_fields, b.point_fields, tol, r);
   compare_fields("cell", a.cell_fields, b.cell_fields, tol, r);
   return r.lines;

@@ -1,29 +1,35 @@
-// Axis-aligned bounding box of 2D points.
+// Axis-aligned bounding box of 2D or 3D points.
 #pragma once
 
-#include <algorithm>
 #include <limits>
 #include <span>
 
 #include "kernels/geom/vec2.h"
+#include "kernels/geom/vec3.h"
 
 namespace selfsim {
 
-struct BBox2 {
-  Vec2 min{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
-  Vec2 max{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+template <class V>
+struct BBox {
+  V min = V::all(std::numeric_limits<double>::infinity());
+  V max = V::all(-std::numeric_limits<double>::infinity());
 
   bool empty() const { return min.x > max.x; }
-  void add(Vec2 p) {
-    min = {std::min(min.x, p.x), std::min(min.y, p.y)};
-    max = {std::max(max.x, p.x), std::max(max.y, p.y)};
+  void add(V p) {
+    min = min_each(min, p);
+    max = max_each(max, p);
   }
-  Vec2 size() const { return empty() ? Vec2{} : max - min; }
+  // Extent along each axis; zero for an empty box.
+  V size() const { return empty() ? V{} : max - min; }
 };
 
-inline BBox2 bbox_of(std::span<const Vec2> points) {
-  BBox2 b;
-  for (Vec2 p : points) b.add(p);
+using BBox2 = BBox<Vec2>;
+using BBox3 = BBox<Vec3>;
+
+template <class V>
+BBox<V> bbox_of(std::span<const V> points) {
+  BBox<V> b;
+  for (V p : points) b.add(p);
   return b;
 }
 

@@ -2,15 +2,24 @@
 
 namespace selfsim {
 
-Polyline Polyline::single(std::vector<Vec2> pts, int level) {
-  Polyline c;
+namespace {
+
+// x - x is 0 for a finite x and NaN otherwise: no branch per coordinate.
+inline bool finite_bits(Vec2 p) { return (p.x - p.x == 0) & (p.y - p.y == 0); }
+inline bool finite_bits(Vec3 p) { return (p.x - p.x == 0) & (p.y - p.y == 0) & (p.z - p.z == 0); }
+
+}  // namespace
+
+template <class V>
+PolylineT<V> PolylineT<V>::single(std::vector<V> pts) {
+  PolylineT c;
   c.points = std::move(pts);
-  c.level = level;
   c.close_path();
   return c;
 }
 
-std::size_t Polyline::segments() const {
+template <class V>
+std::size_t PolylineT<V>::segments() const {
   std::size_t n = 0;
   for (std::size_t i = 0; i < paths(); ++i) {
     const std::size_t k = path(i).size();
@@ -19,7 +28,8 @@ std::size_t Polyline::segments() const {
   return n;
 }
 
-double Polyline::length() const {
+template <class V>
+double PolylineT<V>::length() const {
   double total = 0;
   for (std::size_t i = 0; i < paths(); ++i) {
     const auto p = path(i);
@@ -28,17 +38,27 @@ double Polyline::length() const {
   return total;
 }
 
-bool Polyline::finite() const {
-  // No early exit, so the loop stays branch-free: x - x is 0 for a finite x and NaN otherwise.
-  bool ok = true;
-  for (const Vec2& p : points) ok &= (p.x - p.x == 0) & (p.y - p.y == 0);
+template <class V>
+bool PolylineT<V>::finite() const {
+  bool ok = true;  // no early exit, so the loop stays branch-free
+  for (const V& p : points) ok &= finite_bits(p);
   return ok;
 }
 
-void Polyline::close_path() {
+template <class V>
+void PolylineT<V>::close_path() {
   const std::size_t begin = path_ends.empty() ? 0 : path_ends.back();
   if (points.size() > begin) path_ends.push_back(points.size());
 }
+
+template <class V>
+std::size_t PolylineT<V>::bytes() const {
+  return points.capacity() * sizeof(V) + path_ends.capacity() * sizeof(std::size_t) + point_fields.bytes() +
+         cell_fields.bytes();
+}
+
+template struct PolylineT<Vec2>;
+template struct PolylineT<Vec3>;
 
 Polyline transformed(const Polyline& c, const Similarity2& t) {
   Polyline out = c;

@@ -1,5 +1,7 @@
-// A curve made of one or more polylines ("paths") sharing one point array. Branches of an L-system and the
-// several curves of a composition are separate paths of one Polyline.
+// A curve made of one or more polylines ("paths") sharing one point array, in 2D (Polyline, 16 bytes a
+// point) or 3D (Polyline3). Branches of an L-system and the several curves of a composition are separate
+// paths of one value. Point fields have one tuple per point, cell fields one per path (a path is one VTK
+// polyline cell).
 #pragma once
 
 #include <cstddef>
@@ -7,36 +9,47 @@
 #include <vector>
 
 #include "kernels/geom/bbox.h"
+#include "kernels/geom/field.h"
 #include "kernels/geom/similarity.h"
 #include "kernels/geom/vec2.h"
+#include "kernels/geom/vec3.h"
 
 namespace selfsim {
 
-struct Polyline {
-  std::vector<Vec2> points;            // all paths' points, path after path
+template <class V>
+struct PolylineT {
+  using Point = V;
+
+  std::vector<V> points;               // all paths' points, path after path
   std::vector<std::size_t> path_ends;  // path i is points[path_ends[i-1] (or 0) .. path_ends[i])
-  int level = 0;                       // construction level, written as a point field
+  Fields point_fields;                 // one tuple per point (or uniform)
+  Fields cell_fields;                  // one tuple per path (or uniform)
 
   // A polyline of a single path through `pts`.
-  static Polyline single(std::vector<Vec2> pts, int level = 0);
+  static PolylineT single(std::vector<V> pts);
 
   std::size_t paths() const { return path_ends.size(); }
   std::size_t path_begin(std::size_t i) const { return i == 0 ? 0 : path_ends[i - 1]; }
-  std::span<const Vec2> path(std::size_t i) const {
-    return {points.data() + path_begin(i), path_ends[i] - path_begin(i)};
-  }
+  std::span<const V> path(std::size_t i) const { return {points.data() + path_begin(i), path_ends[i] - path_begin(i)}; }
   // Number of line segments over all paths.
   std::size_t segments() const;
   // Total length of all paths.
   double length() const;
-  BBox2 bbox() const { return bbox_of(points); }
+  BBox<V> bbox() const { return bbox_of<V>(points); }
   // True if every coordinate is finite.
   bool finite() const;
   // Ends the current path at the current end of `points` (no-op for an empty path).
   void close_path();
+  // Bytes of C++ memory the value holds (points, paths and fields).
+  std::size_t bytes() const;
 };
 
-// c with every point mapped by t (paths and level kept).
+using Polyline = PolylineT<Vec2>;
+using Polyline3 = PolylineT<Vec3>;
+extern template struct PolylineT<Vec2>;
+extern template struct PolylineT<Vec3>;
+
+// c with every point mapped by t (paths and fields kept).
 Polyline transformed(const Polyline& c, const Similarity2& t);
 
 }  // namespace selfsim

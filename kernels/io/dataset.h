@@ -17,17 +17,21 @@ namespace selfsim::io {
 // allocating anything: a few megabytes of compressed zeros cannot declare their way to an OOM kill.
 std::uint64_t read_budget_bytes();
 
-struct Field {
+struct FieldValues {
   int components = 1;
   std::vector<double> values;  // tuple after tuple
 };
 
+// What a dataset's cells are: polylines (curves), polygons (surfaces), or both.
+enum class CellShapes : std::uint64_t { lines = 0, polygons = 1, mixed = 2 };
+
 struct Dataset {
+  CellShapes shapes = CellShapes::lines;
   std::vector<std::array<double, 3>> points;
   std::vector<std::size_t> cell_ends;  // cell i uses point ids cell_points[cell_ends[i-1] .. cell_ends[i])
   std::vector<std::size_t> cell_points;
-  std::map<std::string, Field> point_fields;
-  std::map<std::string, Field> cell_fields;
+  std::map<std::string, FieldValues> point_fields;
+  std::map<std::string, FieldValues> cell_fields;
 };
 
 }  // namespace selfsim::io

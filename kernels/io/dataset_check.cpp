@@ -9,7 +9,7 @@ namespace selfsim::io {
 
 namespace {
 
-void check_fields(const std::map<std::string, Field>& fields, std::size_t tuples, const char* where) {
+void check_fields(const std::map<std::string, FieldValues>& fields, std::size_t tuples, const char* where) {
   for (const auto& [name, f] : fields) {
     const std::string what = std::string(where) + " field '" + name + "'";
     if (f.components < 1) throw Error(what + " has " + std::to_string(f.components) + " components");

@@ -24,12 +24,12 @@ void get_values(PipeIn& in, std::vector<T>& v, std::uint64_t max) {
   in.read(v.data(), v.size() * sizeof(T));
 }
 
-void get_fields(PipeIn& in, std::map<std::string, Field>& fields, std::uint64_t max_values) {
+void get_fields(PipeIn& in, std::map<std::string, FieldValues>& fields, std::uint64_t max_values) {
   const std::uint64_t count = get_count(in, 1u << 16);
   for (std::uint64_t i = 0; i < count; ++i) {
     std::string name(static_cast<std::size_t>(get_count(in, 1u << 16)), '\0');
     in.read(name.data(), name.size());
-    Field f;
+    FieldValues f;
     f.components = static_cast<int>(get_count(in, 1u << 16));
     get_values(in, f.values, max_values);
     fields[name] = std::move(f);
@@ -40,6 +40,7 @@ void get_fields(PipeIn& in, std::map<std::string, Field>& fields, std::uint64_t 
 
 Dataset receive_dataset(PipeIn& in, std::uint64_t max_values) {
   Dataset d;
+  d.shapes = static_cast<CellShapes>(get_count(in, 2));
   get_values(in, d.points, max_values / 3);
   get_values(in, d.cell_ends, max_values);
   get_values(in, d.cell_points, max_values);

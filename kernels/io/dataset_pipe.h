@@ -1,5 +1,6 @@
 // A Dataset sent from a reader child process to its parent (see child_process.h). The wire format, in
 // native byte order (both ends are the same program on the same machine):
+//   cell shapes:  a CellShapes value as a uint64
 //   points:       count, then count x (x, y, z) doubles
 //   cell ends:    count, then count uint64
 //   cell points:  count, then count uint64

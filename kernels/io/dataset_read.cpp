@@ -20,14 +20,15 @@ Dataset read_dataset(const std::filesystem::path& file) {
     std::string ext = file.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (ext == ".vtp" || ext == ".svg") {
+    const bool vtk = ext == ".vtp" || ext == ".vtu", mesh = ext == ".stl" || ext == ".obj" || ext == ".ply";
+    if (vtk || mesh || ext == ".svg") {
       // selfsim never writes an empty file, and two broken files must never compare as "same".
-      Dataset d = ext == ".vtp" ? read_vtp(file) : read_svg(file);
+      Dataset d = vtk ? read_vtk(file, ext == ".vtu") : mesh ? read_mesh_file(file, ext) : read_svg(file);
       if (d.points.empty()) throw Error("it holds no points");
       return d;
     }
     const RegularFile exists(file);  // a missing or unreadable file says so first
-    throw Error(cannot_read(file, "expected a .vtp or .svg file"));
+    throw Error(cannot_read(file, "expected a .vtp, .vtu, .svg, .stl, .obj or .ply file"));
   } catch (const Error& e) {
     const std::string message = e.what();
     if (message.rfind("cannot read '", 0) == 0) throw;

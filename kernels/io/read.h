@@ -5,16 +5,21 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 
 #include "kernels/io/dataset.h"
 
 namespace selfsim::io {
 
-// Reads a file written by selfsim (or any .vtp / .svg polyline file) for comparison and inspection.
+// Reads a file written by selfsim (or any .vtp, .vtu, .svg, .stl, .obj or .ply file) for comparison and
+// inspection.
 Dataset read_dataset(const std::filesystem::path& file);
 
 // Format-specific readers.
-Dataset read_vtp(const std::filesystem::path& file);  // see vtp_read.cpp for how hostile files are handled
+// .vtp (PolyData) or .vtu (unstructured grid) through VTK; see vtk_read.cpp for how hostile files are handled.
+Dataset read_vtk(const std::filesystem::path& file, bool unstructured);
+// .stl, .obj or .ply (ext, lower case with the dot) through OpenMesh, guarded the same way (mesh_read.cpp).
+Dataset read_mesh_file(const std::filesystem::path& file, const std::string& ext);
 Dataset read_svg(const std::filesystem::path& file);  // absolute M/L path data, streamed
 
 }  // namespace selfsim::io

@@ -9,11 +9,6 @@
 
 namespace selfsim::io {
 
-const std::vector<std::string>& curve_extensions() {
-  static const std::vector<std::string> ext{".svg", ".vtp"};
-  return ext;
-}
-
 namespace {
 
 // A CSS colour ("#1d3557", "steelblue", "rgb(10, 20, 30)"): nothing that could end the SVG attribute.
@@ -22,6 +17,25 @@ bool colour_like(const std::string& c) {
     return std::isalnum(static_cast<unsigned char>(ch)) ||
            std::string_view("#(),.% ").find(ch) != std::string_view::npos;
   });
+}
+
+template <class V>
+void check_curve(const PolylineT<V>& c, const std::string& file) {
+  if (c.points.empty()) throw Error("cannot save an empty curve to '" + file + "'");
+  if (!c.finite()) throw Error("cannot save '" + file + "': the curve has non-finite coordinates");
+  // Finite points can still overflow what a file derives from them: the extent (SVG viewBox, with its
+  // margin) and the arclength field. Scale such a curve down before saving it.
+  if (!is_finite(c.bbox().size() * 1.05) || !std::isfinite(c.length()))
+    throw Error("cannot save '" + file + "': the curve's extent or length overflows (scale it down with c:transform)");
+  c.point_fields.check(c.points.size(), "point");
+  c.cell_fields.check(c.paths(), "cell");
+}
+
+void check_mesh(const Mesh& m, const std::string& file) {
+  if (m.faces() == 0) throw Error("cannot save a mesh without triangles to '" + file + "'");
+  m.validate();
+  if (!is_finite(m.bbox().size() * 1.05))
+    throw Error("cannot save '" + file + "': the mesh's extent overflows (scale it down)");
 }
 
 }  // namespace
@@ -36,30 +50,27 @@ void SaveOptions::validate() const {
   if (!(size >= 16 && size <= 100000)) throw Error("option 'size' must be in [16, 100000] pixels");
 }
 
-std::string save_curve(const Polyline& c, const std::filesystem::path& root, const std::string& name,
-                       const SaveOptions& opt, Progress& progress) {
-  opt.validate();
+std::string save(const ValueRef& v, const std::filesystem::path& root, const std::string& name, const SaveOptions& opt,
+                 Progress& progress) {
   const std::string file = std::filesystem::path(name).filename().string();
-  const std::string ext = std::filesystem::path(name).extension().string();
-  const auto& known = curve_extensions();
-  if (std::find(known.begin(), known.end(), ext) == known.end())
-    throw Error("cannot save a curve as '" + ext + "' (file '" + file + "'), expected one of: " + quoted_list(known));
-  if (c.points.empty()) throw Error("cannot save an empty curve to '" + file + "'");
-  if (!c.finite()) throw Error("cannot save '" + file + "': the curve has non-finite coordinates");
-  // Finite points can still overflow what a file derives from them: the extent (SVG viewBox, with its
-  // margin) and the arclength field. Scale such a curve down before saving it.
-  const Vec2 extent = c.bbox().size() * 1.05;
-  if (!is_finite(extent) || !std::isfinite(c.length()))
-    throw Error("cannot save '" + file + "': the curve's extent or length overflows (scale it down with c:transform)");
+  const Format& format = format_for(name, kind_of(v));
+  check_options(format, opt.given);
+  opt.validate();
+  std::visit(
+      [&](const auto* value) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(*value)>, Mesh>)
+          check_mesh(*value, file);
+        else
+          check_curve(*value, file);
+      },
+      v);
   OutputFile out(root, name);
   const std::string task = "writing " + file;
   progress.start(task.c_str());
-  if (ext == ".vtp")
-    write_vtp(c, out, opt, progress);
-  else
-    write_svg(c, out, opt, progress);
+  format.write(v, out, opt, progress);
   if (progress.cancelled()) throw Cancelled();
   out.commit();
   return out.path();
 }
+
 }  // namespace selfsim::io

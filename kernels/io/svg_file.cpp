@@ -3,11 +3,12 @@
 // stroke width is given in pixels of the drawing's width/height, converted to curve units, so a curve of
 // any size reads the same. (vector-effect: non-scaling-stroke would say this too, but librsvg and some
 // other renderers ignore it.)
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
 #include "kernels/geom/error.h"
-#include "kernels/io/save.h"
+#include "kernels/io/writers.h"
 
 namespace selfsim::io {
 
@@ -22,7 +23,8 @@ void put(std::string& s, double v) {
 
 }  // namespace
 
-void write_svg(const Polyline& c, OutputFile& out, const SaveOptions& opt, Progress& progress) {
+void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress) {
+  const Polyline& c = *std::get<const Polyline*>(v);  // the registry sends only 2D curves here
   const BBox2 b = c.bbox();
   Vec2 extent = b.size();
   const double big = std::max({extent.x, extent.y, 1e-300});

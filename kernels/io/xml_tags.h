@@ -1,5 +1,5 @@
 // A streaming reader of an XML file's tags, for checking a file before a third-party parser reads it
-// (vtp_header_check.cpp). Memory stays small whatever the file: a tag may be at most 64 KiB, character data
+// (vtk_header_check.cpp). Memory stays small whatever the file: a tag may be at most 64 KiB, character data
 // is only measured, comments and processing instructions are skipped, and DOCTYPE declarations (entity
 // expansion) and CDATA sections are refused. Throws Error with the reason.
 #pragma once

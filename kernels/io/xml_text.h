@@ -1,4 +1,4 @@
-// Small pieces shared by the streaming XML scanners of the readers (vtp_header_check.cpp, svg_read.cpp).
+// Small pieces shared by the streaming XML scanners of the readers (vtk_header_check.cpp, svg_read.cpp).
 #pragma once
 
 #include <algorithm>

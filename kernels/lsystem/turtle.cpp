@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "kernels/geom/budget.h"
+#include "kernels/geom/check.h"
 #include "kernels/geom/count_text.h"
 #include "kernels/geom/error.h"
 #include "kernels/geom/huge_pages.h"
@@ -133,11 +134,7 @@ Vec2 run_turtle(const Compiled& c, const std::string& axiom, int level, Heading 
 
 }  // namespace
 
-void CurveOptions::validate() const {
-  if (level < 0 || level > max_level)
-    throw Error("option 'level' must be an integer in [0, " + std::to_string(max_level) + "], got " +
-                std::to_string(level));
-}
+void CurveOptions::validate() const { check_range(level, 0, max_level, "option 'level'"); }
 
 Polyline curve(const Grammar& g, const CurveOptions& opt, Progress& progress) {
   Polyline out;
@@ -163,7 +160,9 @@ void curve_into(const Grammar& g, const CurveOptions& opt, Progress& progress, P
 
   out.points.clear();
   out.path_ends.clear();
-  out.level = opt.level;
+  out.point_fields = {};
+  out.cell_fields = {};
+  out.point_fields.set(uniform_int("level", opt.level));
   out.points.reserve(static_cast<std::size_t>(counts.max_points()));  // within the budget: checked above
   advise_huge_pages(out.points);
   progress.start("L-system");

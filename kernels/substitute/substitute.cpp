@@ -4,6 +4,7 @@
 #include <string>
 
 #include "kernels/geom/budget.h"
+#include "kernels/geom/check.h"
 #include "kernels/geom/error.h"
 #include "kernels/geom/similarity.h"
 
@@ -52,8 +53,7 @@ struct Substitution {
 }  // namespace
 
 void SubstituteOptions::validate(std::size_t generator_segments) const {
-  if (levels < 0 || levels > 64)
-    throw Error("option 'levels' must be an integer in [0, 64], got " + std::to_string(levels));
+  check_range(levels, 0, 64, "option 'levels'");
   if (!transforms.empty() && transforms.size() != generator_segments)
     throw Error("option 'transforms' must have one entry per generator segment (" + std::to_string(generator_segments) +
                 "), got " + std::to_string(transforms.size()));
@@ -75,7 +75,7 @@ Polyline substitute(const Polyline& path, const Polyline& generator, const Subst
   check_budget(segments + 1, opt.budget, "levels " + std::to_string(opt.levels));
 
   Polyline result;
-  result.level = opt.levels;
+  result.point_fields.set(uniform_int("level", opt.levels));
   result.points.reserve(static_cast<std::size_t>(segments) + 1);
   progress.start("substitute");
   Substitution s{{}, {}, result.points, progress, segments + 1};

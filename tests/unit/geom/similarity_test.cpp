@@ -41,10 +41,11 @@ TEST(Polyline, TransformedKeepsPaths) {
   Polyline c;
   c.points = {{0, 0}, {1, 0}, {5, 5}, {5, 6}};
   c.path_ends = {2, 4};
-  c.level = 3;
+  c.point_fields.set(uniform_int("level", 3));
   const Polyline t = transformed(c, {{0, 1}, {1, 1}});  // quarter turn, then shift by (1, 1)
   EXPECT_EQ(t.path_ends, c.path_ends);
-  EXPECT_EQ(t.level, 3);
+  ASSERT_NE(t.point_fields.find("level"), nullptr);
+  EXPECT_EQ(t.point_fields.find("level")->at(0), 3);
   EXPECT_EQ(t.points[1], (Vec2{1, 2}));
   EXPECT_DOUBLE_EQ(t.length(), c.length());
 }

@@ -23,13 +23,16 @@ struct TempDir {
   }
 };
 
-// Two paths: (0,0) (1,0) (1,1), then (2,2) (3,2.5); level 7.
+// Two paths: (0,0) (1,0) (1,1), then (2,2) (3,2.5); a uniform level field of 7.
 inline selfsim::Polyline two_paths() {
   selfsim::Polyline c;
   c.points = {{0, 0}, {1, 0}, {1, 1}, {2, 2}, {3, 2.5}};
   c.path_ends = {3, 5};
-  c.level = 7;
+  c.point_fields.set(selfsim::uniform_int("level", 7));
   return c;
 }
+
+// two_paths() as a value that lives for the whole test program (save() takes values by address).
+inline const selfsim::Polyline two_paths_value = two_paths();
 
 }  // namespace io_fixtures

@@ -183,13 +183,13 @@ void expect_every_prefix_fails(const fs::path& full, const fs::path& part) {
 
 TEST(ReadVtp, EveryTruncationOfASavedFileIsAnError) {
   TempDir dir;
-  io::save_curve(two_paths(), dir.path / "c.vtp", {}, no_progress());
+  io::save(&io_fixtures::two_paths_value, dir.path / "c.vtp", {}, no_progress());
   expect_every_prefix_fails(dir.path / "c.vtp", dir.path / "part.vtp");
 }
 
 TEST(ReadSvg, EveryTruncationOfASavedFileIsAnError) {
   TempDir dir;
-  io::save_curve(two_paths(), dir.path / "c.svg", {}, no_progress());
+  io::save(&io_fixtures::two_paths_value, dir.path / "c.svg", {}, no_progress());
   expect_every_prefix_fails(dir.path / "c.svg", dir.path / "part.svg");
 }
 
@@ -210,7 +210,7 @@ TEST(ReadVtp, EveryTruncationOfACompressedFileIsAnError) {
 TEST(ReadVtp, CraftedHeadersAreErrors) {
   // Each a file VTK's reader alone would crash on, abort on or misread.
   TempDir dir;
-  io::save_curve(two_paths(), dir.path / "c.vtp", {}, no_progress());
+  io::save(&io_fixtures::two_paths_value, dir.path / "c.vtp", {}, no_progress());
   const std::string good = slurp(dir.path / "c.vtp");
   const struct {
     std::string attribute, value, reason;
@@ -348,7 +348,7 @@ TEST(ReadFiles, GarbageEmptyAndSpecialFilesAreErrors) {
     expect_read_error(dir.path / (std::string("missing") + ext), "no such file");
   }
   write(dir.path / "c.txt", "x");
-  expect_read_error(dir.path / "c.txt", "expected a .vtp or .svg file");
+  expect_read_error(dir.path / "c.txt", "expected a .vtp, .vtu, .svg, .stl, .obj or .ply file");
 }
 
 TEST(ReadSvg, PathDataMustBeFiniteAbsolutePairs) {

@@ -21,7 +21,7 @@ TEST(SaveVtp, RoundTripKeepsPointsCellsAndFields) {
   const Polyline c = two_paths();
   {
     const fs::path f = dir.path / "c.vtp";
-    io::save_curve(c, f, {}, no_progress());
+    io::save(&c, f, {}, no_progress());
     const io::Dataset d = io::read_dataset(f);
     ASSERT_EQ(d.points.size(), 5u);
     EXPECT_EQ(d.points[4], (std::array<double, 3>{3, 2.5, 0}));
@@ -37,7 +37,7 @@ TEST(SaveSvg, PathDataKeepsTheCurvesCoordinates) {
   TempDir dir;
   const Polyline c = two_paths();
   const fs::path f = dir.path / "c.svg";
-  io::save_curve(c, f, {.fill = "#ff0000"}, no_progress());
+  io::save(&c, f, {.fill = "#ff0000"}, no_progress());
   const io::Dataset d = io::read_dataset(f);
   ASSERT_EQ(d.points.size(), 5u);
   EXPECT_EQ(d.points[3], (std::array<double, 3>{2, 2, 0}));
@@ -53,10 +53,11 @@ TEST(SaveSvg, PathDataKeepsTheCurvesCoordinates) {
 TEST(Save, UnknownExtensionIsRefusedAndLeavesNothing) {
   TempDir dir;
   try {
-    io::save_curve(two_paths(), dir.path / "c.dxf", {}, no_progress());
+    io::save(&io_fixtures::two_paths_value, dir.path / "c.dxf", {}, no_progress());
     FAIL();
   } catch (const Error& e) {
-    EXPECT_EQ(std::string(e.what()), "cannot save a curve as '.dxf' (file 'c.dxf'), expected one of: '.svg', '.vtp'");
+    EXPECT_EQ(std::string(e.what()),
+              "cannot save a curve as '.dxf' (file 'c.dxf'), expected one of: '.svg', '.vtp', '.vtu'");
   }
   EXPECT_TRUE(fs::is_empty(dir.path));
 }
@@ -68,7 +69,7 @@ TEST(Save, CancelledWriteKeepsTheOldFileAndNoTemporary) {
   struct StopAtOnce : Progress {
     bool cancelled() override { return true; }
   } stop;
-  EXPECT_THROW(io::save_curve(two_paths(), f, {}, stop), Cancelled);
+  EXPECT_THROW(io::save(&io_fixtures::two_paths_value, f, {}, stop), Cancelled);
   std::ifstream in(f);
   std::string text;
   in >> text;

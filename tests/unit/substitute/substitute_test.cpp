@@ -59,7 +59,8 @@ TEST(Substitute, TerdragonIsItsFirstLevel) {
 TEST(Substitute, CountsAndLevel) {
   const Polyline c = run(unit, koch_generator, 5);
   EXPECT_EQ(c.segments(), 1024u);
-  EXPECT_EQ(c.level, 5);
+  ASSERT_NE(c.point_fields.find("level"), nullptr);
+  EXPECT_EQ(c.point_fields.find("level")->at(0), 5);
   EXPECT_EQ(run(unit, koch_generator, 0).segments(), 1u);
 }
 

@@ -1,4 +1,4 @@
-#include "kernels/io/vtp_header_check.h"
+#include "kernels/io/vtk_header_check.h"
 
 #include <algorithm>
 #include <string>
@@ -69,9 +69,9 @@ struct Array {
 
 class Checker {
  public:
-  explicit Checker(const RegularFile& f) : file_(f), xml_(f) {}
+  Checker(const RegularFile& f, std::string dataset) : file_(f), xml_(f), dataset_(std::move(dataset)) {}
 
-  VtpDeclared run() {
+  VtkDeclared run() {
     XmlTag tag;
     XmlText text;
     for (;;) {
@@ -164,8 +164,8 @@ class Checker {
     if (t.name != "VTKFile") throw Error("not a VTK XML file (the root element is <" + shown(t.name) + ">)");
     root_seen_ = true;
     const std::string* type = t.find("type");
-    if (!type || *type != "PolyData")
-      throw Error("not a VTK PolyData file (type \"" + (type ? shown(*type) : std::string()) + "\")");
+    if (!type || *type != dataset_)
+      throw Error("not a VTK " + dataset_ + " file (type \"" + (type ? shown(*type) : std::string()) + "\")");
     if (const std::string* v = t.find("version")) {
       const std::size_t dot = v->find('.');
       std::uint64_t major = 0, minor = 0;
@@ -206,7 +206,8 @@ class Checker {
     cells_[1] = count_of(t, "NumberOfLines", 0);
     cells_[2] = count_of(t, "NumberOfStrips", 0);
     cells_[3] = count_of(t, "NumberOfPolys", 0);
-    const std::uint64_t cells = cells_[0] + cells_[1] + cells_[2] + cells_[3];
+    cells_[4] = count_of(t, "NumberOfCells", 0);
+    const std::uint64_t cells = cells_[0] + cells_[1] + cells_[2] + cells_[3] + cells_[4];
     declared_.points += points_;
     declared_.cells += cells;
     add_bytes(points_, 24);  // the coordinates
@@ -223,8 +224,9 @@ class Checker {
     if (type_bytes(*type) < 0) throw Error(a.label + " has an unsupported type \"" + shown(*type) + "\"");
     a.type = *type;
     a.components = count_of(t, "NumberOfComponents", 1);
-    const std::uint64_t cells = cells_[0] + cells_[1] + cells_[2] + cells_[3];
-    static const char* const cell_kinds[] = {"Verts", "Lines", "Strips", "Polys"};
+    const std::uint64_t cells = cells_[0] + cells_[1] + cells_[2] + cells_[3] + cells_[4];
+    // PolyData's four cell kinds, and an unstructured grid's <Cells>, which also has a `types` array.
+    static const char* const cell_kinds[] = {"Verts", "Lines", "Strips", "Polys", "Cells"};
     a.tuples_known = true;
     a.counted_by_piece = parent == "Points" || (name && *name == "offsets");
     if (parent == "Points" || parent == "PointData")
@@ -232,7 +234,7 @@ class Checker {
     else if (parent == "CellData")
       a.tuples = cells;
     else if (std::find(std::begin(cell_kinds), std::end(cell_kinds), parent) != std::end(cell_kinds) && name &&
-             *name == "offsets")
+             (*name == "offsets" || (parent == "Cells" && *name == "types")))
       a.tuples = cells_[std::find(std::begin(cell_kinds), std::end(cell_kinds), parent) - std::begin(cell_kinds)];
     else if (t.find("NumberOfTuples"))
       a.tuples = count_of(t, "NumberOfTuples", 0);
@@ -329,6 +331,7 @@ class Checker {
 
   const RegularFile& file_;
   XmlTagReader xml_;
+  std::string dataset_;  // the VTKFile type expected: "PolyData" or "UnstructuredGrid"
 
   std::vector<Open> stack_;
   std::vector<Array> arrays_;
@@ -336,12 +339,14 @@ class Checker {
   bool appended_found_ = false, appended_base64_ = false;
   std::uint64_t appended_begin_ = 0, appended_end_ = 0;
   VtkBinaryLayout layout_;
-  std::uint64_t points_ = 0, cells_[4] = {0, 0, 0, 0};  // of the current piece
-  VtpDeclared declared_;
+  std::uint64_t points_ = 0, cells_[5] = {0, 0, 0, 0, 0};  // of the current piece
+  VtkDeclared declared_;
 };
 
 }  // namespace
 
-VtpDeclared check_vtp_header(const RegularFile& file) { return Checker(file).run(); }
+VtkDeclared check_vtk_header(const RegularFile& file, const std::string& dataset) {
+  return Checker(file, dataset).run();
+}
 
 }  // namespace selfsim::io

@@ -2,7 +2,7 @@
 // flavour of the format (ascii, inline base64, appended raw or base64, zlib / LZ4 / LZMA compression,
 // either header type and byte order) reads as ParaView reads it. VTK's reader trusts the file, so a
 // hostile or broken file goes through three guards:
-//   1. check_vtp_header (vtp_header_check.h) streams the XML part and checks every declared size against
+//   1. check_vtk_header (vtk_header_check.h) streams the XML part and checks every declared size against
 //      the file and a memory budget, so the crashes, std::bad_alloc aborts and hangs that crafted headers
 //      cause in VTK never start. This alone handles every crafted file we know of.
 //   2. VTK then reads in a forked child process (child_process.h) with an address-space limit and a time
@@ -17,6 +17,7 @@
 #include <unistd.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkCellType.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkLogger.h>
@@ -24,8 +25,13 @@
 #include <vtkObjectFactory.h>
 #include <vtkOutputWindow.h>
 #include <vtkPointData.h>
+#include <vtkPointSet.h>
 #include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
 #include <vtkXMLPolyDataReader.h>
+#include <vtkXMLReader.h>
+#include <vtkXMLUnstructuredGridReader.h>
 
 #include <cstdlib>
 
@@ -36,7 +42,7 @@
 #include "kernels/io/read.h"
 #include "kernels/io/read_error.h"
 #include "kernels/io/regular_file.h"
-#include "kernels/io/vtp_header_check.h"
+#include "kernels/io/vtk_header_check.h"
 
 namespace selfsim::io {
 
@@ -114,10 +120,11 @@ void send_fields(PipeOut& out, vtkFieldData* data) {
   }
 }
 
-// The polydata in dataset_pipe.h's format. Cells in VTK's cell order, which cell data follows: verts,
-// lines, polys, strips.
-void send_polydata(PipeOut& out, vtkPolyData* poly) {
-  vtkPoints* points = poly->GetPoints();
+// A polydata or unstructured grid in dataset_pipe.h's format. Cells in VTK's cell order, which cell data
+// follows: verts, lines, polys, strips for polydata; the one cell array of a grid.
+void send_dataset(PipeOut& out, vtkPointSet* data, const std::vector<vtkCellArray*>& kinds, CellShapes shapes) {
+  put_count(out, static_cast<std::uint64_t>(shapes));
+  vtkPoints* points = data->GetPoints();
   if (points && points->GetData()) {
     if (points->GetData()->GetNumberOfComponents() != 3) throw Error("points without 3 components");  // VTK ensures 3
     put_count(out, static_cast<std::uint64_t>(points->GetNumberOfPoints()));
@@ -125,7 +132,6 @@ void send_polydata(PipeOut& out, vtkPolyData* poly) {
   } else {
     put_count(out, 0);
   }
-  vtkCellArray* const kinds[] = {poly->GetVerts(), poly->GetLines(), poly->GetPolys(), poly->GetStrips()};
   std::uint64_t cells = 0, ids = 0;
   for (vtkCellArray* c : kinds)
     if (c)
@@ -157,26 +163,42 @@ void send_polydata(PipeOut& out, vtkPolyData* poly) {
     }
     flush(true);
   }
-  send_fields(out, poly->GetPointData());
-  send_fields(out, poly->GetCellData());
+  send_fields(out, data->GetPointData());
+  send_fields(out, data->GetCellData());
+}
+
+// Polylines, polygons or both, from a grid's cell types.
+CellShapes grid_shapes(vtkUnstructuredGrid* grid) {
+  bool lines = false, polys = false, other = false;
+  for (vtkIdType i = 0; i < grid->GetNumberOfCells(); ++i) {
+    const int type = grid->GetCellType(i);
+    lines |= type == VTK_LINE || type == VTK_POLY_LINE;
+    polys |= type == VTK_TRIANGLE || type == VTK_QUAD || type == VTK_POLYGON;
+    other |=
+        !(type == VTK_LINE || type == VTK_POLY_LINE || type == VTK_TRIANGLE || type == VTK_QUAD || type == VTK_POLYGON);
+  }
+  return other || (lines && polys) ? CellShapes::mixed : polys ? CellShapes::polygons : CellShapes::lines;
 }
 
 // In the child: read with VTK, answer 'D' and the Dataset, or 'E' and the reason.
-int read_in_child(PipeOut& out, const std::string& vtk_name, const std::string& shown_name) {
+int read_in_child(PipeOut& out, const std::string& vtk_name, const std::string& shown_name, bool unstructured) {
   // No TBB threads in a forked child (TBB's state does not survive fork). vtkSMPTools.h itself does not
   // compile as C++20, so the backend is chosen through the variable VTK reads at its first SMP use.
   ::setenv("VTK_SMP_BACKEND_IN_USE", "Sequential", 1);
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   vtkNew<FirstErrorWindow> window;
   vtkOutputWindow::SetInstance(window);
-  vtkNew<vtkXMLPolyDataReader> reader;
+  const vtkSmartPointer<vtkXMLReader> reader =
+      unstructured ? vtkSmartPointer<vtkXMLReader>::Take(vtkXMLUnstructuredGridReader::New())
+                   : vtkSmartPointer<vtkXMLReader>::Take(vtkXMLPolyDataReader::New());
   reader->SetFileName(vtk_name.c_str());
   reader->Update();
-  vtkPolyData* poly = reader->GetOutput();
+  vtkPolyData* poly = vtkPolyData::SafeDownCast(reader->GetOutputAsDataSet());
+  vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(reader->GetOutputAsDataSet());
   std::string error;
   if (!window->first_error.empty())
     error = vtk_reason(window->first_error, vtk_name, shown_name);
-  else if (reader->GetErrorCode() != 0 || poly == nullptr)
+  else if (reader->GetErrorCode() != 0 || (poly == nullptr && grid == nullptr))
     error = "VTK could not read it";
   const char kind = error.empty() ? 'D' : 'E';
   out.write(&kind, 1);
@@ -184,15 +206,22 @@ int read_in_child(PipeOut& out, const std::string& vtk_name, const std::string& 
     const std::uint64_t n = error.size();
     out.write(&n, sizeof n);
     out.write(error.data(), error.size());
+  } else if (poly) {
+    const bool lines = poly->GetNumberOfLines() > 0, polys = poly->GetNumberOfPolys() > 0,
+               other = poly->GetNumberOfVerts() > 0 || poly->GetNumberOfStrips() > 0;
+    const CellShapes shapes = other || (lines && polys) ? CellShapes::mixed
+                              : polys                   ? CellShapes::polygons
+                                                        : CellShapes::lines;
+    send_dataset(out, poly, {poly->GetVerts(), poly->GetLines(), poly->GetPolys(), poly->GetStrips()}, shapes);
   } else {
-    send_polydata(out, poly);
+    send_dataset(out, grid, {grid->GetCells()}, grid_shapes(grid));
   }
   return 0;
 }
 
-Dataset read_checked(const std::filesystem::path& file) {
+Dataset read_checked(const std::filesystem::path& file, bool unstructured) {
   const RegularFile f(file);
-  const VtpDeclared declared = check_vtp_header(f);
+  const VtkDeclared declared = check_vtk_header(f, unstructured ? "UnstructuredGrid" : "PolyData");
   // VTK opens the file we checked, through our descriptor, not whatever the name points to by then.
   std::string vtk_name = "/proc/self/fd/" + std::to_string(f.fd());
   if (::access(vtk_name.c_str(), R_OK) != 0) vtk_name = file.string();
@@ -203,7 +232,7 @@ Dataset read_checked(const std::filesystem::path& file) {
   limits.seconds = 30 + static_cast<double>(f.size() + declared.bytes) / (8 << 20);
   Dataset d;
   run_in_child(
-      limits, [&](PipeOut& out) { return read_in_child(out, vtk_name, one_line(file.string())); },
+      limits, [&](PipeOut& out) { return read_in_child(out, vtk_name, one_line(file.string()), unstructured); },
       [&](PipeIn& in) {
         char kind = 0;
         in.read(&kind, 1);
@@ -228,9 +257,9 @@ Dataset read_checked(const std::filesystem::path& file) {
 
 }  // namespace
 
-Dataset read_vtp(const std::filesystem::path& file) {
+Dataset read_vtk(const std::filesystem::path& file, bool unstructured) {
   try {
-    return read_checked(file);
+    return read_checked(file, unstructured);
   } catch (const std::bad_alloc&) {
     throw Error(cannot_read(file, "out of memory"));
   } catch (const std::exception& e) {

@@ -1,0 +1,62 @@
+#include "interpreter/point_reader.h"
+
+#include "interpreter/lua_support.h"
+#include "interpreter/options_reader.h"
+
+namespace selfsim::interp {
+
+namespace {
+
+// The n numbers of the table at index into xs, checked finite.
+void read_numbers(lua_State* L, int index, int n, double* xs, const std::string& what, const char* shape) {
+  index = lua_absindex(L, index);
+  if (lua_type(L, index) != LUA_TTABLE || lua_rawlen(L, index) != static_cast<lua_Unsigned>(n))
+    throw Error(what + " must be " + shape + ", got " + describe(L, index));
+  static const char* axis[] = {" x", " y", " z"};
+  for (int k = 0; k < n; ++k) {
+    lua_rawgeti(L, index, k + 1);
+    xs[k] = finite_number(L, -1, what + axis[k]);
+    lua_pop(L, 1);
+  }
+}
+
+Vec2 read_point(lua_State* L, int index, const std::string& what, Vec2*) { return read_point2(L, index, what); }
+Vec3 read_point(lua_State* L, int index, const std::string& what, Vec3*) { return read_point3(L, index, what); }
+
+}  // namespace
+
+Vec2 read_point2(lua_State* L, int index, const std::string& what) {
+  double xs[2];
+  read_numbers(L, index, 2, xs, what, "{x, y}");
+  return {xs[0], xs[1]};
+}
+
+Vec3 read_point3(lua_State* L, int index, const std::string& what) {
+  double xs[3];
+  read_numbers(L, index, 3, xs, what, "{x, y, z}");
+  return {xs[0], xs[1], xs[2]};
+}
+
+template <class V>
+std::vector<V> read_point_list(lua_State* L, int index, const std::string& what) {
+  index = lua_absindex(L, index);
+  const char* shape = sizeof(V) == sizeof(Vec2) ? "{x, y}" : "{x, y, z}";
+  if (lua_type(L, index) != LUA_TTABLE)
+    throw Error(what + " must be a table of " + shape + " points, got " + describe(L, index));
+  const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, index));
+  check_budget(static_cast<double>(n), run_budget(L), what.empty() ? "a table of points" : what);  // before copying
+  std::vector<V> pts;
+  pts.reserve(static_cast<std::size_t>(n));
+  for (lua_Integer i = 1; i <= n; ++i) {
+    lua_rawgeti(L, index, i);
+    pts.push_back(
+        read_point(L, -1, (what.empty() ? "" : what + " ") + "point " + std::to_string(i), static_cast<V*>(nullptr)));
+    lua_pop(L, 1);
+  }
+  return pts;
+}
+
+template std::vector<Vec2> read_point_list(lua_State*, int, const std::string&);
+template std::vector<Vec3> read_point_list(lua_State*, int, const std::string&);
+
+}  // namespace selfsim::interp

@@ -1,0 +1,145 @@
+#include "interpreter/value_types.h"
+
+#include <algorithm>
+#include <string>
+
+namespace selfsim::interp {
+
+void push_point(lua_State* L, Vec2 p) {
+  lua_createtable(L, 2, 0);
+  lua_pushnumber(L, p.x);
+  lua_rawseti(L, -2, 1);
+  lua_pushnumber(L, p.y);
+  lua_rawseti(L, -2, 2);
+}
+
+void push_point(lua_State* L, Vec3 p) {
+  lua_createtable(L, 3, 0);
+  lua_pushnumber(L, p.x);
+  lua_rawseti(L, -2, 1);
+  lua_pushnumber(L, p.y);
+  lua_rawseti(L, -2, 2);
+  lua_pushnumber(L, p.z);
+  lua_rawseti(L, -2, 3);
+}
+
+namespace {
+
+std::size_t bytes_of(const Polyline& c) { return c.bytes(); }
+std::size_t bytes_of(const Polyline3& c) { return c.bytes(); }
+std::size_t bytes_of(const Mesh& m) { return m.bytes(); }
+
+std::string summary(const Polyline& c) {
+  const Field* level = c.point_fields.find("level");
+  return "Curve(" + std::to_string(c.points.size()) + " points, " + std::to_string(c.paths()) + " paths" +
+         (level && level->uniform ? ", level " + std::to_string(static_cast<long long>(level->at(0))) : "") + ")";
+}
+std::string summary(const Polyline3& c) {
+  return "Curve3(" + std::to_string(c.points.size()) + " points, " + std::to_string(c.paths()) + " paths)";
+}
+std::string summary(const Mesh& m) {
+  return "Mesh(" + std::to_string(m.points.size()) + " points, " + std::to_string(m.faces()) + " faces)";
+}
+
+template <class T>
+Held<T> self(lua_State* L, const char* method) {
+  return check_self<T>(L, ValueType<T>::name, method);
+}
+
+template <class T>
+int value_points(lua_State* L) {
+  const Held<T> v = self<T>(L, "points");
+  lua_pushinteger(L, static_cast<lua_Integer>(v->points.size()));
+  return 1;
+}
+
+// {min = {x, y[, z]}, max = {...}}
+template <class T>
+int value_bbox(lua_State* L) {
+  const Held<T> v = self<T>(L, "bbox");
+  const auto b = v->bbox();
+  lua_createtable(L, 0, 2);
+  push_point(L, b.min);
+  lua_setfield(L, -2, "min");
+  push_point(L, b.max);
+  lua_setfield(L, -2, "max");
+  return 1;
+}
+
+void push_names(lua_State* L, const Fields& fields) {
+  lua_createtable(L, static_cast<int>(fields.list.size()), 0);
+  for (std::size_t i = 0; i < fields.list.size(); ++i) {
+    lua_pushstring(L, fields.list[i].name.c_str());
+    lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+  }
+}
+
+const Fields& cell_fields(const Polyline& c) { return c.cell_fields; }
+const Fields& cell_fields(const Polyline3& c) { return c.cell_fields; }
+const Fields& cell_fields(const Mesh& m) { return m.face_fields; }
+
+// {points = {names}, cells = {names}}: the fields the value carries (files add arclength and path to curves).
+template <class T>
+int value_fields(lua_State* L) {
+  const Held<T> v = self<T>(L, "fields");
+  lua_createtable(L, 0, 2);
+  push_names(L, v->point_fields);
+  lua_setfield(L, -2, "points");
+  push_names(L, cell_fields(*v));
+  lua_setfield(L, -2, "cells");
+  return 1;
+}
+
+template <class T>
+int value_tostring(lua_State* L) {
+  const Held<T> v = self<T>(L, "tostring");
+  const std::string s = summary(*v);
+  lua_pushlstring(L, s.data(), s.size());
+  return 1;
+}
+
+}  // namespace
+
+template <class T>
+void push_geometry(lua_State* L, T&& value) {
+  const std::size_t bytes = bytes_of(value);
+  const double size = budget_size(value);
+  push_value(L, ValueType<T>::name, std::move(value), size);
+  // Lua only sees the userdata's few bytes; tell its collector about big arrays, so that values a recipe
+  // has dropped are freed before the next big one instead of piling up. (Small values are left to the
+  // collector's own pace: a step per tiny value costs time in proportion to the whole heap.)
+  if (bytes >= (std::size_t{1} << 20))
+    lua_gc(L, LUA_GCSTEP, static_cast<int>(std::min<std::size_t>(bytes / 1024, 1 << 30)));
+}
+
+template <class T>
+void register_geometry(lua_State* L, const std::vector<luaL_Reg>& own) {
+  std::vector<luaL_Reg> methods{{"points", value_points<T>}, {"bbox", value_bbox<T>}, {"fields", value_fields<T>}};
+  methods.insert(methods.end(), own.begin(), own.end());
+  methods.push_back({nullptr, nullptr});
+  register_type<T>(L, ValueType<T>::name, methods.data(), value_tostring<T>);
+}
+
+template void push_geometry(lua_State*, Polyline&&);
+template void push_geometry(lua_State*, Polyline3&&);
+template void push_geometry(lua_State*, Mesh&&);
+template void register_geometry<Polyline>(lua_State*, const std::vector<luaL_Reg>&);
+template void register_geometry<Polyline3>(lua_State*, const std::vector<luaL_Reg>&);
+template void register_geometry<Mesh>(lua_State*, const std::vector<luaL_Reg>&);
+
+io::ValueRef AnyValue::ref() const {
+  return std::visit([](const auto& h) -> io::ValueRef { return h.get(); }, held);
+}
+
+std::size_t AnyValue::points() const {
+  return std::visit([](const auto& h) { return h->points.size(); }, held);
+}
+
+std::optional<AnyValue> test_any(lua_State* L, int index) {
+  if (Held<Polyline> c = test_geometry<Polyline>(L, index)) return AnyValue{c};
+  if (Held<Polyline3> c = test_geometry<Polyline3>(L, index)) return AnyValue{c};
+  if (Held<Mesh> m = test_geometry<Mesh>(L, index)) return AnyValue{m};
+  return std::nullopt;
+}
+
+}  // namespace selfsim::interp

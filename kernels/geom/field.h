@@ -1,0 +1,55 @@
+// Named fields: arrays of int32 or float64 tuples (1 to 3 components) on the points or cells of a value.
+// A kernel attaches what it knows (level, arclength, path, parent, generation, curve, tile_class,
+// thickness, ...) and every writer writes whatever is there under its name, so a new field needs no
+// writer change. A uniform field stores one tuple for all points or cells (a curve's level): no memory
+// in proportion to the curve for a constant.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace selfsim {
+
+enum class Scalar { Int32, Float64 };
+
+struct Field {
+  std::string name;
+  int components = 1;                                                 // 1, 2 or 3
+  std::variant<std::vector<std::int32_t>, std::vector<double>> data;  // tuple after tuple
+  bool uniform = false;                                               // one tuple stands for every element
+
+  Scalar scalar() const { return data.index() == 0 ? Scalar::Int32 : Scalar::Float64; }
+  // Number of tuples stored (1 for a uniform field).
+  std::size_t stored() const;
+  // Component c of tuple i of a field on `count` elements, as a double.
+  double at(std::size_t i, int c = 0) const;
+  std::span<const std::int32_t> ints() const { return std::get<0>(data); }
+  std::span<const double> reals() const { return std::get<1>(data); }
+  std::size_t bytes() const;
+};
+
+Field int_field(std::string name, std::vector<std::int32_t> values, int components = 1);
+Field real_field(std::string name, std::vector<double> values, int components = 1);
+// One value for every element.
+Field uniform_int(std::string name, std::int32_t value);
+
+// The fields on one kind of element (points, or cells), in the order they were attached.
+struct Fields {
+  std::vector<Field> list;
+
+  const Field* find(std::string_view name) const;
+  // Attaches f, replacing a field of the same name.
+  void set(Field f);
+  bool empty() const { return list.empty(); }
+  std::size_t bytes() const;
+  // Throws Error naming the first field (on `element`s: "point", "cell") with a bad name, component count
+  // or size for `count` elements, or a non-finite value.
+  void check(std::size_t count, const char* element) const;
+};
+
+}  // namespace selfsim

@@ -1,0 +1,113 @@
+#include "kernels/geom/mesh_check.h"
+
+#include <algorithm>
+#include <numeric>
+#include <tuple>
+#include <vector>
+
+namespace selfsim {
+
+namespace {
+
+// Union-find over indices, for counting connected pieces.
+struct Components {
+  std::vector<std::uint32_t> parent;
+  explicit Components(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+  std::uint32_t root(std::uint32_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  }
+  void join(std::uint32_t a, std::uint32_t b) { parent[root(a)] = root(b); }
+};
+
+// A face's directed edge a→b, keyed by its undirected ends.
+struct HalfEdge {
+  std::uint32_t lo, hi;  // lo < hi
+  std::uint32_t face;
+  bool forward;  // the face goes lo → hi
+
+  auto key() const { return std::pair{lo, hi}; }
+};
+
+std::string edge_text(const HalfEdge& e) { return "(" + std::to_string(e.lo) + ", " + std::to_string(e.hi) + ")"; }
+
+}  // namespace
+
+MeshTopology mesh_topology(const Mesh& m) {
+  MeshTopology t;
+  t.faces = m.triangles.size();
+  std::vector<HalfEdge> half;
+  half.reserve(3 * m.triangles.size());
+  std::vector<char> used(m.points.size(), 0);
+  for (std::uint32_t f = 0; f < m.triangles.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = m.triangles[f][k], b = m.triangles[f][(k + 1) % 3];
+      used[a] = 1;
+      half.push_back({std::min(a, b), std::max(a, b), f, a < b});
+    }
+  t.vertices = static_cast<std::size_t>(std::count(used.begin(), used.end(), 1));
+  std::sort(half.begin(), half.end(), [](const HalfEdge& x, const HalfEdge& y) {
+    return std::tie(x.lo, x.hi, x.face) < std::tie(y.lo, y.hi, y.face);
+  });
+
+  Components faces(m.triangles.size()), boundary(m.points.size());
+  std::vector<char> on_boundary(m.points.size(), 0);
+  auto problem = [&](std::string s) {
+    if (t.first_problem.empty()) t.first_problem = std::move(s);
+  };
+  for (std::size_t i = 0; i < half.size();) {
+    std::size_t j = i;
+    while (j < half.size() && half[j].key() == half[i].key()) ++j;
+    const std::size_t n = j - i;
+    ++t.edges;
+    if (n == 1) {
+      ++t.boundary_edges;
+      boundary.join(half[i].lo, half[i].hi);
+      on_boundary[half[i].lo] = on_boundary[half[i].hi] = 1;
+    } else if (n == 2) {
+      faces.join(half[i].face, half[i + 1].face);
+      if (half[i].forward == half[i + 1].forward) {
+        ++t.misoriented_edges;
+        problem("faces " + std::to_string(half[i].face) + " and " + std::to_string(half[i + 1].face) +
+                " traverse edge " + edge_text(half[i]) + " in the same direction (inconsistent orientation)");
+      }
+    } else {
+      ++t.nonmanifold_edges;
+      for (std::size_t k = i + 1; k < j; ++k) faces.join(half[i].face, half[k].face);
+      problem("edge " + edge_text(half[i]) + " is shared by " + std::to_string(n) + " faces");
+    }
+    i = j;
+  }
+  for (std::uint32_t f = 0; f < m.triangles.size(); ++f) t.components += faces.root(f) == f;
+  for (std::uint32_t v = 0; v < m.points.size(); ++v)
+    if (on_boundary[v] && boundary.root(v) == v) ++t.boundary_loops;
+
+  // A vertex is manifold when its faces form one fan: joined across the edges through it. Each face
+  // around v contributes its two other corners; faces sharing a corner share an edge through v.
+  std::vector<std::vector<std::uint32_t>> around(m.points.size());
+  for (std::uint32_t f = 0; f < m.triangles.size(); ++f)
+    for (std::uint32_t v : m.triangles[f]) around[v].push_back(f);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> corners;  // (other corner, index into around[v])
+  for (std::uint32_t v = 0; v < m.points.size(); ++v) {
+    const auto& fs = around[v];
+    if (fs.size() < 2) continue;
+    corners.clear();
+    for (std::uint32_t k = 0; k < fs.size(); ++k)
+      for (std::uint32_t w : m.triangles[fs[k]])
+        if (w != v) corners.emplace_back(w, k);
+    std::sort(corners.begin(), corners.end());
+    Components fan(fs.size());
+    for (std::size_t k = 1; k < corners.size(); ++k)
+      if (corners[k].first == corners[k - 1].first) fan.join(corners[k].second, corners[k - 1].second);
+    std::size_t fans = 0;
+    for (std::uint32_t k = 0; k < fs.size(); ++k) fans += fan.root(k) == k;
+    if (fans > 1) {
+      ++t.nonmanifold_vertices;
+      problem("vertex " + std::to_string(v) + " joins " + std::to_string(fans) +
+              " fans of faces that share no edge through it (a bowtie)");
+    }
+  }
+  return t;
+}
+
+}  // namespace selfsim

@@ -1,0 +1,81 @@
+// .stl (binary), .obj and .ply (binary) meshes, written by OpenMesh's own writers so that what slicers and
+// Blender read is what OpenMesh, a reference implementation of these formats, writes. The conversion is in
+// openmesh_mesh.cpp. Fields are not written: these formats have no place for them (.vtp and .vtu do).
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <ostream>
+#include <streambuf>
+
+#include "kernels/geom/error.h"
+#include "kernels/io/openmesh_mesh.h"
+#include "kernels/io/writers.h"
+
+namespace selfsim::io {
+
+namespace {
+
+// An ostream's buffer that passes its bytes on to an OutputFile and checks cancellation every megabyte,
+// so OpenMesh's writers stream into our atomic, confined file and a long write can still be stopped.
+class FileBuffer : public std::streambuf {
+ public:
+  FileBuffer(OutputFile& out, Progress& progress) : out_(out), progress_(progress), buffer_(1 << 20) {
+    setp(buffer_.data(), buffer_.data() + buffer_.size());
+  }
+
+ protected:
+  int_type overflow(int_type c) override {
+    flush_buffer();
+    if (!traits_type::eq_int_type(c, traits_type::eof())) {
+      *pptr() = traits_type::to_char_type(c);
+      pbump(1);
+    }
+    return traits_type::not_eof(c);
+  }
+  int sync() override {
+    flush_buffer();
+    return 0;
+  }
+
+ private:
+  void flush_buffer() {
+    out_.write(pbase(), static_cast<std::size_t>(pptr() - pbase()));
+    setp(buffer_.data(), buffer_.data() + buffer_.size());
+    if (progress_.cancelled()) throw Cancelled();
+  }
+
+  OutputFile& out_;
+  Progress& progress_;
+  std::vector<char> buffer_;
+};
+
+void write_with_openmesh(const ValueRef& v, OutputFile& out, Progress& progress, const char* ext,
+                         OpenMesh::IO::Options opt, std::streamsize precision) {
+  const Mesh& m = *std::get<const Mesh*>(v);  // the registry sends only meshes here
+  OMesh om = to_openmesh(m);
+  progress.step(0.3);
+  if (opt.check(OpenMesh::IO::Options::FaceNormal)) {
+    om.request_face_normals();
+    om.update_face_normals();
+  }
+  FileBuffer buffer(out, progress);
+  std::ostream os(&buffer);
+  os.exceptions(std::ios::badbit);  // an exception from the buffer (cancelled, disk full) reaches us
+  if (!OpenMesh::IO::write_mesh(om, os, ext, opt, precision) || !os.flush())
+    throw Error(std::string("OpenMesh could not write the mesh as ") + ext);
+}
+
+}  // namespace
+
+void write_stl(const ValueRef& v, OutputFile& out, const SaveOptions&, Progress& progress) {
+  write_with_openmesh(v, out, progress, ".stl",
+                      OpenMesh::IO::Options(OpenMesh::IO::Options::Binary | OpenMesh::IO::Options::FaceNormal), 9);
+}
+
+void write_obj(const ValueRef& v, OutputFile& out, const SaveOptions&, Progress& progress) {
+  write_with_openmesh(v, out, progress, ".obj", OpenMesh::IO::Options::Default, 17);
+}
+
+void write_ply(const ValueRef& v, OutputFile& out, const SaveOptions&, Progress& progress) {
+  write_with_openmesh(v, out, progress, ".ply", OpenMesh::IO::Options(OpenMesh::IO::Options::Binary), 17);
+}
+
+}  // namespace selfsim::io

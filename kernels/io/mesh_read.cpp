@@ -1,0 +1,119 @@
+// Reading .stl, .obj and .ply meshes back (selfsim info / diff, load()) with OpenMesh's readers, guarded as
+// vtk_read.cpp guards VTK's: OpenMesh trusts the file, so it reads in a forked child process with memory
+// and time limits (child_process.h), the mesh comes back over a pipe as a Dataset of triangles, and the
+// Dataset is checked. OpenMesh merges an STL's repeated corners into shared points and splits polygons
+// into triangles. A face OpenMesh cannot hold (an edge of three faces, a bowtie) is an error naming
+// OpenMesh's complaint, never a silently smaller mesh.
+#include <unistd.h>
+
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <algorithm>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "kernels/geom/error.h"
+#include "kernels/io/child_process.h"
+#include "kernels/io/dataset_check.h"
+#include "kernels/io/dataset_pipe.h"
+#include "kernels/io/openmesh_mesh.h"
+#include "kernels/io/read.h"
+#include "kernels/io/read_error.h"
+#include "kernels/io/regular_file.h"
+
+namespace selfsim::io {
+
+namespace {
+
+// A binary STL is an 80-byte header, a uint32 triangle count, and 50 bytes per triangle.
+bool binary_stl(const RegularFile& f) {
+  std::uint32_t n = 0;
+  if (f.size() < 84 || f.read_at(80, &n, 4) != 4) return false;
+  return f.size() == 84 + 50 * std::uint64_t{n};
+}
+
+void send_mesh(PipeOut& out, const OMesh& om) {
+  put_count(out, static_cast<std::uint64_t>(CellShapes::polygons));
+  put_count(out, om.n_vertices());
+  for (const auto& vh : om.vertices()) out.write(om.point(vh).data(), 3 * sizeof(double));
+  put_count(out, om.n_faces());
+  for (std::uint64_t end = 3; end <= 3 * om.n_faces(); end += 3) out.write(&end, sizeof end);
+  put_count(out, 3 * om.n_faces());
+  for (const auto& fh : om.faces())
+    for (const auto& vh : om.fv_range(fh)) {
+      const std::uint64_t id = static_cast<std::uint64_t>(vh.idx());
+      out.write(&id, sizeof id);
+    }
+  put_count(out, 0);  // no point fields
+  put_count(out, 0);  // no cell fields
+}
+
+int read_in_child(PipeOut& out, const std::string& name, const std::string& ext, bool binary) {
+  std::ostringstream complaints;
+  quiet_openmesh(&complaints);
+  std::ifstream in(name, std::ios::binary);
+  OMesh om;
+  OpenMesh::IO::Options opt = binary ? OpenMesh::IO::Options::Binary : OpenMesh::IO::Options::Default;
+  const bool ok = in && OpenMesh::IO::read_mesh(om, in, ext, opt);
+  std::string error;
+  const std::string said = complaints.str();
+  if (!said.empty())
+    error = "OpenMesh: " + said.substr(0, std::min(said.find('\n'), std::size_t{300}));
+  else if (!ok)
+    error = "OpenMesh could not read it";
+  else if (om.n_faces() == 0)
+    error = "it holds no triangles";
+  const char kind = error.empty() ? 'D' : 'E';
+  out.write(&kind, 1);
+  if (!error.empty()) {
+    put_name(out, error);
+    return 0;
+  }
+  send_mesh(out, om);
+  return 0;
+}
+
+Dataset read_checked(const std::filesystem::path& file, const std::string& ext) {
+  const RegularFile f(file);
+  const bool binary = ext == ".stl" && binary_stl(f);
+  std::string name = "/proc/self/fd/" + std::to_string(f.fd());  // the file checked, not what the name is now
+  if (::access(name.c_str(), R_OK) != 0) name = file.string();
+  ChildLimits limits;
+  limits.what = "the OpenMesh reader";
+  // OpenMesh's half-edge mesh takes a few hundred bytes a triangle; an ASCII file some 30 bytes a triangle.
+  limits.memory_bytes = std::min((std::uint64_t{1} << 30) + 64 * f.size(), 3 * read_budget_bytes());
+  limits.seconds = 30 + static_cast<double>(f.size()) / (4 << 20);
+  Dataset d;
+  run_in_child(
+      limits, [&](PipeOut& out) { return read_in_child(out, name, ext, binary); },
+      [&](PipeIn& in) {
+        char kind = 0;
+        in.read(&kind, 1);
+        if (kind == 'E') {
+          std::uint64_t n = 0;
+          in.read(&n, sizeof n);
+          if (n > 4096) throw Error("the OpenMesh reader sent a malformed answer");
+          std::string reason(static_cast<std::size_t>(n), '\0');
+          in.read(reason.data(), reason.size());
+          throw Error(reason);
+        }
+        if (kind != 'D') throw Error("the OpenMesh reader sent a malformed answer");
+        d = receive_dataset(in, read_budget_bytes() / 8);
+      });
+  check_dataset(d);
+  return d;
+}
+
+}  // namespace
+
+Dataset read_mesh_file(const std::filesystem::path& file, const std::string& ext) {
+  try {
+    return read_checked(file, ext);
+  } catch (const std::bad_alloc&) {
+    throw Error(cannot_read(file, "out of memory"));
+  } catch (const std::exception& e) {
+    throw Error(cannot_read(file, e.what()));
+  }
+}
+
+}  // namespace selfsim::io
