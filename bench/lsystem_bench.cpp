@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "kernels/lsystem/turtle.h"
+#include "kernels/lsystem/turtle2d.h"
 
 using namespace selfsim;
 
@@ -48,7 +48,7 @@ void streaming(benchmark::State& state, lsystem::Grammar g) {
   const int level = static_cast<int>(state.range(0));
   std::size_t segments = 0;
   for (auto _ : state) {
-    Polyline c = lsystem::curve(g, {.level = level}, no_progress());
+    Polyline c = lsystem::turtle2d(g, {.level = level}, no_progress());
     segments = c.segments();
     benchmark::DoNotOptimize(c.points.data());
   }
@@ -61,9 +61,9 @@ void streaming(benchmark::State& state, lsystem::Grammar g) {
 void streaming_warm(benchmark::State& state, lsystem::Grammar g) {
   const int level = static_cast<int>(state.range(0));
   Polyline c;
-  lsystem::curve_into(g, {.level = level}, no_progress(), c);
+  lsystem::turtle2d_into(g, {.level = level}, no_progress(), c);
   for (auto _ : state) {
-    lsystem::curve_into(g, {.level = level}, no_progress(), c);
+    lsystem::turtle2d_into(g, {.level = level}, no_progress(), c);
     benchmark::DoNotOptimize(c.points.data());
   }
   state.counters["segments/s"] =

@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "kernels/io/save.h"
-#include "kernels/lsystem/turtle.h"
+#include "kernels/lsystem/turtle2d.h"
 
 using namespace selfsim;
 
@@ -12,7 +12,7 @@ namespace {
 
 void save_dragon(benchmark::State& state, std::string ext) {
   const lsystem::Grammar g{.axiom = "FX", .rules = {{'X', "X-YF"}, {'Y', "FX+Y"}}, .angle = 90};
-  const Polyline c = lsystem::curve(g, {.level = static_cast<int>(state.range(0))}, no_progress());
+  const Polyline c = lsystem::turtle2d(g, {.level = static_cast<int>(state.range(0))}, no_progress());
   const auto file = std::filesystem::temp_directory_path() / ("selfsim_bench" + ext);
   double bytes = 0;
   for (auto _ : state) {

@@ -22,7 +22,7 @@
 #include "kernels/geom/error.h"
 #include "kernels/geom/polyline.h"
 #include "kernels/lsystem/production_count.h"
-#include "kernels/lsystem/turtle.h"
+#include "kernels/lsystem/turtle2d.h"
 
 namespace {
 
@@ -75,7 +75,7 @@ bool moderate_turns(const lsystem::Grammar& g) {
   return true;
 }
 
-void check_curve(const lsystem::Grammar& g, const lsystem::CurveOptions& opt, const lsystem::LevelCounts& counts,
+void check_curve(const lsystem::Grammar& g, const lsystem::TurtleOptions& opt, const lsystem::LevelCounts& counts,
                  const Polyline& c) {
   const Field* level = c.point_fields.find("level");
   require(level != nullptr && level->uniform && level->at(0) == opt.level,
@@ -141,7 +141,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (...) {
     fuzz::unexpected_exception("Grammar::validate");
   }
-  lsystem::CurveOptions opt;
+  lsystem::TurtleOptions opt;
   opt.level = in.level;
   opt.normalize = in.normalize;
   opt.budget.limit = in.budget;  // at most 1e5: each execution stays in milliseconds
@@ -159,7 +159,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   Polyline c;
   try {
-    c = lsystem::curve(g, opt, no_progress());
+    c = lsystem::turtle2d(g, opt, no_progress());
   } catch (const Error&) {
     return 0;
   } catch (...) {
@@ -172,7 +172,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (opt.normalize) {
       opt.normalize = false;
       try {
-        c = lsystem::curve(g, opt, no_progress());
+        c = lsystem::turtle2d(g, opt, no_progress());
       } catch (const Error&) {
         return 0;  // shrink^level overflows when not normalised
       } catch (...) {

@@ -10,9 +10,9 @@
 //   start 0 60            Grammar::start_angles (space separated; "start" alone gives an empty list)
 //   shrink 0.5            Grammar::shrink
 //   draw FG / move f      Grammar::draw / Grammar::move
-//   level 4               CurveOptions::level (default 3)
-//   normalize 0           CurveOptions::normalize (default 1)
-//   budget 500            CurveOptions::budget.limit, the --max-points (default and most 1e5)
+//   level 4               TurtleOptions::level (default 3)
+//   normalize 0           TurtleOptions::normalize (default 1)
+//   budget 500            TurtleOptions::budget.limit, the --max-points (default and most 1e5)
 #pragma once
 
 #include <charconv>

@@ -12,7 +12,7 @@
 
 #include "kernels/geom/polyline.h"
 #include "kernels/io/save.h"
-#include "kernels/lsystem/turtle.h"
+#include "kernels/lsystem/turtle2d.h"
 
 namespace {
 
@@ -46,10 +46,10 @@ Polyline seed_curve(const char* axiom, const char* rule, double angle, int level
   g.axiom = axiom;
   g.rules['F'] = rule;
   g.angle = angle;
-  lsystem::CurveOptions opt;
+  lsystem::TurtleOptions opt;
   opt.level = level;
   opt.normalize = normalize;
-  return lsystem::curve(g, opt, no_progress());
+  return lsystem::turtle2d(g, opt, no_progress());
 }
 
 }  // namespace

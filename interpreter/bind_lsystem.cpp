@@ -5,8 +5,10 @@
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
 #include "interpreter/run_context.h"
+#include "kernels/geom/check.h"
 #include "kernels/lsystem/production_count.h"
-#include "kernels/lsystem/turtle.h"
+#include "kernels/lsystem/rewrite.h"
+#include "kernels/lsystem/turtle2d.h"
 
 namespace selfsim::interp {
 
@@ -78,13 +80,14 @@ Grammar read_grammar(lua_State* L, int index) {
 Held<Grammar> self(lua_State* L, const char* method) { return check_self<Grammar>(L, grammar_type, method); }
 
 // The level argument of g:string(n) / g:count(n).
+// A whole float (3.0, a level computed as n / 2) is accepted as the integer it is.
 int level_argument(lua_State* L, int index) {
-  if (!lua_isinteger(L, index)) throw Error("level must be an integer, got " + describe(L, index));
-  const lua_Integer n = lua_tointeger(L, index);
-  if (n < 0 || n > lsystem::max_level)
-    throw Error("level must be an integer in [0, " + std::to_string(lsystem::max_level) + "], got " +
-                std::to_string(n));
-  return static_cast<int>(n);
+  lua_Integer n = 0;
+  if (!lua_isinteger(L, index) &&
+      !(lua_type(L, index) == LUA_TNUMBER && lua_numbertointeger(lua_tonumber(L, index), &n)))
+    throw Error("level must be an integer, got " + describe(L, index));
+  if (lua_isinteger(L, index)) n = lua_tointeger(L, index);
+  return static_cast<int>(check_range(n, 0, lsystem::max_level, "level"));
 }
 
 int grammar_curve(lua_State* L) {
@@ -92,7 +95,7 @@ int grammar_curve(lua_State* L) {
   const Grammar& g = *held;
   return call_kernel(L, "curve", [&] {
     RunContext& run = RunContext::of(L);
-    lsystem::CurveOptions opt;
+    lsystem::TurtleOptions opt;
     if (lua_type(L, 2) == LUA_TNUMBER) {
       opt.level = level_argument(L, 2);
     } else {
@@ -104,7 +107,7 @@ int grammar_curve(lua_State* L) {
     }
     push_curve(L, with_budget(L, [&](const PointBudget& b) {
                  opt.budget = b;
-                 return lsystem::curve(g, opt, run);
+                 return lsystem::turtle2d(g, opt, run);
                }));
     run.finish_bar();
     return 1;

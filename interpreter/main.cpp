@@ -13,15 +13,20 @@ usage:
   selfsim run RECIPE.lua [options]   run a recipe; outputs go to the output folder
       -o, --output DIR      output folder (default: out)
       --set KEY=VALUE       override param(KEY, default) in the recipe (repeatable)
-      --max-points N        points all of the run's curves may hold together (default 268435456)
+      --max-points N        points (and mesh faces) all of the run's values may hold together
+                            (default 268435456)
       --max-memory SIZE     memory for the recipe's Lua strings and tables, e.g. 2G
                             (default: a quarter of this machine's memory)
       --timeout S           stop the run after S seconds (default: none)
       --seed N              seed for math.random (default 0): same seed, same files
+      --threads N           threads for parallel kernels (default: all cores); the files are
+                            byte-identical for any N
       -q, --quiet           print nothing but errors
-  selfsim diff A B [--tol T] compare two geometry files (.vtp, .svg) point by point and field by
-                             field; T is relative (default 1e-9). Exit 0 same, 1 different, 2 error
-  selfsim info FILE          points, cells, bounding box and fields of a .vtp or .svg file
+  selfsim diff A B [--tol T] compare two geometry files (.vtp .vtu .svg .stl .obj .ply) point by point,
+                             cell by cell and field by field; T is relative (default 1e-9).
+                             Exit 0 same, 1 different, 2 error
+  selfsim info FILE          points, cells, bounding box and fields of a geometry file, and for a
+                             surface whether it is a closed manifold
   selfsim --help | --version
 
 exit codes: 0 success, 1 recipe error, 2 usage error, 130 interrupted

@@ -1,5 +1,5 @@
 // Parsing `selfsim run` arguments: RECIPE.lua [-o DIR] [--set key=value]... [--max-points N]
-// [--max-memory SIZE] [--timeout S] [--seed N] [-q].
+// [--max-memory SIZE] [--timeout S] [--seed N] [--threads N] [-q].
 #include <cctype>
 #include <cmath>
 
@@ -57,7 +57,13 @@ RunConfig parse_run_arguments(const std::vector<std::string>& args) {
       c.max_memory = size_argument(a, value());
     else if (a == "--timeout")
       c.timeout = number_argument(a, value(), 0, 1e9);
-    else if (a == "--seed") {
+    else if (a == "--threads") {
+      const std::string& text = value();
+      const auto n = parse_text<long long>(text);
+      if (!n || *n < 1 || *n > 1024)
+        throw UsageError("--threads expects a whole number in [1, 1024], got '" + text + "'");
+      c.threads = static_cast<int>(*n);
+    } else if (a == "--seed") {
       const std::string& text = value();
       const auto seed = parse_text<long long>(text);
       if (!seed || *seed < 0) throw UsageError("--seed expects a whole number in [0, 2^63), got '" + text + "'");

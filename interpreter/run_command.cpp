@@ -1,7 +1,10 @@
 // `selfsim run RECIPE.lua`: runs a recipe in the sandbox and reports its outputs or its one-line error.
+#include <tbb/global_control.h>
+
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string_view>
 
 #include "interpreter/bindings.h"
@@ -90,6 +93,9 @@ int run_command(const RunConfig& config) {
   run.scripts_dir = find_scripts_dir();
   for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, on_interrupt);  // stop cleanly: no partial files
   const Watchdog watchdog(run, config.recipe.string());
+  // --threads bounds every parallel kernel of the run; results never depend on it (DESIGN.md, Threads).
+  std::optional<tbb::global_control> threads;
+  if (config.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, config.threads);
 
   lua_State* L = new_sandbox(run);
   if (L == nullptr) {

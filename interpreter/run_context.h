@@ -25,6 +25,7 @@ struct RunConfig {
   double max_memory = 0;                    // bytes the Lua state may hold; 0 = default_max_memory()
   double timeout = 0;                       // seconds, 0 = none
   long long seed = 0;                       // math.random seed, in [0, 2^63)
+  int threads = 0;                          // worker threads for parallel kernels, 0 = all cores
   bool quiet = false;
 };
 

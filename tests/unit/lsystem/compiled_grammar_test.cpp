@@ -6,7 +6,8 @@
 #include <numbers>
 
 #include "kernels/lsystem/production_count.h"
-#include "kernels/lsystem/turtle.h"
+#include "kernels/lsystem/rewrite.h"
+#include "kernels/lsystem/turtle2d.h"
 #include "table1.h"
 
 using namespace selfsim;
@@ -72,7 +73,7 @@ TEST(Turtle, StreamedBlocksMatchTheStringTurtle) {
   for (const Grammar& g : {table1::dragon(), table1::terdragon(), table1::gosper(), table1::hilbert(), plant})
     for (int level : {0, 1, 5, 11}) {
       if (predict_counts(g, level).segments > 3e6) continue;
-      const Polyline c = curve(g, {.level = level, .normalize = false}, no_progress());
+      const Polyline c = turtle2d(g, {.level = level, .normalize = false}, no_progress());
       const std::vector<Vec2> want = reference(g, level);
       ASSERT_EQ(c.points.size(), want.size()) << g.axiom << " " << level;
       const double tol = 1e-9 * std::max(1.0, norm(c.bbox().size()));

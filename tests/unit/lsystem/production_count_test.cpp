@@ -6,7 +6,8 @@
 #include <cmath>
 #include <vector>
 
-#include "kernels/lsystem/turtle.h"
+#include "kernels/lsystem/rewrite.h"
+#include "kernels/lsystem/turtle2d.h"
 #include "table1.h"
 
 using namespace selfsim::lsystem;
@@ -34,7 +35,7 @@ TEST(ProductionCount, PredictionEqualsExpansion) {
     for (int n = 0; n <= 6; ++n) {
       const LevelCounts c = predict_counts(g, n);
       EXPECT_EQ(c.symbols, static_cast<double>(expand_string(g, n, 1e9).size()));
-      EXPECT_EQ(c.segments, static_cast<double>(curve(g, {.level = n}, selfsim::no_progress()).segments()));
+      EXPECT_EQ(c.segments, static_cast<double>(turtle2d(g, {.level = n}, selfsim::no_progress()).segments()));
     }
 }
 

@@ -6,7 +6,7 @@
 
 #include "../lsystem/table1.h"
 #include "kernels/geom/error.h"
-#include "kernels/lsystem/turtle.h"
+#include "kernels/lsystem/turtle2d.h"
 
 using namespace selfsim;
 using namespace selfsim::substitute;
@@ -35,7 +35,7 @@ TEST(Substitute, KochSnowflakeEqualsTheLSystem) {
   const Polyline triangle = Polyline::single({{0, 0}, {1, 0}, {0.5, s3 / 2}, {0, 0}});
   for (int n = 0; n <= 6; ++n) {
     const Polyline a = run(triangle, koch_generator, n);
-    const Polyline b = lsystem::curve(table1::koch_snowflake(), {.level = n}, no_progress());
+    const Polyline b = lsystem::turtle2d(table1::koch_snowflake(), {.level = n}, no_progress());
     ASSERT_EQ(a.points.size(), b.points.size());
     for (std::size_t i = 0; i < a.points.size(); ++i)
       ASSERT_NEAR(norm(a.points[i] - b.points[i]), 0, 1e-12) << n << " " << i;
@@ -46,14 +46,14 @@ TEST(Substitute, HeighwayDragonIsATentWithItsSecondHalfTurned) {
   // f1(z) = (1+i)z/2 and f2(z) = 1 - (1-i)z/2: the second copy is the half-turned one, walked backwards.
   using enum SegmentTransform;
   for (int n = 0; n <= 10; ++n)
-    expect_same(run(unit, tent, n, {Identity, HalfTurn}), lsystem::curve(table1::dragon(), {.level = n}, no_progress()),
-                n);
+    expect_same(run(unit, tent, n, {Identity, HalfTurn}),
+                lsystem::turtle2d(table1::dragon(), {.level = n}, no_progress()), n);
 }
 
 TEST(Substitute, TerdragonIsItsFirstLevel) {
-  const Polyline first = lsystem::curve(table1::terdragon(), {.level = 1}, no_progress());
+  const Polyline first = lsystem::turtle2d(table1::terdragon(), {.level = 1}, no_progress());
   for (int n = 0; n <= 6; ++n)
-    expect_same(run(unit, first, n), lsystem::curve(table1::terdragon(), {.level = n}, no_progress()), n);
+    expect_same(run(unit, first, n), lsystem::turtle2d(table1::terdragon(), {.level = n}, no_progress()), n);
 }
 
 TEST(Substitute, CountsAndLevel) {

@@ -1,9 +1,9 @@
-// Turtle interpretation of an L-system level, streamed: the level's string is never built. A stack of
-// rule positions (one frame per level) expands depth-first straight into the turtle, and the output is
+// The 2D turtle interpretation of an L-system level (seed 002 §1, Table 1), streamed: the level's string is
+// never built. rewrite() (rewrite.h) expands depth-first straight into the turtle, and the output is
 // reserved from the production-matrix prediction, so memory is the vertex array and nothing more.
+// Lattice grammars without branches or moves are drawn by several threads at once (turtle_split.h), each
+// into its own slice of the array; the result is byte-identical whatever the number of threads.
 #pragma once
-
-#include <string>
 
 #include "kernels/geom/budget.h"
 #include "kernels/geom/polyline.h"
@@ -12,7 +12,7 @@
 
 namespace selfsim::lsystem {
 
-struct CurveOptions {
+struct TurtleOptions {
   int level = 0;          // rewriting steps applied to the axiom, in [0, max_level]
   bool normalize = true;  // open curves run from (0,0) to (1,0); see below
   PointBudget budget;     // refuse (before any work) a level predicted not to fit
@@ -20,18 +20,15 @@ struct CurveOptions {
   void validate() const;
 };
 
-// The curve of grammar g at opt.level.
+// The curve of grammar g at opt.level, with a uniform point field `level`.
 // Normalisation: when the turtle ends away from where it started, the direct similarity taking its start
 // to (0,0) and its end to (1,0) is applied, so every level of an open curve spans the same unit segment.
 // A closed curve (turtle back at its start) is left where the turtle drew it: starting at (0,0), heading
 // start_angle, with steps of length shrink^level. With normalize = false every curve is left that way.
-// Branches '[' ']' and move symbols start new paths. Throws BudgetError if the level, or
-// the branches it keeps open, would not fit opt.budget.
-Polyline curve(const Grammar& g, const CurveOptions& opt, Progress& progress);
+// Branches '[' ']' and move symbols start new paths. Throws BudgetError if the level, or the branches it
+// keeps open, would not fit opt.budget; Cancelled when progress says so (checked from every thread).
+Polyline turtle2d(const Grammar& g, const TurtleOptions& opt, Progress& progress);
 // The same into `out`, reusing its memory (for repeated runs; benches).
-void curve_into(const Grammar& g, const CurveOptions& opt, Progress& progress, Polyline& out);
-
-// The string of level `level`, for small levels; refuses one predicted longer than max_symbols.
-std::string expand_string(const Grammar& g, int level, double max_symbols);
+void turtle2d_into(const Grammar& g, const TurtleOptions& opt, Progress& progress, Polyline& out);
 
 }  // namespace selfsim::lsystem

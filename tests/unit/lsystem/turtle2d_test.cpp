@@ -1,4 +1,4 @@
-#include "kernels/lsystem/turtle.h"
+#include "kernels/lsystem/turtle2d.h"
 
 #include <gtest/gtest.h>
 
@@ -8,6 +8,7 @@
 
 #include "kernels/geom/error.h"
 #include "kernels/lsystem/production_count.h"
+#include "kernels/lsystem/rewrite.h"
 #include "table1.h"
 
 using namespace selfsim;
@@ -16,7 +17,7 @@ using namespace selfsim::lsystem;
 namespace {
 
 Polyline at(const Grammar& g, int level, bool normalize = true) {
-  return curve(g, {.level = level, .normalize = normalize}, no_progress());
+  return turtle2d(g, {.level = level, .normalize = normalize}, no_progress());
 }
 
 double shoelace_area(std::span<const Vec2> p) {
@@ -122,7 +123,7 @@ TEST(Turtle, PerSymbolAnglesAndIrrationalTurns) {
 
 TEST(Turtle, RefusesLevelsOverTheLimitBeforeWork) {
   try {
-    curve(table1::dragon(), {.level = 40, .budget = {1e6}}, no_progress());
+    turtle2d(table1::dragon(), {.level = 40, .budget = {1e6}}, no_progress());
     FAIL() << "expected an error";
   } catch (const BudgetError& e) {
     EXPECT_NE(std::string(e.what()).find("1099511627777 points"), std::string::npos) << e.what();
@@ -135,7 +136,7 @@ TEST(Turtle, CancellationStopsTheKernel) {
   struct StopAtOnce : Progress {
     bool cancelled() override { return true; }
   } stop;
-  EXPECT_THROW(curve(table1::dragon(), {.level = 22}, stop), Cancelled);
+  EXPECT_THROW(turtle2d(table1::dragon(), {.level = 22}, stop), Cancelled);
 }
 
 TEST(Turtle, RewritingWithoutDrawingIsStillCancellable) {
@@ -144,8 +145,8 @@ TEST(Turtle, RewritingWithoutDrawingIsStillCancellable) {
   } stop;
   // 2^25 rules expanded and not one segment: only the rewrite count can notice the cancellation (the
   // brackets keep X out of the precomputed blocks, which would otherwise make this instant).
-  EXPECT_THROW(curve(Grammar{.axiom = "X", .rules = {{'X', "X[]X"}}}, {.level = 25}, stop), Cancelled);
-  EXPECT_THROW(curve(Grammar{.axiom = "X", .rules = {{'X', "XX"}}}, {.level = 60}, no_progress()), Error);
+  EXPECT_THROW(turtle2d(Grammar{.axiom = "X", .rules = {{'X', "X[]X"}}}, {.level = 25}, stop), Cancelled);
+  EXPECT_THROW(turtle2d(Grammar{.axiom = "X", .rules = {{'X', "XX"}}}, {.level = 60}, no_progress()), Error);
 }
 
 // Cancels only once the turtle has started walking, after the prediction: what the walk itself checks.
@@ -159,8 +160,8 @@ TEST(Turtle, TurnsThatDrawNothingAreCheckedPerSymbol) {
   // 4 million turns, one rule frame per level and no point: only a per-symbol check can notice the stop.
   StopOnceWalking stop;
   const Grammar turns{.axiom = "X", .rules = {{'X', "X" + std::string(65536, '+')}}};
-  EXPECT_THROW(curve(turns, {.level = 64}, stop), Cancelled);
-  EXPECT_EQ(curve(turns, {.level = 64}, no_progress()).points.size(), 0u);
+  EXPECT_THROW(turtle2d(turns, {.level = 64}, stop), Cancelled);
+  EXPECT_EQ(turtle2d(turns, {.level = 64}, no_progress()).points.size(), 0u);
 }
 
 TEST(Turtle, PredictionIsCancellable) {
@@ -175,7 +176,7 @@ TEST(Turtle, HugeAnglesAreReducedExactly) {
   const double turns = 360.0 * std::ldexp(1.0, 40) + 90;
   Grammar big = table1::dragon(), plain = table1::dragon();
   big.angle = turns;
-  const Polyline a = curve(big, {.level = 10}, no_progress()), b = curve(plain, {.level = 10}, no_progress());
+  const Polyline a = turtle2d(big, {.level = 10}, no_progress()), b = turtle2d(plain, {.level = 10}, no_progress());
   ASSERT_EQ(a.points.size(), b.points.size());
   for (std::size_t i = 0; i < a.points.size(); ++i) EXPECT_EQ(a.points[i], b.points[i]) << i;
 }
@@ -183,21 +184,21 @@ TEST(Turtle, HugeAnglesAreReducedExactly) {
 TEST(Turtle, OpenBranchesAreBudgeted) {
   // X -> [X[X keeps 2^(level+1) - 2 branches open; each saved state costs two points of the budget.
   const Grammar open{.axiom = "X", .rules = {{'X', "[X[X"}}};
-  EXPECT_THROW(curve(open, {.level = 20, .budget = {1e6}}, no_progress()), BudgetError);
-  EXPECT_NO_THROW(curve(open, {.level = 12, .budget = {1e6}}, no_progress()));
+  EXPECT_THROW(turtle2d(open, {.level = 20, .budget = {1e6}}, no_progress()), BudgetError);
+  EXPECT_NO_THROW(turtle2d(open, {.level = 12, .budget = {1e6}}, no_progress()));
 }
 
 TEST(Turtle, BudgetCountsThePointsPathBreaksAdd) {
   // Four paths of one segment: 4 segments but 8 points (found by the grammar fuzzer).
   const Grammar broken{.axiom = "FfFfFfFf"};
-  EXPECT_THROW(curve(broken, {.level = 0, .budget = {5}}, no_progress()), BudgetError);
-  EXPECT_EQ(curve(broken, {.level = 0, .budget = {9}}, no_progress()).points.size(), 8u);
+  EXPECT_THROW(turtle2d(broken, {.level = 0, .budget = {5}}, no_progress()), BudgetError);
+  EXPECT_EQ(turtle2d(broken, {.level = 0, .budget = {9}}, no_progress()).points.size(), 8u);
 }
 
 TEST(Turtle, BudgetCountsHeldPoints) {
   // 1025 points fit a limit of 2000, but not beside 1000 points already held.
-  EXPECT_NO_THROW(curve(table1::dragon(), {.level = 10, .budget = {2000, 0}}, no_progress()));
-  EXPECT_THROW(curve(table1::dragon(), {.level = 10, .budget = {2000, 1000}}, no_progress()), BudgetError);
+  EXPECT_NO_THROW(turtle2d(table1::dragon(), {.level = 10, .budget = {2000, 0}}, no_progress()));
+  EXPECT_THROW(turtle2d(table1::dragon(), {.level = 10, .budget = {2000, 1000}}, no_progress()), BudgetError);
 }
 
 TEST(Turtle, ExpandStringOfTheDragon) {
