@@ -38,7 +38,6 @@ int save(lua_State* L) {
     const io::Format& format = io::format_for(name, io::kind_of(v->ref()));
     const io::SaveOptions opt = read_save_options(L, 3, format);
     const std::string written = io::save(v->ref(), run.config.out_dir, name, opt, run);
-    run.finish_bar();
     run.saved.push_back(written + " (" + std::to_string(v->points()) + " points)");
     return 0;
   });

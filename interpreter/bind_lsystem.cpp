@@ -43,7 +43,7 @@ void each_symbol(lua_State* L, const char* table, F&& f) {
 Grammar read_grammar(lua_State* L, int index) {
   Options o(L, index);
   Grammar g;
-  if (!o.has("axiom")) throw Error("option 'axiom' is required");
+  o.require("axiom", "the level-0 string, e.g. axiom = \"F\"");
   g.axiom = o.string("axiom", "");
   if (o.push("rules") != LUA_TNIL) {
     each_symbol(L, "rules",
@@ -100,7 +100,7 @@ int grammar_curve(lua_State* L) {
       opt.level = level_argument(L, 2);
     } else {
       Options o(L, 2);
-      if (!o.has("level")) throw Error("option 'level' is required");
+      o.require("level", "the rewriting level: g:curve{ level = 10 } or g:curve(10)");
       opt.level = static_cast<int>(o.integer("level", 0, 0, lsystem::max_level));
       opt.normalize = o.boolean("normalize", opt.normalize);
       o.finish();
@@ -109,7 +109,6 @@ int grammar_curve(lua_State* L) {
                  opt.budget = b;
                  return lsystem::turtle2d(g, opt, run);
                }));
-    run.finish_bar();
     return 1;
   });
 }

@@ -32,14 +32,11 @@ int make_substitute(lua_State* L) {
   return call_kernel(L, "substitute", [&] {
     RunContext& run = RunContext::of(L);
     Options o(L, 1);
-    for (const char* required : {"path", "generator", "levels"})
-      if (!o.has(required)) throw Error(std::string("option '") + required + "' is required");
-    o.push("path");
-    const Polyline path = to_polyline(L, -1, "option 'path'");
-    lua_pop(L, 1);
-    o.push("generator");
-    const Polyline generator = to_polyline(L, -1, "option 'generator'");
-    lua_pop(L, 1);
+    o.require("path", "the curve whose segments are replaced: a curve or a table of {x, y}");
+    o.require("generator", "the path that replaces each segment, from (0,0) to (1,0)");
+    o.require("levels", "how many times to substitute, e.g. levels = 4");
+    const Polyline path = o.curve("path");
+    const Polyline generator = o.curve("generator");
     substitute::SubstituteOptions opt;
     opt.levels = static_cast<int>(o.integer("levels", 1, 0, 64));
     if (o.push("transforms") != LUA_TNIL) opt.transforms = read_transforms(L);
@@ -49,7 +46,6 @@ int make_substitute(lua_State* L) {
                  opt.budget = b;
                  return substitute::substitute(path, generator, opt, run);
                }));
-    run.finish_bar();
     return 1;
   });
 }

@@ -95,6 +95,8 @@ void hold_memory(lua_State* L, double bytes) {
 
 bool run_has_ended(lua_State* L) { return RunContext::of(L).ended; }
 
+void end_progress(lua_State* L) noexcept { RunContext::of(L).finish_bar(); }
+
 namespace {
 
 // Keys of a table in the order they are visited: numbers by value, then strings by their bytes, then

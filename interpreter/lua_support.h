@@ -43,6 +43,9 @@ bool run_has_ended(lua_State* L);
 // Message for a cancelled kernel: the timeout or the interrupt that caused it.
 std::string cancel_message(lua_State* L);
 
+// Ends the progress bar a kernel may have drawn (every call_kernel does, whatever happened).
+void end_progress(lua_State* L) noexcept;
+
 // Runs body (which returns the number of Lua results) and turns any C++ exception into a Lua error raised
 // after the catch block, never inside it: lua_error longjmps, which must not cross live C++ handlers.
 // Readers may throw with values still pushed: Lua discards a C function's stack slots when it raises.
@@ -55,7 +58,9 @@ int call_kernel(lua_State* L, const char* fn, Body&& body) {
       // finalizes new values): nothing is made or written then.
       if (run_has_ended(L))
         throw Error("the recipe has ended: nothing more is made or written (called from a finalizer?)");
-      return std::forward<Body>(body)();
+      const int results = std::forward<Body>(body)();
+      end_progress(L);
+      return results;
     } catch (const Cancelled&) {
       message = cancel_message(L);
     } catch (const Error& e) {
@@ -65,6 +70,7 @@ int call_kernel(lua_State* L, const char* fn, Body&& body) {
     } catch (const std::exception& e) {
       message = std::string("internal error: ") + e.what();
     }
+    end_progress(L);
     push_error(L, fn, message);
   }  // message freed before the longjmp
   return lua_error(L);

@@ -48,14 +48,12 @@ std::vector<Triangle> read_triangles(lua_State* L, int index, std::size_t points
 int make_mesh(lua_State* L) {
   return call_kernel(L, "mesh", [&] {
     Options o(L, 1);
-    if (!o.has("points")) throw Error("option 'points' is required (a table of {x, y, z})");
-    if (!o.has("triangles")) throw Error("option 'triangles' is required (a table of {i, j, k} point indices)");
+    o.require("points", "a table of {x, y, z}");
+    o.require("triangles", "a table of {i, j, k} point indices, counter-clockwise seen from outside");
     Mesh m;
-    o.push("points");
-    m.points = read_point_list<Vec3>(L, -1, "option 'points'");
-    o.push("triangles");
-    m.triangles = read_triangles(L, -1, m.points.size());
-    lua_pop(L, 2);
+    m.points = o.points3("points");
+    if (o.push("triangles") != LUA_TNIL) m.triangles = read_triangles(L, -1, m.points.size());
+    lua_pop(L, 1);
     o.finish();
     if (m.triangles.empty()) throw Error("option 'triangles' must hold at least one triangle");
     m.validate();

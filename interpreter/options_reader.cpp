@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "interpreter/curve_value.h"
 #include "interpreter/lua_support.h"
+#include "interpreter/point_reader.h"
+#include "interpreter/value_types.h"
 #include "kernels/geom/error.h"
 
 namespace selfsim::interp {
@@ -154,9 +157,79 @@ std::vector<std::string> Options::unread() {
   return unknown;
 }
 
+bool Options::require(const char* key, const std::string& hint) {
+  if (has(key)) return true;
+  missing_.push_back(option(key) + " is required" + (hint.empty() ? "" : " (" + hint + ")"));
+  return false;
+}
+
+int Options::enumeration(const char* key, const std::vector<std::string>& names, int fallback) {
+  if (push(key) == LUA_TNIL) {
+    lua_pop(L, 1);
+    return fallback;
+  }
+  const std::string value = text_value(L, -1, option(key));
+  lua_pop(L, 1);
+  return enum_index(shown_text(value), names, option(key) + " value");
+}
+
+std::vector<double> Options::numbers(const char* key) {
+  std::vector<double> out;
+  if (push(key) == LUA_TNIL) {
+    lua_pop(L, 1);
+    return out;
+  }
+  if (lua_type(L, -1) != LUA_TTABLE) throw Error(option(key) + " must be a list of numbers, got " + describe(L, -1));
+  const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, -1));
+  check_budget(static_cast<double>(n), run_budget(L), option(key));
+  for (lua_Integer i = 1; i <= n; ++i) {
+    lua_rawgeti(L, -1, i);
+    out.push_back(finite_number(L, -1, option(key) + " entry " + std::to_string(i)));
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  return out;
+}
+
+template <class V, class Read>
+std::optional<V> read_optional(Options& o, lua_State* L, const char* key, Read read) {
+  if (o.push(key) == LUA_TNIL) {
+    lua_pop(L, 1);
+    return std::nullopt;
+  }
+  const V v = read(L, -1, option(key));
+  lua_pop(L, 1);
+  return v;
+}
+
+std::optional<Vec2> Options::point2(const char* key) { return read_optional<Vec2>(*this, L, key, read_point2); }
+std::optional<Vec3> Options::point3(const char* key) { return read_optional<Vec3>(*this, L, key, read_point3); }
+std::vector<Vec2> Options::points2(const char* key) {
+  return read_optional<std::vector<Vec2>>(*this, L, key, read_point_list<Vec2>).value_or(std::vector<Vec2>{});
+}
+std::vector<Vec3> Options::points3(const char* key) {
+  return read_optional<std::vector<Vec3>>(*this, L, key, read_point_list<Vec3>).value_or(std::vector<Vec3>{});
+}
+Polyline Options::curve(const char* key) {
+  return read_optional<Polyline>(*this, L, key, to_polyline).value_or(Polyline{});
+}
+Held<Mesh> Options::mesh(const char* key) {
+  if (push(key) == LUA_TNIL) {
+    lua_pop(L, 1);
+    return nullptr;
+  }
+  Held<Mesh> m = test_geometry<Mesh>(L, -1);
+  if (!m) throw Error(option(key) + " must be a mesh (from mesh{} or load()), got " + describe(L, -1));
+  lua_pop(L, 1);
+  return m;
+}
+
 void Options::finish() {
   const std::vector<std::string> unknown = unread();
-  if (unknown.empty()) return;
+  if (unknown.empty()) {
+    if (!missing_.empty()) throw Error(missing_.front());
+    return;
+  }
   const std::vector<std::string> known(read_.begin(), read_.end());
   const std::string near = suggestion(unknown.front(), known);
   throw Error("unknown option '" + shown_text(unknown.front()) + "'" +

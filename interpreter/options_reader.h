@@ -5,9 +5,14 @@
 #pragma once
 
 #include <lua.hpp>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
+
+#include "interpreter/lua_support.h"
+#include "kernels/geom/mesh.h"
+#include "kernels/geom/polyline.h"
 
 namespace selfsim::interp {
 
@@ -21,17 +26,36 @@ class Options {
   long long integer(const char* key, long long fallback, long long lo, long long hi);
   bool boolean(const char* key, bool fallback);
   std::string string(const char* key, const std::string& fallback);
+  // Marks key as required: when it is absent, finish() says so (after naming any unknown key, which is
+  // often the same option misspelt), with `hint` on what to pass. Returns whether it is present; readers
+  // of an absent key return their fallback, so a binding reads on and calls finish() before using them.
+  bool require(const char* key, const std::string& hint);
+  // The index of the value in `names`, or fallback; an invalid value lists the valid ones.
+  int enumeration(const char* key, const std::vector<std::string>& names, int fallback);
+  // A list of finite numbers (empty when absent).
+  std::vector<double> numbers(const char* key);
+  // {x, y} / {x, y, z} points, and lists of them (empty when absent; counted against the point budget).
+  std::optional<Vec2> point2(const char* key);
+  std::optional<Vec3> point3(const char* key);
+  std::vector<Vec2> points2(const char* key);
+  std::vector<Vec3> points3(const char* key);
+  // A Curve value, or a table of {x, y} points as one open path (empty when absent).
+  Polyline curve(const char* key);
+  // A Mesh value (null when absent).
+  Held<Mesh> mesh(const char* key);
   // Pushes the value at key (marking it read) and returns its Lua type; the caller pops it.
   int push(const char* key);
   // The keys no reader asked for, in sorted order.
   std::vector<std::string> unread();
-  // Throws Error naming the first (in sorted order) key that no reader asked for, and the valid ones.
+  // Throws Error naming the first (in sorted order) key that no reader asked for, with the likeliest one
+  // meant; then the first required key that is missing.
   void finish();
 
  private:
   lua_State* L;
   int index_;
   std::set<std::string> read_;
+  std::vector<std::string> missing_;  // "option 'level' is required (...)", in the order required
 };
 
 // The string at index, checked to hold no NUL byte (which C++ would cut it at); `what` names it in errors.

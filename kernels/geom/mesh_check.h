@@ -15,7 +15,7 @@ struct MeshTopology {
   std::size_t edges = 0;                 // distinct undirected edges
   std::size_t faces = 0;                 // triangles
   std::size_t boundary_edges = 0;        // edges of exactly one face
-  std::size_t boundary_loops = 0;        // connected chains of boundary edges
+  std::size_t boundary_loops = 0;        // chains of boundary edges (two touching at a bowtie count as one)
   std::size_t components = 0;            // face-connected pieces
   std::size_t nonmanifold_edges = 0;     // edges of three or more faces
   std::size_t misoriented_edges = 0;     // edges two faces traverse in the same direction

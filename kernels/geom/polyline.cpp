@@ -46,6 +46,16 @@ bool PolylineT<V>::finite() const {
 }
 
 template <class V>
+bool PolylineT<V>::paths_consistent() const {
+  std::size_t begin = 0;
+  for (std::size_t end : path_ends) {
+    if (end <= begin) return false;
+    begin = end;
+  }
+  return begin == points.size();
+}
+
+template <class V>
 void PolylineT<V>::close_path() {
   const std::size_t begin = path_ends.empty() ? 0 : path_ends.back();
   if (points.size() > begin) path_ends.push_back(points.size());

@@ -38,6 +38,8 @@ struct PolylineT {
   BBox<V> bbox() const { return bbox_of<V>(points); }
   // True if every coordinate is finite.
   bool finite() const;
+  // True when the paths are well formed: ends increasing, each path non-empty, the last at points.size().
+  bool paths_consistent() const;
   // Ends the current path at the current end of `points` (no-op for an empty path).
   void close_path();
   // Bytes of C++ memory the value holds (points, paths and fields).

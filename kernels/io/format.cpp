@@ -1,6 +1,7 @@
 #include "kernels/io/format.h"
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 #include "kernels/geom/error.h"
@@ -50,7 +51,9 @@ const Format* find_format(std::string_view extension) {
 
 const Format& format_for(const std::string& name, ValueKind k) {
   const std::filesystem::path p(name);
-  const std::string file = p.filename().string(), ext = p.extension().string();
+  const std::string file = p.filename().string();
+  std::string ext = p.extension().string();
+  for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));  // x.VTP too
   std::vector<std::string> able;
   for (const Format& f : formats())
     if (f.holds(k)) able.push_back(f.extension);

@@ -1,6 +1,8 @@
 // .stl (binary), .obj and .ply (binary) meshes, written by OpenMesh's own writers so that what slicers and
 // Blender read is what OpenMesh, a reference implementation of these formats, writes. The conversion is in
 // openmesh_mesh.cpp. Fields are not written: these formats have no place for them (.vtp and .vtu do).
+// OpenMesh's writers take points as single-precision floats, so all three hold float32 coordinates: plenty
+// for printing and rendering; .vtp and .vtu keep the doubles.
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <ostream>
 #include <streambuf>
@@ -71,11 +73,11 @@ void write_stl(const ValueRef& v, OutputFile& out, const SaveOptions&, Progress&
 }
 
 void write_obj(const ValueRef& v, OutputFile& out, const SaveOptions&, Progress& progress) {
-  write_with_openmesh(v, out, progress, ".obj", OpenMesh::IO::Options::Default, 17);
+  write_with_openmesh(v, out, progress, ".obj", OpenMesh::IO::Options::Default, 9);  // a float32 in full
 }
 
 void write_ply(const ValueRef& v, OutputFile& out, const SaveOptions&, Progress& progress) {
-  write_with_openmesh(v, out, progress, ".ply", OpenMesh::IO::Options(OpenMesh::IO::Options::Binary), 17);
+  write_with_openmesh(v, out, progress, ".ply", OpenMesh::IO::Options(OpenMesh::IO::Options::Binary), 9);
 }
 
 }  // namespace selfsim::io

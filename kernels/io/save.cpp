@@ -22,6 +22,7 @@ bool colour_like(const std::string& c) {
 template <class V>
 void check_curve(const PolylineT<V>& c, const std::string& file) {
   if (c.points.empty()) throw Error("cannot save an empty curve to '" + file + "'");
+  if (!c.paths_consistent()) throw Error("cannot save '" + file + "': the curve's paths do not cover its points");
   if (!c.finite()) throw Error("cannot save '" + file + "': the curve has non-finite coordinates");
   // Finite points can still overflow what a file derives from them: the extent (SVG viewBox, with its
   // margin) and the arclength field. Scale such a curve down before saving it.

@@ -58,6 +58,23 @@ for r in pcall_loop xpcall_loop wrap_loop gc_loop close_loop c_call big; do
   check "$r: --timeout leaves no partial file ($(ls -A "out_t$r" 2>/dev/null | tr '\n' ' '))" whole_files "out_t$r"
 done
 
+# --- An interrupted parallel expansion (several threads drawing) stops and leaves no file -----------------
+# Repeated dragons keep the threads drawing whenever the signal comes; the file is written only at the end.
+recipe parallel "$marker"'; local g = require("selfsim.curves").dragon(); local c; for i = 1, 200 do c = g:curve(23) end; save(c, "late.vtp")'
+for threads in 2 7; do
+  "$selfsim" run parallel.lua -o "out_par$threads" -q --threads $threads 2>"err_par$threads" &
+  pid=$!
+  for _ in $(seq 200); do [ -e "out_par$threads/started.svg" ] && break; sleep 0.05; done
+  sleep 0.3
+  kill -INT $pid
+  wait $pid
+  code=$?
+  check "parallel expansion, $threads threads: SIGINT exits 130 (got $code)" [ "$code" = 130 ]
+  check "parallel expansion, $threads threads: no file but the marker ($(ls -A "out_par$threads" | tr '\n' ' '))" \
+    [ "$(ls -A "out_par$threads")" = started.svg ]
+  check "parallel expansion, $threads threads: says interrupted" grep -q "interrupted" "err_par$threads"
+done
+
 # --- SIGKILL mid-write leaves no partial file, and no temporary ------------------------------------------
 recipe write_big 'local c = require("selfsim.curves").dragon():curve(20); for i = 1, 40 do save(c, "big" .. i .. ".vtp") end'
 "$selfsim" run write_big.lua -o out_kill -q 2>/dev/null &
