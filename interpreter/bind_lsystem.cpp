@@ -1,5 +1,7 @@
 // lsystem{ axiom, rules, angle, angles, start_angle, shrink, draw, move } -> grammar with methods
 // g:curve{ level, normalize }, g:string(level), g:count(level). A thin adapter over kernels/lsystem.
+#include <cmath>
+
 #include "interpreter/bindings.h"
 #include "interpreter/curve_value.h"
 #include "interpreter/lua_support.h"
@@ -82,11 +84,11 @@ Held<Grammar> self(lua_State* L, const char* method) { return check_self<Grammar
 // The level argument of g:string(n) / g:count(n).
 // A whole float (3.0, a level computed as n / 2) is accepted as the integer it is.
 int level_argument(lua_State* L, int index) {
-  lua_Integer n = 0;
-  if (!lua_isinteger(L, index) &&
-      !(lua_type(L, index) == LUA_TNUMBER && lua_numbertointeger(lua_tonumber(L, index), &n)))
+  const bool number = lua_type(L, index) == LUA_TNUMBER;
+  const double v = number ? lua_tonumber(L, index) : 0;
+  if (!lua_isinteger(L, index) && !(number && std::floor(v) == v && std::abs(v) < 1e18))
     throw Error("level must be an integer, got " + describe(L, index));
-  if (lua_isinteger(L, index)) n = lua_tointeger(L, index);
+  const lua_Integer n = lua_isinteger(L, index) ? lua_tointeger(L, index) : static_cast<lua_Integer>(v);
   return static_cast<int>(check_range(n, 0, lsystem::max_level, "level"));
 }
 

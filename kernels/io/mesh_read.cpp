@@ -32,6 +32,22 @@ bool binary_stl(const RegularFile& f) {
   return f.size() == 84 + 50 * std::uint64_t{n};
 }
 
+// A PLY header's element counts checked against the file: every element takes at least a byte, so a
+// 100-byte file cannot declare a billion vertices and send OpenMesh's reader into allocating for them.
+void check_ply_counts(const RegularFile& f) {
+  char head[4096] = {};
+  const std::size_t n = f.read_at(0, head, sizeof head - 1);
+  std::istringstream lines(std::string(head, n));
+  for (std::string line; std::getline(lines, line) && line.rfind("end_header", 0) != 0;) {
+    std::istringstream words(line);
+    std::string keyword, element;
+    double count = 0;
+    if (words >> keyword >> element >> count && keyword == "element" && count > static_cast<double>(f.size()))
+      throw Error("the header declares " + std::to_string(static_cast<unsigned long long>(count)) + " " +
+                  shown(element) + " elements, more than the file's " + std::to_string(f.size()) + " bytes could hold");
+  }
+}
+
 void send_mesh(PipeOut& out, const OMesh& om) {
   put_count(out, static_cast<std::uint64_t>(CellShapes::polygons));
   put_count(out, om.n_vertices());
@@ -76,6 +92,7 @@ int read_in_child(PipeOut& out, const std::string& name, const std::string& ext,
 Dataset read_checked(const std::filesystem::path& file, const std::string& ext) {
   const RegularFile f(file);
   const bool binary = ext == ".stl" && binary_stl(f);
+  if (ext == ".ply") check_ply_counts(f);
   std::string name = "/proc/self/fd/" + std::to_string(f.fd());  // the file checked, not what the name is now
   if (::access(name.c_str(), R_OK) != 0) name = file.string();
   ChildLimits limits;

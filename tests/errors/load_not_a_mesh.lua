@@ -1,0 +1,1 @@
+load("load_not_a_mesh.ply")

@@ -1,0 +1,1 @@
+load("../golden/whatever.stl")

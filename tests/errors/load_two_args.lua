@@ -1,0 +1,1 @@
+load("a.stl", "b.stl")

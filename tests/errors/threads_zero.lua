@@ -1,0 +1,3 @@
+-- args: --threads 0
+-- exit: 2
+print(1)
