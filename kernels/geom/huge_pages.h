@@ -10,8 +10,8 @@
 
 namespace selfsim {
 
-template <class T>
-void advise_huge_pages(std::vector<T>& v) {
+template <class T, class Allocator>
+void advise_huge_pages(std::vector<T, Allocator>& v) {
   constexpr std::uintptr_t huge = std::uintptr_t{1} << 21;
   const auto begin = reinterpret_cast<std::uintptr_t>(v.data());
   const std::uintptr_t end = begin + v.capacity() * sizeof(T);

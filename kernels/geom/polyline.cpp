@@ -11,9 +11,9 @@ inline bool finite_bits(Vec3 p) { return (p.x - p.x == 0) & (p.y - p.y == 0) & (
 }  // namespace
 
 template <class V>
-PolylineT<V> PolylineT<V>::single(std::vector<V> pts) {
+PolylineT<V> PolylineT<V>::single(const std::vector<V>& pts) {
   PolylineT c;
-  c.points = std::move(pts);
+  c.points.assign(pts.begin(), pts.end());
   c.close_path();
   return c;
 }

@@ -10,6 +10,7 @@
 
 #include "kernels/geom/bbox.h"
 #include "kernels/geom/field.h"
+#include "kernels/geom/point_array.h"
 #include "kernels/geom/similarity.h"
 #include "kernels/geom/vec2.h"
 #include "kernels/geom/vec3.h"
@@ -20,13 +21,13 @@ template <class V>
 struct PolylineT {
   using Point = V;
 
-  std::vector<V> points;               // all paths' points, path after path
+  PointArray<V> points;                // all paths' points, path after path
   std::vector<std::size_t> path_ends;  // path i is points[path_ends[i-1] (or 0) .. path_ends[i])
   Fields point_fields;                 // one tuple per point (or uniform)
   Fields cell_fields;                  // one tuple per path (or uniform)
 
   // A polyline of a single path through `pts`.
-  static PolylineT single(std::vector<V> pts);
+  static PolylineT single(const std::vector<V>& pts);
 
   std::size_t paths() const { return path_ends.size(); }
   std::size_t path_begin(std::size_t i) const { return i == 0 ? 0 : path_ends[i - 1]; }

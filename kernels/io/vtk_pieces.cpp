@@ -12,8 +12,8 @@ constexpr std::uint8_t vtk_poly_line = 4, vtk_triangle = 5;
 double z_of(Vec2) { return 0; }
 double z_of(Vec3 p) { return p.z; }
 
-template <class V>
-VtkArray coordinates(const std::vector<V>& points) {
+template <class Points>
+VtkArray coordinates(const Points& points) {
   return {"Points", "Float64", 3, points.size(), [&points](std::size_t begin, std::size_t end, void* out) {
             double* o = static_cast<double*>(out);
             for (std::size_t i = begin; i < end; ++i) {

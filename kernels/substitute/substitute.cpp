@@ -31,7 +31,7 @@ bool reverses(SegmentTransform t) { return t == SegmentTransform::ReflectBisecto
 struct Substitution {
   std::vector<Similarity2> child;    // generator segment i as a map of the unit segment, transform included
   std::vector<bool> child_reversed;  // true where that copy is walked backwards
-  std::vector<Vec2>& out;
+  PointArray<Vec2>& out;
   Progress& progress;
   double total;
 

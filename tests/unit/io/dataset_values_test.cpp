@@ -49,7 +49,7 @@ TEST(DatasetValue, FlatLinesAreAPolyline) {
   const auto v = io::dataset_value(lines());
   ASSERT_TRUE(std::holds_alternative<Polyline>(v));
   const Polyline& c = std::get<Polyline>(v);
-  EXPECT_EQ(c.points, (std::vector<Vec2>{{0, 0}, {1, 0}, {1, 1}, {2, 2}, {3, 2}}));
+  EXPECT_EQ(c.points, (PointArray<Vec2>{{0, 0}, {1, 0}, {1, 1}, {2, 2}, {3, 2}}));
   EXPECT_EQ(c.path_ends, (std::vector<std::size_t>{3, 5}));
   const Field* w = c.point_fields.find("w");
   ASSERT_NE(w, nullptr);
@@ -88,7 +88,7 @@ TEST(DatasetValue, ClosedLoopRepeatsItsFirstPointAndItsValues) {
   d.cell_points = {0, 1, 2, 0};
   d.point_fields["color"] = {2, {0, 1, 10, 11, 20, 21}};
   const Polyline c = std::get<Polyline>(io::dataset_value(d));
-  EXPECT_EQ(c.points, (std::vector<Vec2>{{0, 0}, {1, 0}, {1, 1}, {0, 0}}));
+  EXPECT_EQ(c.points, (PointArray<Vec2>{{0, 0}, {1, 0}, {1, 1}, {0, 0}}));
   const Field* color = c.point_fields.find("color");
   ASSERT_NE(color, nullptr);
   EXPECT_EQ(color->components, 2);

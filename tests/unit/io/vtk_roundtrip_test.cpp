@@ -97,12 +97,13 @@ void expect_field(const std::map<std::string, io::FieldValues>& fields, const st
     EXPECT_NEAR(it->second.values[i], values[i], 1e-15) << name << "[" << i << "]";
 }
 
-std::vector<std::array<double, 3>> points3(const std::vector<Vec2>& p) {
+std::vector<std::array<double, 3>> points3(const PointArray<Vec2>& p) {
   std::vector<std::array<double, 3>> out;
   for (const Vec2& v : p) out.push_back({v.x, v.y, 0});
   return out;
 }
-std::vector<std::array<double, 3>> points3(const std::vector<Vec3>& p) {
+template <class Allocator>
+std::vector<std::array<double, 3>> points3(const std::vector<Vec3, Allocator>& p) {
   std::vector<std::array<double, 3>> out;
   for (const Vec3& v : p) out.push_back({v.x, v.y, v.z});
   return out;
