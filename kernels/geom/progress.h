@@ -1,5 +1,7 @@
 // How long kernels report what fraction is done and learn that they should stop, in the spirit of
 // OpenVDB's interrupters. Kernels call step() once per outer chunk of work, never per point.
+// Threads: cancelled() may be called from any thread (implementations make it safe); start() and
+// fraction() only from the thread that called the kernel, which alone reports.
 #pragma once
 
 #include "kernels/geom/error.h"
@@ -21,6 +23,20 @@ class Progress {
     fraction(done);
     if (cancelled()) throw Cancelled();
   }
+};
+
+// One stage of a kernel with several: reports its own progress [0, 1] as [begin, end] of the parent's,
+// under the parent's task name; cancellation is the parent's.
+class ProgressStage : public Progress {
+ public:
+  ProgressStage(Progress& parent, double begin, double end) : parent_(parent), begin_(begin), end_(end) {}
+  void start(const char*) override {}
+  void fraction(double done) override { parent_.fraction(begin_ + done * (end_ - begin_)); }
+  bool cancelled() override { return parent_.cancelled(); }
+
+ private:
+  Progress& parent_;
+  double begin_, end_;
 };
 
 // For callers that want neither reports nor cancellation (tests, benches).

@@ -100,7 +100,8 @@ Polyline turtle2d(const Grammar& g, const TurtleOptions& opt, Progress& progress
 void turtle2d_into(const Grammar& g, const TurtleOptions& opt, Progress& progress, Polyline& out) {
   g.validate();
   opt.validate();
-  const LevelCounts counts = predict_counts(g, opt.level, progress);
+  ProgressStage predicting(progress, 0, 0.01);
+  const LevelCounts counts = predict_counts(g, opt.level, predicting);
   const std::string what = "level " + std::to_string(opt.level);
   check_budget(counts.max_points(), opt.budget, what);  // every path break adds a point
   // Each branch left open keeps a saved turtle state (32 bytes, two points' worth) until it closes.
