@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "interpreter/run_context.h"
+#include "kernels/geom/check.h"
 
 namespace selfsim::interp {
 
@@ -28,11 +29,7 @@ std::string describe(lua_State* L, int index) {
   switch (lua_type(L, index)) {
     case LUA_TNUMBER: {
       if (lua_isinteger(L, index)) return std::to_string(lua_tointeger(L, index));
-      const double v = lua_tonumber(L, index);
-      if (std::isnan(v)) return "NaN";  // not "-nan", whatever the sign bit of 0/0
-      char buf[64];
-      std::snprintf(buf, sizeof buf, "%.14g", v);
-      return buf;
+      return number_text(lua_tonumber(L, index));
     }
     case LUA_TSTRING: {
       std::size_t n = 0;

@@ -7,6 +7,7 @@
 #include "interpreter/lua_support.h"
 #include "interpreter/point_reader.h"
 #include "interpreter/value_types.h"
+#include "kernels/geom/check.h"
 #include "kernels/geom/error.h"
 
 namespace selfsim::interp {
@@ -56,9 +57,7 @@ std::string text_value(lua_State* L, int index, const std::string& what) {
 
 double finite_number(lua_State* L, int index, const std::string& what) {
   if (lua_type(L, index) != LUA_TNUMBER) throw Error(what + " must be a number, got " + describe(L, index));
-  const double v = lua_tonumber(L, index);
-  if (!std::isfinite(v)) throw Error(what + " must be a finite number, got " + describe(L, index));
-  return v;
+  return check_finite(lua_tonumber(L, index), what);
 }
 
 Options::Options(lua_State* state, int index) : L(state), index_(lua_absindex(state, index)) {

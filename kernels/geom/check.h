@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "kernels/geom/error.h"
@@ -22,9 +23,17 @@ inline long long check_range(long long v, long long lo, long long hi, const std:
   return v;
 }
 
-// Throws Error "<what> must be a finite number" unless v is finite.
+// A number as messages show it: NaN (never "-nan"), inf, or up to 14 significant digits.
+inline std::string number_text(double v) {
+  if (std::isnan(v)) return "NaN";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.14g", v);
+  return buf;
+}
+
+// Throws Error "<what> must be a finite number, got NaN" unless v is finite.
 inline double check_finite(double v, const std::string& what) {
-  if (!std::isfinite(v)) throw Error(what + " must be a finite number");
+  if (!std::isfinite(v)) throw Error(what + " must be a finite number, got " + number_text(v));
   return v;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "kernels/geom/check.h"
 #include "kernels/geom/error.h"
 
 namespace selfsim::lsystem {
@@ -23,16 +24,6 @@ void require_balanced(const std::string& s, const std::string& what) {
   }
 }
 
-std::string number_text(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.14g", v);
-  return buf;
-}
-
-void require_finite(double v, const std::string& what) {
-  if (!std::isfinite(v)) throw Error("option '" + what + "' must be a finite number, got " + number_text(v));
-}
-
 }  // namespace
 
 void Grammar::validate() const {
@@ -43,11 +34,11 @@ void Grammar::validate() const {
       throw Error("option 'rules': the branch symbol '" + shown(symbol) + "' cannot have a rule");
     require_balanced(replacement, "option 'rules': the rule for '" + shown(symbol) + "'");
   }
-  require_finite(angle, "angle");
-  for (const auto& [symbol, degrees] : angles) require_finite(degrees, "angles['" + shown(symbol) + "']");
+  check_finite(angle, "option 'angle'");
+  for (const auto& [symbol, degrees] : angles) check_finite(degrees, "option 'angles['" + shown(symbol) + "']'");
   if (start_angles.empty()) throw Error("option 'start_angle' must be a number or a non-empty list of numbers");
-  for (double a : start_angles) require_finite(a, "start_angle");
-  require_finite(shrink, "shrink");
+  for (double a : start_angles) check_finite(a, "option 'start_angle'");
+  check_finite(shrink, "option 'shrink'");
   if (!(shrink > 0)) throw Error("option 'shrink' must be a positive number, got " + number_text(shrink));
   for (char c : draw)
     if (moves(c)) throw Error("option 'draw': symbol '" + shown(c) + "' is also in 'move'");
