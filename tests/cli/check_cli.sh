@@ -50,5 +50,21 @@ contains "$tmp/out" "point count differs" "diff message"
 expect 2 "diff missing file" -- "$selfsim" diff "$tmp/a/plant.vtp" "$tmp/none.vtp"
 expect 2 "diff bad tolerance" -- "$selfsim" diff "$tmp/a/plant.vtp" "$tmp/b/plant.vtp" --tol x
 
+# Meshes: info tells a closed surface from an open one, diff names the first differing cell.
+cat >"$tmp/tet.lua" <<'LUA'
+local m = mesh { points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } },
+                 triangles = { { 1, 3, 2 }, { 1, 2, 4 }, { 2, 3, 4 }, { 3, 1, 4 } } }
+save(m, "tet.stl"); save(m, "tet.vtp")
+save(mesh { points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } },
+            triangles = { { 1, 3, 2 }, { 1, 2, 4 }, { 2, 3, 4 } } }, "open.vtu")
+LUA
+expect 0 "run mesh recipe" -- "$selfsim" run "$tmp/tet.lua" -o "$tmp/m" -q
+expect 0 "info stl" -- "$selfsim" info "$tmp/m/tet.stl"
+contains "$tmp/out" "surface: closed manifold, 1 component, 0 boundary loops, Euler characteristic 2" "info closed"
+expect 0 "info vtu" -- "$selfsim" info "$tmp/m/open.vtu"
+contains "$tmp/out" "surface: manifold with boundary, 1 component, 1 boundary loop, Euler characteristic 1" "info open"
+expect 1 "diff meshes" -- "$selfsim" diff "$tmp/m/tet.vtp" "$tmp/m/open.vtu"
+contains "$tmp/out" "cell count differs: 4 vs 3" "diff meshes message"
+
 echo "$failures failures"
 [ "$failures" = 0 ]

@@ -115,6 +115,27 @@ check "require through a link out of the folder is refused (exit $code)" [ "$cod
 check "and says so ($(first_err))" grep -q "leads outside its folder" "$tmp/err"
 check "and prints nothing of the file" bash -c "! grep -q outside '$tmp/out'"
 
+# --- load() reads only inside the recipe's folder, and never waits on a FIFO -------------------------------
+mkdir -p ld
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >outside/secret.obj
+ln -s "$tmp/outside/secret.obj" ld/linked.obj
+mkdir -p ld/sub && ln -s "$tmp/outside" ld/sub/out
+recipe ld/via_file_link 'load("linked.obj")'
+recipe ld/via_dir_link 'load("sub/out/secret.obj")'
+for r in via_file_link via_dir_link; do
+  run_selfsim run ld/$r.lua -o out_ld -q
+  check "load $r is refused (exit $code)" [ "$code" = 1 ]
+  check "load $r says why ($(first_err))" grep -q "leads outside the recipe's folder through a symbolic link" "$tmp/err"
+done
+mkfifo ld/pipe.stl
+recipe ld/fifo 'load("pipe.stl")'
+started=$(date +%s%N)
+run_selfsim run ld/fifo.lua -o out_ld -q --timeout 10
+ms=$(( ($(date +%s%N) - started) / 1000000 ))
+check "load of a FIFO is an error (exit $code, $(first_err))" [ "$code" = 1 ]
+check "load of a FIFO does not wait for a writer (took $ms ms)" [ "$ms" -lt 5000 ]
+check "load of a FIFO says it is not a regular file" grep -q "not a regular file" "$tmp/err"
+
 # --- Nothing is written after the recipe ends -------------------------------------------------------------
 recipe late_ok 'setmetatable({}, { __gc = function() save(polyline { { 0, 0 }, { 1, 0 } }, "late.svg") end })'
 run_selfsim run late_ok.lua -o out_late -q
