@@ -64,9 +64,7 @@ int curve_transform(lua_State* L) {
     const bool mirror = o.boolean("mirror", false);
     const double scale = o.number("scale", 1);
     const double degrees = o.number("rotate", 0);
-    Vec2 shift{};
-    if (o.push("translate") != LUA_TNIL) shift = read_point2(L, -1, "option 'translate'");
-    lua_pop(L, 1);
+    const Vec2 shift = o.point2("translate").value_or(Vec2{});
     o.finish();
     if (!(scale != 0)) throw Error("option 'scale' must be non-zero");
     const Similarity2 t{scale * polar(std::fmod(degrees, 360.0) * std::numbers::pi / 180), shift, mirror};

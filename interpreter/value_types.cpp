@@ -5,23 +5,21 @@
 
 namespace selfsim::interp {
 
-void push_point(lua_State* L, Vec2 p) {
-  lua_createtable(L, 2, 0);
-  lua_pushnumber(L, p.x);
-  lua_rawseti(L, -2, 1);
-  lua_pushnumber(L, p.y);
-  lua_rawseti(L, -2, 2);
+namespace {
+
+void push_coordinates(lua_State* L, std::initializer_list<double> xs) {
+  lua_createtable(L, static_cast<int>(xs.size()), 0);
+  lua_Integer i = 0;
+  for (double x : xs) {
+    lua_pushnumber(L, x);
+    lua_rawseti(L, -2, ++i);
+  }
 }
 
-void push_point(lua_State* L, Vec3 p) {
-  lua_createtable(L, 3, 0);
-  lua_pushnumber(L, p.x);
-  lua_rawseti(L, -2, 1);
-  lua_pushnumber(L, p.y);
-  lua_rawseti(L, -2, 2);
-  lua_pushnumber(L, p.z);
-  lua_rawseti(L, -2, 3);
-}
+}  // namespace
+
+void push_point(lua_State* L, Vec2 p) { push_coordinates(L, {p.x, p.y}); }
+void push_point(lua_State* L, Vec3 p) { push_coordinates(L, {p.x, p.y, p.z}); }
 
 namespace {
 

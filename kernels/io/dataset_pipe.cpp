@@ -38,6 +38,23 @@ void get_fields(PipeIn& in, std::map<std::string, FieldValues>& fields, std::uin
 
 }  // namespace
 
+void send_failure(PipeOut& out, const std::string& reason) {
+  out.write("E", 1);
+  put_name(out, reason.substr(0, 4096));
+}
+
+Dataset receive_answer(PipeIn& in, const std::string& reader, std::uint64_t max_values) {
+  char kind = 0;
+  in.read(&kind, 1);
+  if (kind == 'E') {
+    std::string reason(static_cast<std::size_t>(get_count(in, 4096)), '\0');
+    in.read(reason.data(), reason.size());
+    throw Error(reason);
+  }
+  if (kind != 'D') throw Error(reader + " sent a malformed answer");
+  return receive_dataset(in, max_values);
+}
+
 Dataset receive_dataset(PipeIn& in, std::uint64_t max_values) {
   Dataset d;
   d.shapes = static_cast<CellShapes>(get_count(in, 2));

@@ -27,4 +27,11 @@ inline void put_name(PipeOut& out, const std::string& name) {
 // Refuses counts over max_values (the reader's memory budget in values) before allocating for them.
 Dataset receive_dataset(PipeIn& in, std::uint64_t max_values);
 
+// A reader child's whole answer: 'D' and the Dataset (send_success, then the dataset), or 'E' and a
+// one-line reason (send_failure).
+inline void send_success(PipeOut& out) { out.write("D", 1); }
+void send_failure(PipeOut& out, const std::string& reason);
+// The Dataset the child sent, or an Error with its reason; `reader` names the child for a malformed answer.
+Dataset receive_answer(PipeIn& in, const std::string& reader, std::uint64_t max_values);
+
 }  // namespace selfsim::io

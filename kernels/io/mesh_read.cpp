@@ -4,7 +4,6 @@
 // Dataset is checked. OpenMesh merges an STL's repeated corners into shared points and splits polygons
 // into triangles. A face OpenMesh cannot hold (an edge of three faces, a bowtie) is an error naming
 // OpenMesh's complaint, never a silently smaller mesh.
-#include <unistd.h>
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <algorithm>
@@ -79,12 +78,11 @@ int read_in_child(PipeOut& out, const std::string& name, const std::string& ext,
     error = "OpenMesh could not read it";
   else if (om.n_faces() == 0)
     error = "it holds no triangles";
-  const char kind = error.empty() ? 'D' : 'E';
-  out.write(&kind, 1);
   if (!error.empty()) {
-    put_name(out, error);
+    send_failure(out, error);
     return 0;
   }
+  send_success(out);
   send_mesh(out, om);
   return 0;
 }
@@ -93,8 +91,7 @@ Dataset read_checked(const std::filesystem::path& file, const std::string& ext) 
   const RegularFile f(file);
   const bool binary = ext == ".stl" && binary_stl(f);
   if (ext == ".ply") check_ply_counts(f);
-  std::string name = "/proc/self/fd/" + std::to_string(f.fd());  // the file checked, not what the name is now
-  if (::access(name.c_str(), R_OK) != 0) name = file.string();
+  const std::string name = f.reopen_name(file);
   ChildLimits limits;
   limits.what = "the OpenMesh reader";
   // OpenMesh's half-edge mesh takes a few hundred bytes a triangle; an ASCII file some 30 bytes a triangle.
@@ -103,20 +100,7 @@ Dataset read_checked(const std::filesystem::path& file, const std::string& ext) 
   Dataset d;
   run_in_child(
       limits, [&](PipeOut& out) { return read_in_child(out, name, ext, binary); },
-      [&](PipeIn& in) {
-        char kind = 0;
-        in.read(&kind, 1);
-        if (kind == 'E') {
-          std::uint64_t n = 0;
-          in.read(&n, sizeof n);
-          if (n > 4096) throw Error("the OpenMesh reader sent a malformed answer");
-          std::string reason(static_cast<std::size_t>(n), '\0');
-          in.read(reason.data(), reason.size());
-          throw Error(reason);
-        }
-        if (kind != 'D') throw Error("the OpenMesh reader sent a malformed answer");
-        d = receive_dataset(in, read_budget_bytes() / 8);
-      });
+      [&](PipeIn& in) { d = receive_answer(in, limits.what, read_budget_bytes() / 8); });
   check_dataset(d);
   return d;
 }

@@ -13,6 +13,11 @@
 
 namespace selfsim::io {
 
+std::string RegularFile::reopen_name(const std::filesystem::path& file) const {
+  const std::string name = "/proc/self/fd/" + std::to_string(fd_);
+  return ::access(name.c_str(), R_OK) == 0 ? name : file.string();
+}
+
 std::string error_text(int code) {
   std::string s = std::strerror(code);
   if (!s.empty() && std::isupper(static_cast<unsigned char>(s[0])) &&

@@ -21,6 +21,9 @@ class RegularFile {
   RegularFile& operator=(const RegularFile&) = delete;
 
   int fd() const { return fd_; }
+  // A name that opens the file checked, not whatever `file` names by then: /proc/self/fd/N (which a
+  // forked child inherits), or `file` itself where /proc is not mounted.
+  std::string reopen_name(const std::filesystem::path& file) const;
   // The size when opened: no read goes past it.
   std::uint64_t size() const { return size_; }
   // Reads min(n, size() - pos) bytes at pos into buffer and returns that count; throws Error when the file

@@ -200,13 +200,12 @@ int read_in_child(PipeOut& out, const std::string& vtk_name, const std::string& 
     error = vtk_reason(window->first_error, vtk_name, shown_name);
   else if (reader->GetErrorCode() != 0 || (poly == nullptr && grid == nullptr))
     error = "VTK could not read it";
-  const char kind = error.empty() ? 'D' : 'E';
-  out.write(&kind, 1);
   if (!error.empty()) {
-    const std::uint64_t n = error.size();
-    out.write(&n, sizeof n);
-    out.write(error.data(), error.size());
-  } else if (poly) {
+    send_failure(out, error);
+    return 0;
+  }
+  send_success(out);
+  if (poly) {
     const bool lines = poly->GetNumberOfLines() > 0, polys = poly->GetNumberOfPolys() > 0,
                other = poly->GetNumberOfVerts() > 0 || poly->GetNumberOfStrips() > 0;
     const CellShapes shapes = other || (lines && polys) ? CellShapes::mixed
@@ -222,9 +221,7 @@ int read_in_child(PipeOut& out, const std::string& vtk_name, const std::string& 
 Dataset read_checked(const std::filesystem::path& file, bool unstructured) {
   const RegularFile f(file);
   const VtkDeclared declared = check_vtk_header(f, unstructured ? "UnstructuredGrid" : "PolyData");
-  // VTK opens the file we checked, through our descriptor, not whatever the name points to by then.
-  std::string vtk_name = "/proc/self/fd/" + std::to_string(f.fd());
-  if (::access(vtk_name.c_str(), R_OK) != 0) vtk_name = file.string();
+  const std::string vtk_name = f.reopen_name(file);
   ChildLimits limits;
   limits.what = "the VTK reader";
   limits.memory_bytes =
@@ -233,20 +230,7 @@ Dataset read_checked(const std::filesystem::path& file, bool unstructured) {
   Dataset d;
   run_in_child(
       limits, [&](PipeOut& out) { return read_in_child(out, vtk_name, one_line(file.string()), unstructured); },
-      [&](PipeIn& in) {
-        char kind = 0;
-        in.read(&kind, 1);
-        if (kind == 'E') {
-          std::uint64_t n = 0;
-          in.read(&n, sizeof n);
-          if (n > 4096) throw Error("the VTK reader sent a malformed answer");
-          std::string reason(static_cast<std::size_t>(n), '\0');
-          in.read(reason.data(), reason.size());
-          throw Error(reason);
-        }
-        if (kind != 'D') throw Error("the VTK reader sent a malformed answer");
-        d = receive_dataset(in, read_budget_bytes() / 8);
-      });
+      [&](PipeIn& in) { d = receive_answer(in, limits.what, read_budget_bytes() / 8); });
   check_dataset(d);
   if (d.points.size() != declared.points || d.cell_ends.size() != declared.cells)
     throw Error("VTK read " + std::to_string(d.points.size()) + " points and " + std::to_string(d.cell_ends.size()) +
