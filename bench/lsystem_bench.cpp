@@ -1,6 +1,7 @@
 // L-system expansion speed: selfsim's streaming turtle against a simple build-the-string expansion
 // written here as the baseline, on the same grammar and machine, in the same process.
 #include <benchmark/benchmark.h>
+#include <tbb/global_control.h>
 
 #include <cmath>
 #include <string>
@@ -70,6 +71,13 @@ void streaming_warm(benchmark::State& state, lsystem::Grammar g) {
       benchmark::Counter(static_cast<double>(c.segments()) * state.iterations(), benchmark::Counter::kIsRate);
 }
 
+// Thread scaling of the parallel turtle (turtle_split.h): the warm kernel under --threads N (range 1).
+void threads(benchmark::State& state, lsystem::Grammar g) {
+  const tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                                  static_cast<std::size_t>(state.range(1)));
+  streaming_warm(state, std::move(g));
+}
+
 void baseline(benchmark::State& state, lsystem::Grammar g) {
   const int level = static_cast<int>(state.range(0));
   std::size_t segments = 0;
@@ -86,6 +94,11 @@ void baseline(benchmark::State& state, lsystem::Grammar g) {
 
 BENCHMARK_CAPTURE(streaming, dragon, dragon())->Arg(20)->Arg(26)->Unit(benchmark::kMillisecond)->MinTime(4);
 BENCHMARK_CAPTURE(streaming_warm, dragon, dragon())->Arg(20)->Arg(26)->Unit(benchmark::kMillisecond)->MinTime(2);
+BENCHMARK_CAPTURE(threads, dragon, dragon())
+    ->ArgsProduct({{26}, {1, 2, 4, 8, 16}})
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2)
+    ->UseRealTime();
 BENCHMARK_CAPTURE(baseline, dragon, dragon())->Arg(20)->Arg(26)->Unit(benchmark::kMillisecond)->MinTime(2);
 BENCHMARK_CAPTURE(streaming, koch_snowflake, koch_snowflake())->Arg(11)->Unit(benchmark::kMillisecond)->MinTime(2);
 BENCHMARK_CAPTURE(streaming_warm, koch_snowflake, koch_snowflake())->Arg(11)->Unit(benchmark::kMillisecond)->MinTime(2);

@@ -2,6 +2,7 @@
 // curve drawn elsewhere). Confined like require: a relative name without '..', and no symbolic link
 // leading out of the folder. The file is read as `selfsim info` reads it (sizes checked before reading,
 // the third-party reader in a limited child process), then counted against --max-points.
+#include <cctype>
 #include <filesystem>
 
 #include "interpreter/bindings.h"
@@ -26,7 +27,8 @@ std::filesystem::path confined(const RunContext& run, const std::string& name) {
     throw Error("'" + shown_text(name) + "' must be a file name relative to the recipe's folder");
   for (const auto& part : rel)
     if (part == "..") throw Error("'" + shown_text(name) + "' leads outside the recipe's folder ('..' is not allowed)");
-  const std::string ext = rel.extension().string();
+  std::string ext = rel.extension().string();
+  for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));  // x.STL too
   if (std::find(std::begin(loadable), std::end(loadable), ext) == std::end(loadable))
     throw Error("cannot load '" + shown_text(name) +
                 "': expected one of: " + quoted_list({std::begin(loadable), std::end(loadable)}));
@@ -46,7 +48,7 @@ int load(lua_State* L) {
     std::variant<Polyline, Polyline3, Mesh> value = io::dataset_value(io::read_dataset(confined(run, name)));
     std::visit(
         [&](auto& v) {
-          check_budget(budget_size(v), run_budget(L), "'" + shown_text(name) + "'");
+          check_run_budget(L, budget_size(v), "'" + shown_text(name) + "'");
           push_geometry(L, std::move(v));
         },
         value);

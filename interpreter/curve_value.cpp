@@ -68,7 +68,7 @@ int curve_transform(lua_State* L) {
     o.finish();
     if (!(scale != 0)) throw Error("option 'scale' must be non-zero");
     const Similarity2 t{scale * polar(std::fmod(degrees, 360.0) * std::numbers::pi / 180), shift, mirror};
-    check_budget(static_cast<double>(c.points.size()), run_budget(L), "transform");
+    check_run_budget(L, static_cast<double>(c.points.size()), "transform");
     Polyline result = transformed(c, t);
     if (!result.finite()) throw Error("the result has non-finite coordinates (an overflow: scale the input down)");
     push_curve(L, std::move(result));
@@ -82,7 +82,7 @@ int make_polyline(lua_State* L, const char* fn, bool closed) {
     if (pts.size() < (closed ? 3u : 2u))
       throw Error(std::string("needs at least ") + (closed ? "3" : "2") + " points, got " + std::to_string(pts.size()));
     if (closed && !(pts.front() == pts.back())) pts.push_back(pts.front());
-    check_budget(static_cast<double>(pts.size()), run_budget(L), fn);
+    check_run_budget(L, static_cast<double>(pts.size()), fn);
     push_curve(L, Polyline::single(std::move(pts)));
     return 1;
   });

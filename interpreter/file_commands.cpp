@@ -37,7 +37,14 @@ int report(const char* command) {
 }
 
 // A surface's topology, what a user about to print it wants to know: is it closed and manifold?
-void print_surface(const Mesh& m) {
+void print_surface(const io::Dataset& d) {
+  Mesh m;
+  try {
+    m = io::dataset_mesh(d);
+  } catch (const Error& e) {
+    std::printf("surface: not a valid mesh (%s)\n", shown_text(e.what(), 300).c_str());
+    return;
+  }
   const MeshTopology t = mesh_topology(m);
   std::printf("triangles: %zu\nsurface: %s, %zu component%s, %zu boundary loop%s, Euler characteristic %lld\n", t.faces,
               t.closed()     ? "closed manifold"
@@ -74,7 +81,7 @@ int info_command(const std::string& file) {
     static const char* const shapes[] = {"polylines", "polygons", "mixed"};
     std::printf("file: %s\npoints: %zu\ncells: %zu %s\n", shown_text(file, 4096).c_str(), d.points.size(),
                 d.cell_ends.size(), shapes[static_cast<int>(d.shapes)]);
-    if (d.shapes == io::CellShapes::polygons) print_surface(io::dataset_mesh(d));
+    if (d.shapes == io::CellShapes::polygons) print_surface(d);
     std::printf("bbox: [%.9g, %.9g, %.9g] .. [%.9g, %.9g, %.9g]\n", lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
     for (const auto& [name, f] : d.point_fields)
       std::printf("point field: %s (%d component%s)\n", shown_text(name, 200).c_str(), f.components,

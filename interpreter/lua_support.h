@@ -112,6 +112,15 @@ auto with_budget(lua_State* L, Make&& make) {
   return make(run_budget(L));
 }
 
+// Throws BudgetError unless `predicted` more points fit the run's budget, after collecting garbage the
+// recipe has dropped when that makes the difference.
+inline void check_run_budget(lua_State* L, double predicted, const std::string& what) {
+  with_budget(L, [&](const PointBudget& b) {
+    check_budget(predicted, b, what);
+    return 0;
+  });
+}
+
 // Counts `bytes` of C++ memory against --max-memory (negative to release them); throws Error with the
 // out-of-memory message when they do not fit.
 void hold_memory(lua_State* L, double bytes);

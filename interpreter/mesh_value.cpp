@@ -23,7 +23,7 @@ std::vector<Triangle> read_triangles(lua_State* L, int index, std::size_t points
   if (lua_type(L, index) != LUA_TTABLE)
     throw Error("option 'triangles' must be a table of {i, j, k} point indices, got " + describe(L, index));
   const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, index));
-  check_budget(static_cast<double>(n), run_budget(L), "option 'triangles'");
+  check_run_budget(L, static_cast<double>(n), "option 'triangles'");
   std::vector<Triangle> tris;
   tris.reserve(static_cast<std::size_t>(n));
   for (lua_Integer i = 1; i <= n; ++i) {
@@ -57,7 +57,9 @@ int make_mesh(lua_State* L) {
     o.finish();
     if (m.triangles.empty()) throw Error("option 'triangles' must hold at least one triangle");
     m.validate();
-    check_budget(budget_size(m), run_budget(L), "mesh");
+    check_run_budget(
+        L, budget_size(m),
+        "a mesh of " + std::to_string(m.points.size()) + " points and " + std::to_string(m.faces()) + " triangles");
     push_geometry(L, std::move(m));
     return 1;
   });

@@ -63,7 +63,9 @@ Mesh dataset_mesh(const Dataset& d) {
 }
 
 std::variant<Polyline, Polyline3, Mesh> dataset_value(const Dataset& d) {
-  if (d.shapes == CellShapes::mixed) throw Error("it mixes lines and polygons (or other cells): expected one kind");
+  if (d.shapes == CellShapes::mixed)
+    throw Error("it holds cells other than polylines or polygons (vertices, strips, volumes, or both kinds)");
+  if (d.cell_ends.empty()) throw Error("it holds no cells (no polylines or polygons)");
   if (d.shapes == CellShapes::polygons) return dataset_mesh(d);
   bool flat = true;
   for (const auto& p : d.points) flat &= p[2] == 0;

@@ -4,9 +4,12 @@
 // OpenMesh's writers take points as single-precision floats, so all three hold float32 coordinates: plenty
 // for printing and rendering; .vtp and .vtu keep the doubles.
 #include <OpenMesh/Core/IO/MeshIO.hh>
+#include <cmath>
+#include <limits>
 #include <ostream>
 #include <streambuf>
 
+#include "kernels/geom/check.h"
 #include "kernels/geom/error.h"
 #include "kernels/io/openmesh_mesh.h"
 #include "kernels/io/writers.h"
@@ -49,9 +52,21 @@ class FileBuffer : public std::streambuf {
   std::vector<char> buffer_;
 };
 
+// These formats hold floats: a coordinate beyond float's range would be written as inf, and a non-zero one
+// below its smallest normal value would collapse to 0, folding triangles flat.
+void check_single_precision(const Mesh& m, const char* ext) {
+  for (std::size_t i = 0; i < m.points.size(); ++i)
+    for (double x : {m.points[i].x, m.points[i].y, m.points[i].z})
+      if (std::abs(x) > std::numeric_limits<float>::max() ||
+          (x != 0 && std::abs(x) < std::numeric_limits<float>::min()))
+        throw Error(std::string(ext) + " holds single-precision coordinates, and point " + std::to_string(i + 1) +
+                    " has " + number_text(x) + " (scale the mesh, or save as .vtp or .vtu, which keep doubles)");
+}
+
 void write_with_openmesh(const ValueRef& v, OutputFile& out, Progress& progress, const char* ext,
                          OpenMesh::IO::Options opt, std::streamsize precision) {
   const Mesh& m = *std::get<const Mesh*>(v);  // the registry sends only meshes here
+  check_single_precision(m, ext);
   OMesh om = to_openmesh(m);
   progress.step(0.3);
   if (opt.check(OpenMesh::IO::Options::FaceNormal)) {

@@ -61,7 +61,8 @@ std::optional<TurtleSplit> split_level(const Grammar& g, const Compiled& c, cons
 
   TurtleSplit split;
   split.depth = depth;
-  split.symbols = expand_string(g, depth, max_split_symbols);
+  // An axiom longer than the limit is split as it is (depth 0): it is already in memory.
+  split.symbols = depth == 0 ? g.axiom : expand_string(g, depth, max_split_symbols);
   if (static_cast<double>(split.symbols.size()) < min_split_symbols) return std::nullopt;
 
   // Effects after 0 rewritings, then one more level at a time up to `remaining`.

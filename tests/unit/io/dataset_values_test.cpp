@@ -133,7 +133,16 @@ TEST(DatasetValue, APentagonIsThreeTriangles) {
 TEST(DatasetValue, MixedCellsAreAnError) {
   io::Dataset d = polygons();
   d.shapes = io::CellShapes::mixed;
-  EXPECT_EQ(value_error(d), "it mixes lines and polygons (or other cells): expected one kind");
+  EXPECT_EQ(value_error(d),
+            "it holds cells other than polylines or polygons (vertices, strips, volumes, or both kinds)");
+}
+
+TEST(DatasetValue, NoCellsIsAnError) {
+  io::Dataset d = polygons();
+  d.shapes = io::CellShapes::lines;
+  d.cell_ends.clear();
+  d.cell_points.clear();
+  EXPECT_EQ(value_error(d), "it holds no cells (no polylines or polygons)");
 }
 
 TEST(DatasetValue, PolygonOfTwoPointsIsAnError) {

@@ -118,3 +118,12 @@ TEST(TurtleSplit, CancelledFromWorkerThreads) {
   const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
   EXPECT_THROW(turtle2d(table1::dragon(), {.level = 24}, stop), Cancelled);
 }
+
+TEST(TurtleSplit, AnAxiomLongerThanTheSplitLimitIsSplitAsItIs) {
+  const Grammar g{.axiom = std::string(70000, 'F'), .rules = {{'F', "F+F-F"}}, .angle = 90};
+  const auto split = split_of(g, 1);
+  ASSERT_TRUE(split.has_value());
+  EXPECT_EQ(split->depth, 0);
+  EXPECT_EQ(with_threads(g, 1, 1).points.size(), 210001u);
+  EXPECT_EQ(with_threads(g, 0, 2).points.size(), 70001u);
+}
