@@ -1,18 +1,19 @@
 // load("name.ext"): a mesh or curve from a file in the recipe's own folder (a region, a start surface, a
-// curve drawn elsewhere). Confined like require: a relative name without '..', and no symbolic link
-// leading out of the folder. The file is read as `selfsim info` reads it (sizes checked before reading,
+// curve drawn elsewhere). Confined: a relative name without '..', opened without following any symbolic
+// link. The file is read as `selfsim info` reads it (sizes checked before reading,
 // the third-party reader in a limited child process), then counted against --max-points.
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 
 #include "interpreter/bindings.h"
-#include "interpreter/folder_check.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
 #include "interpreter/run_context.h"
 #include "interpreter/value_types.h"
 #include "kernels/io/dataset_values.h"
 #include "kernels/io/read.h"
+#include "kernels/io/regular_file.h"
 
 namespace selfsim::interp {
 
@@ -20,8 +21,8 @@ namespace {
 
 const char* const loadable[] = {".vtp", ".vtu", ".stl", ".obj", ".ply", ".svg"};
 
-// The file `name` names inside the recipe's folder; throws Error for a name that could leave it.
-std::filesystem::path confined(const RunContext& run, const std::string& name) {
+// Checks `name`: relative, without '..', with a loadable extension.
+void check_name(const std::string& name) {
   const std::filesystem::path rel(name);
   if (name.empty() || rel.is_absolute())
     throw Error("'" + shown_text(name) + "' must be a file name relative to the recipe's folder");
@@ -32,12 +33,6 @@ std::filesystem::path confined(const RunContext& run, const std::string& name) {
   if (std::find(std::begin(loadable), std::end(loadable), ext) == std::end(loadable))
     throw Error("cannot load '" + shown_text(name) +
                 "': expected one of: " + quoted_list({std::begin(loadable), std::end(loadable)}));
-  const std::filesystem::path folder = run.config.recipe.parent_path();
-  const std::filesystem::path file = folder / rel;
-  std::error_code ec;
-  if (std::filesystem::exists(file, ec) && !resolves_inside(folder, file))
-    throw Error("'" + shown_text(name) + "' leads outside the recipe's folder through a symbolic link");
-  return file;
 }
 
 int load(lua_State* L) {
@@ -45,7 +40,11 @@ int load(lua_State* L) {
     RunContext& run = RunContext::of(L);
     const std::string name = text_value(L, 1, "argument 1 (the file name)");
     if (lua_gettop(L) > 1) throw Error("takes one argument, the file name");
-    std::variant<Polyline, Polyline3, Mesh> value = io::dataset_value(io::read_dataset(confined(run, name)));
+    check_name(name);
+    // Opened without following any link, and read through that descriptor: the name cannot be swapped
+    // for a link to somewhere else between the check and the read.
+    const io::FileBeneath file(run.config.recipe.parent_path(), name);
+    std::variant<Polyline, Polyline3, Mesh> value = io::dataset_value(io::read_dataset(file.name(), name));
     std::visit(
         [&](auto& v) {
           check_run_budget(L, budget_size(v), "'" + shown_text(name) + "'");

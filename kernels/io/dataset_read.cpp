@@ -15,9 +15,10 @@ std::uint64_t read_budget_bytes() {
   return static_cast<std::uint64_t>(std::min(memory / 6, 16.0 * (std::uint64_t{1} << 30)));
 }
 
-Dataset read_dataset(const std::filesystem::path& file) {
+namespace {
+
+Dataset read_by_extension(const std::filesystem::path& file, std::string ext) {
   try {
-    std::string ext = file.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     const bool vtk = ext == ".vtp" || ext == ".vtu", mesh = ext == ".stl" || ext == ".obj" || ext == ".ply";
@@ -37,6 +38,24 @@ Dataset read_dataset(const std::filesystem::path& file) {
     throw Error(cannot_read(file, "out of memory"));
   } catch (const std::exception& e) {
     throw Error(cannot_read(file, e.what()));
+  }
+}
+
+}  // namespace
+
+Dataset read_dataset(const std::filesystem::path& file) { return read_dataset(file, file); }
+
+Dataset read_dataset(const std::filesystem::path& file, const std::filesystem::path& shown) {
+  try {
+    return read_by_extension(file, shown.extension().string());
+  } catch (const Error& e) {
+    // Messages name the file as the user knows it, not the /proc name it was opened by.
+    std::string message = e.what();
+    const std::string opened = one_line(file.string()), known = one_line(shown.string());
+    if (opened != known)
+      for (std::size_t at = 0; (at = message.find(opened, at)) != std::string::npos; at += known.size())
+        message.replace(at, opened.size(), known);
+    throw Error(message);
   }
 }
 

@@ -1,26 +1,26 @@
 #include "kernels/io/openmesh_mesh.h"
 
 #include <OpenMesh/Core/System/omstream.hh>
-#include <iostream>
 #include <string>
 
 #include "kernels/geom/error.h"
 
 namespace selfsim::io {
 
-void quiet_openmesh(std::ostream* complaints) {
-  static bool done = false;
-  if (!done) {
+namespace {
+
+// OpenMesh prints progress and complaints to the terminal; selfsim reports through its own messages.
+void quiet_openmesh() {
+  static const bool done = [] {
     omlog().disable();
     omout().disable();
-    omerr().disconnect(std::cerr);
-    done = true;
-  }
-  if (complaints != nullptr)
-    omerr().connect(*complaints);
-  else
     omerr().disable();
+    return true;
+  }();
+  (void)done;
 }
+
+}  // namespace
 
 OMesh to_openmesh(const Mesh& m) {
   quiet_openmesh();
@@ -38,24 +38,6 @@ OMesh to_openmesh(const Mesh& m) {
           "flipped neighbour): STL, OBJ and PLY are written through OpenMesh, which holds manifold meshes only");
   }
   return om;
-}
-
-Mesh from_openmesh(const OMesh& om) {
-  Mesh m;
-  m.points.reserve(om.n_vertices());
-  for (const auto& vh : om.vertices()) {
-    const OMesh::Point& p = om.point(vh);
-    m.points.push_back({p[0], p[1], p[2]});
-  }
-  m.triangles.reserve(om.n_faces());
-  for (const auto& fh : om.faces()) {
-    Triangle t{};
-    int k = 0;
-    for (const auto& vh : om.fv_range(fh))
-      if (k < 3) t[k++] = static_cast<std::uint32_t>(vh.idx());
-    m.triangles.push_back(t);
-  }
-  return m;
 }
 
 }  // namespace selfsim::io

@@ -1,9 +1,8 @@
-// The one place selfsim's Mesh meets OpenMesh's half-edge mesh (the STL/OBJ/PLY writers and readers, and
-// later Loop subdivision). Include only from .cpp files: OpenMesh headers are heavy.
+// The one place selfsim's Mesh meets OpenMesh's half-edge mesh (the STL/OBJ/PLY writers, and later Loop
+// subdivision). Include only from .cpp files: OpenMesh headers are heavy.
 #pragma once
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
-#include <ostream>
 
 #include "kernels/geom/mesh.h"
 
@@ -15,15 +14,8 @@ struct OpenMeshTraits : OpenMesh::DefaultTraits {
 };
 using OMesh = OpenMesh::TriMesh_ArrayKernelT<OpenMeshTraits>;
 
-// Silences OpenMesh's own messages (it prints progress and complaints to the terminal); complaints go to
-// `complaints` when given, so a reader can report them.
-void quiet_openmesh(std::ostream* complaints = nullptr);
-
 // m as an OpenMesh mesh. OpenMesh holds only manifold meshes: throws Error naming the first triangle it
 // refuses (an edge of three faces, a bowtie, a flipped neighbour) rather than dropping it.
 OMesh to_openmesh(const Mesh& m);
-
-// An OpenMesh mesh as a Mesh (fields are not carried over).
-Mesh from_openmesh(const OMesh& om);
 
 }  // namespace selfsim::io

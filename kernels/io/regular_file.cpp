@@ -8,14 +8,49 @@
 #include <cctype>
 #include <cerrno>
 #include <cstring>
+#include <vector>
 
 #include "kernels/geom/error.h"
+#include "kernels/io/read_error.h"
 
 namespace selfsim::io {
 
 std::string RegularFile::reopen_name(const std::filesystem::path& file) const {
   const std::string name = "/proc/self/fd/" + std::to_string(fd_);
   return ::access(name.c_str(), R_OK) == 0 ? name : file.string();
+}
+
+FileBeneath::FileBeneath(const std::filesystem::path& folder, const std::filesystem::path& rel) {
+  int dir = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);  // the user's choice
+  if (dir < 0) throw Error(error_text(errno));
+  std::vector<std::filesystem::path> parts(rel.begin(), rel.end());
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const bool last = i + 1 == parts.size();
+    // O_NONBLOCK: a FIFO opens at once instead of waiting for a writer; RegularFile refuses it later.
+    const int flags = O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NOCTTY | (last ? O_NONBLOCK : O_DIRECTORY);
+    int fd = -1;
+    do fd = ::openat(dir, parts[i].c_str(), flags);
+    while (fd < 0 && errno == EINTR);
+    const int code = errno;
+    ::close(dir);
+    if (fd < 0) {
+      struct stat st {};
+      const bool link = code == ELOOP ||
+                        (code == ENOTDIR && ::fstatat(AT_FDCWD, (folder / rel).c_str(), &st, AT_SYMLINK_NOFOLLOW) == 0);
+      throw Error(link || code == ELOOP ? "'" + rel.string() + "' goes through a symbolic link, which is not followed"
+                                        : cannot_read(rel, error_text(code)));
+    }
+    dir = fd;
+  }
+  fd_ = dir;
+  if (::access(name().c_str(), R_OK) != 0) {
+    ::close(fd_);
+    throw Error("cannot read files safely here: /proc/self/fd is not available");
+  }
+}
+
+FileBeneath::~FileBeneath() {
+  if (fd_ >= 0) ::close(fd_);
 }
 
 std::string error_text(int code) {

@@ -50,6 +50,23 @@ class ChunkReader {
   std::uint64_t pos_ = 0;
 };
 
+// A file opened inside a folder without following any symbolic link on the way or at its end (each
+// component opened with O_NOFOLLOW), and held open, so that readers open it again through /proc/self/fd:
+// a name swapped for a link between the check and the read cannot lead them outside.
+class FileBeneath {
+ public:
+  // `rel` is relative without ".."; throws Error naming the link, or a missing or unreadable component.
+  FileBeneath(const std::filesystem::path& folder, const std::filesystem::path& rel);
+  ~FileBeneath();
+  FileBeneath(const FileBeneath&) = delete;
+  FileBeneath& operator=(const FileBeneath&) = delete;
+  // The name that opens exactly this file.
+  std::string name() const { return "/proc/self/fd/" + std::to_string(fd_); }
+
+ private:
+  int fd_ = -1;
+};
+
 // strerror(code) with a lower-case first letter, for "cannot read 'x': no such file or directory".
 std::string error_text(int code);
 

@@ -1,0 +1,52 @@
+// Reading Wavefront OBJ for load(), info and diff: `v x y z` points and `f` polygons (each corner `i`,
+// `i/t`, `i//n` or `i/t/n`; negative indices count back from the last point). Texture coordinates,
+// normals, groups, smoothing and materials are skipped: materials are never opened (a `mtllib` could name
+// any file). Strict: a face corner must name a point already defined, a face has at least three corners
+// and no corner twice, and every number is finite, with the line named otherwise.
+#include <algorithm>
+
+#include "kernels/geom/error.h"
+#include "kernels/io/dataset.h"
+#include "kernels/io/file_stream.h"
+#include "kernels/io/mesh_readers.h"
+
+namespace selfsim::io {
+
+Dataset read_obj(const RegularFile& f) {
+  Dataset d;
+  d.shapes = CellShapes::polygons;
+  FileStream in(f);
+  std::string_view line;
+  std::vector<std::size_t> face;
+  while (in.line(line)) {
+    const auto w = words(line);
+    if (w.empty() || w[0].front() == '#') continue;
+    const std::string at = "line " + std::to_string(in.line_number());
+    if (w[0] == "v") {
+      if (w.size() < 4) throw Error(at + ": 'v' takes at least three coordinates");
+      d.points.push_back({number_word(w[1], at + ": x"), number_word(w[2], at + ": y"), number_word(w[3], at + ": z")});
+    } else if (w[0] == "f") {
+      if (w.size() < 4) throw Error(at + ": a face has at least three corners");
+      face.clear();
+      const long long n = static_cast<long long>(d.points.size());
+      for (std::size_t k = 1; k < w.size(); ++k) {
+        const std::string_view index = w[k].substr(0, w[k].find('/'));
+        if (n == 0) throw Error(at + ": a face before any point");
+        long long i = integer_word(index, -n, n, at + ": corner " + std::to_string(k) + "'s point");
+        if (i == 0) throw Error(at + ": point indices start at 1 (or count back from -1)");
+        i = i < 0 ? n + i : i - 1;
+        face.push_back(static_cast<std::size_t>(i));
+      }
+      std::vector<std::size_t> sorted = face;
+      std::sort(sorted.begin(), sorted.end());
+      if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+        throw Error(at + ": a face uses one point twice");
+      d.cell_points.insert(d.cell_points.end(), face.begin(), face.end());
+      d.cell_ends.push_back(d.cell_points.size());
+    }
+    // Everything else (vt, vn, g, o, s, l, mtllib, usemtl, ...) holds nothing a mesh keeps.
+  }
+  return d;
+}
+
+}  // namespace selfsim::io
