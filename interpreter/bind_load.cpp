@@ -1,7 +1,8 @@
 // load("name.ext"): a mesh or curve from a file in the recipe's own folder (a region, a start surface, a
 // curve drawn elsewhere). Confined: a relative name without '..', opened without following any symbolic
-// link. The file is read as `selfsim info` reads it (sizes checked before reading,
-// the third-party reader in a limited child process), then counted against --max-points.
+// link. The file is read as `selfsim info` reads it (sizes checked against the file before reading, VTK in
+// a limited child process, selfsim's own strict readers for STL, OBJ and PLY), then counted against
+// --max-points.
 #include <algorithm>
 #include <cctype>
 #include <filesystem>

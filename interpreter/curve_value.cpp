@@ -12,32 +12,27 @@ namespace selfsim::interp {
 namespace {
 
 template <class T>
-Held<T> self(lua_State* L, const char* method) {
-  return check_self<T>(L, ValueType<T>::name, method);
-}
-
-template <class T>
 int curve_segments(lua_State* L) {
-  const Held<T> c = self<T>(L, "segments");
+  const Held<T> c = geometry_self<T>(L, "segments");
   lua_pushinteger(L, static_cast<lua_Integer>(c->segments()));
   return 1;
 }
 template <class T>
 int curve_paths(lua_State* L) {
-  const Held<T> c = self<T>(L, "paths");
+  const Held<T> c = geometry_self<T>(L, "paths");
   lua_pushinteger(L, static_cast<lua_Integer>(c->paths()));
   return 1;
 }
 template <class T>
 int curve_length(lua_State* L) {
-  const Held<T> c = self<T>(L, "length");
+  const Held<T> c = geometry_self<T>(L, "length");
   lua_pushnumber(L, c->length());
   return 1;
 }
 // c:point(i): the i-th point (1-based) as {x, y} or {x, y, z}, for checks in recipes; no bulk export.
 template <class T>
 int curve_point(lua_State* L) {
-  const Held<T> c = self<T>(L, "point");
+  const Held<T> c = geometry_self<T>(L, "point");
   const lua_Integer i = luaL_checkinteger(L, 2);
   if (i < 1 || i > static_cast<lua_Integer>(c->points.size()))
     return luaL_error(L, "point: index %I out of range [1, %I]", i, static_cast<lua_Integer>(c->points.size()));
@@ -46,7 +41,7 @@ int curve_point(lua_State* L) {
 }
 // c:level(): the construction level a kernel recorded (its uniform `level` field), or nil.
 int curve_level(lua_State* L) {
-  const Held<Polyline> c = self<Polyline>(L, "level");
+  const Held<Polyline> c = geometry_self<Polyline>(L, "level");
   const Field* level = c->point_fields.find("level");
   if (level != nullptr && level->uniform)
     lua_pushinteger(L, static_cast<lua_Integer>(level->at(0)));
@@ -57,7 +52,7 @@ int curve_level(lua_State* L) {
 // c:transform{ mirror, scale, rotate, translate } -> a new curve: mirrored across the x axis, scaled
 // about the origin, rotated by degrees counterclockwise, then translated, in that order.
 int curve_transform(lua_State* L) {
-  const Held<Polyline> held = self<Polyline>(L, "transform");
+  const Held<Polyline> held = geometry_self<Polyline>(L, "transform");
   const Polyline& c = *held;
   return call_kernel(L, "transform", [&] {
     Options o(L, 2);

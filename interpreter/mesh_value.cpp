@@ -13,7 +13,7 @@ namespace selfsim::interp {
 namespace {
 
 int mesh_faces(lua_State* L) {
-  const Held<Mesh> m = check_self<Mesh>(L, ValueType<Mesh>::name, "faces");
+  const Held<Mesh> m = geometry_self<Mesh>(L, "faces");
   lua_pushinteger(L, static_cast<lua_Integer>(m->faces()));
   return 1;
 }

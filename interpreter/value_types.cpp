@@ -23,10 +23,6 @@ void push_point(lua_State* L, Vec3 p) { push_coordinates(L, {p.x, p.y, p.z}); }
 
 namespace {
 
-std::size_t bytes_of(const Polyline& c) { return c.bytes(); }
-std::size_t bytes_of(const Polyline3& c) { return c.bytes(); }
-std::size_t bytes_of(const Mesh& m) { return m.bytes(); }
-
 std::string summary(const Polyline& c) {
   const Field* level = c.point_fields.find("level");
   return "Curve(" + std::to_string(c.points.size()) + " points, " + std::to_string(c.paths()) + " paths" +
@@ -40,13 +36,8 @@ std::string summary(const Mesh& m) {
 }
 
 template <class T>
-Held<T> self(lua_State* L, const char* method) {
-  return check_self<T>(L, ValueType<T>::name, method);
-}
-
-template <class T>
 int value_points(lua_State* L) {
-  const Held<T> v = self<T>(L, "points");
+  const Held<T> v = geometry_self<T>(L, "points");
   lua_pushinteger(L, static_cast<lua_Integer>(v->points.size()));
   return 1;
 }
@@ -54,7 +45,7 @@ int value_points(lua_State* L) {
 // {min = {x, y[, z]}, max = {...}}
 template <class T>
 int value_bbox(lua_State* L) {
-  const Held<T> v = self<T>(L, "bbox");
+  const Held<T> v = geometry_self<T>(L, "bbox");
   const auto b = v->bbox();
   lua_createtable(L, 0, 2);
   push_point(L, b.min);
@@ -79,7 +70,7 @@ const Fields& cell_fields(const Mesh& m) { return m.face_fields; }
 // {points = {names}, cells = {names}}: the fields the value carries (files add arclength and path to curves).
 template <class T>
 int value_fields(lua_State* L) {
-  const Held<T> v = self<T>(L, "fields");
+  const Held<T> v = geometry_self<T>(L, "fields");
   lua_createtable(L, 0, 2);
   push_names(L, v->point_fields);
   lua_setfield(L, -2, "points");
@@ -90,7 +81,7 @@ int value_fields(lua_State* L) {
 
 template <class T>
 int value_tostring(lua_State* L) {
-  const Held<T> v = self<T>(L, "tostring");
+  const Held<T> v = geometry_self<T>(L, "tostring");
   const std::string s = summary(*v);
   lua_pushlstring(L, s.data(), s.size());
   return 1;
@@ -100,7 +91,7 @@ int value_tostring(lua_State* L) {
 
 template <class T>
 void push_geometry(lua_State* L, T&& value) {
-  const std::size_t bytes = bytes_of(value);
+  const std::size_t bytes = value.bytes();
   const double size = budget_size(value);
   push_value(L, ValueType<T>::name, std::move(value), size);
   // Lua only sees the userdata's few bytes; tell its collector about big arrays, so that values a recipe

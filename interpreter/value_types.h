@@ -45,6 +45,12 @@ Held<T> test_geometry(lua_State* L, int index) {
   return test_value<T>(L, index, ValueType<T>::name);
 }
 
+// A method's receiver of type T (see check_self); hold it for the whole call.
+template <class T>
+Held<T> geometry_self(lua_State* L, const char* method) {
+  return check_self<T>(L, ValueType<T>::name, method);
+}
+
 // Any geometry value, held for the call.
 struct AnyValue {
   std::variant<Held<Polyline>, Held<Polyline3>, Held<Mesh>> held;

@@ -5,6 +5,8 @@
 // is kept).
 #include <gtest/gtest.h>
 
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -214,6 +216,19 @@ TEST_P(MeshFiles, TetrahedronThroughReadDataset) {
   expect_same_mesh(m, d);
   EXPECT_TRUE(d.point_fields.empty());  // these formats hold no fields
   EXPECT_TRUE(d.cell_fields.empty());
+}
+
+// OpenMesh's own reader, independent of selfsim's, reads what selfsim writes: same counts, same closedness.
+TEST_P(MeshFiles, TetrahedronThroughOpenMeshReader) {
+  const Mesh m = tetrahedron();
+  const fs::path f = file("tetra_om");
+  io::save(&m, f, {}, no_progress());
+  OpenMesh::TriMesh_ArrayKernelT<> om;
+  OpenMesh::IO::Options opt;
+  ASSERT_TRUE(OpenMesh::IO::read_mesh(om, f.string(), opt));
+  EXPECT_EQ(om.n_vertices(), 4u);
+  EXPECT_EQ(om.n_faces(), 4u);
+  for (const auto& e : om.edges()) EXPECT_FALSE(om.is_boundary(e));
 }
 
 TEST_P(MeshFiles, OpenSquareThroughReadDataset) {
