@@ -81,7 +81,10 @@ int info_command(const std::string& file) {
     static const char* const shapes[] = {"polylines", "polygons", "mixed"};
     std::printf("file: %s\npoints: %zu\ncells: %zu %s\n", shown_text(file, 4096).c_str(), d.points.size(),
                 d.cell_ends.size(), shapes[static_cast<int>(d.shapes)]);
-    if (d.shapes == io::CellShapes::polygons) print_surface(d);
+    if (d.shapes == io::CellShapes::polygons && d.cell_ends.empty())
+      std::printf("surface: none (no polygons)\n");
+    else if (d.shapes == io::CellShapes::polygons)
+      print_surface(d);
     std::printf("bbox: [%.9g, %.9g, %.9g] .. [%.9g, %.9g, %.9g]\n", lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
     for (const auto& [name, f] : d.point_fields)
       std::printf("point field: %s (%d component%s)\n", shown_text(name, 200).c_str(), f.components,

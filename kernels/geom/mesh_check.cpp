@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <span>
 #include <tuple>
 #include <vector>
 
@@ -84,12 +85,18 @@ MeshTopology mesh_topology(const Mesh& m) {
 
   // A vertex is manifold when its faces form one fan: joined across the edges through it. Each face
   // around v contributes its two other corners; faces sharing a corner share an edge through v.
-  std::vector<std::vector<std::uint32_t>> around(m.points.size());
+  // The faces around each vertex, in one array (offsets per vertex): no allocation per vertex.
+  std::vector<std::size_t> offset(m.points.size() + 1, 0);
+  for (const Triangle& t3 : m.triangles)
+    for (std::uint32_t v : t3) ++offset[v + 1];
+  for (std::size_t v = 0; v < m.points.size(); ++v) offset[v + 1] += offset[v];
+  std::vector<std::uint32_t> faces_around(offset.back());
+  std::vector<std::size_t> fill(offset.begin(), offset.end() - 1);
   for (std::uint32_t f = 0; f < m.triangles.size(); ++f)
-    for (std::uint32_t v : m.triangles[f]) around[v].push_back(f);
+    for (std::uint32_t v : m.triangles[f]) faces_around[fill[v]++] = f;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> corners;  // (other corner, index into around[v])
   for (std::uint32_t v = 0; v < m.points.size(); ++v) {
-    const auto& fs = around[v];
+    const std::span<const std::uint32_t> fs(faces_around.data() + offset[v], offset[v + 1] - offset[v]);
     if (fs.size() < 2) continue;
     corners.clear();
     for (std::uint32_t k = 0; k < fs.size(); ++k)

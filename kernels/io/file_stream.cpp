@@ -16,8 +16,11 @@ constexpr std::size_t max_line = std::size_t{1} << 16;
 
 }  // namespace
 
+// A small file gets a small buffer: zero-filling a megabyte for a 300-byte file costs more than reading it.
 FileStream::FileStream(const RegularFile& file, std::uint64_t start)
-    : file_(file), pos_(start), buffer_(buffer_bytes) {}
+    : file_(file),
+      pos_(start),
+      buffer_(static_cast<std::size_t>(std::min<std::uint64_t>(buffer_bytes, file.size() + 1))) {}
 
 bool FileStream::fill() {
   if (begin_ > 0) {  // keep the unread tail at the front
@@ -51,6 +54,7 @@ bool FileStream::line(std::string_view& out) {
     if (n > max_line) throw Error("line " + std::to_string(lines_ + 1) + " is longer than 64 KiB");
     out = std::string_view(start, n);
     if (!out.empty() && out.back() == '\r') out.remove_suffix(1);
+    if (lines_ == 0 && out.substr(0, 3) == "\xEF\xBB\xBF") out.remove_prefix(3);  // a UTF-8 byte order mark
     begin_ += n + skip;
     ++lines_;
     return true;
@@ -84,9 +88,11 @@ std::vector<std::string_view> words(std::string_view line) {
 }
 
 double number_word(std::string_view word, const std::string& what) {
-  if (!word.empty() && word.front() == '+') word.remove_prefix(1);
+  if (word.size() > 1 && word.front() == '+' && word[1] != '-' && word[1] != '+') word.remove_prefix(1);
   double v = 0;
   const auto r = std::from_chars(word.data(), word.data() + word.size(), v);
+  if (r.ec == std::errc::result_out_of_range && r.ptr == word.data() + word.size())
+    throw Error(what + " is out of the range of a double: '" + shown(word) + "'");
   if (r.ec != std::errc() || r.ptr != word.data() + word.size())
     throw Error(what + " is not a number: '" + shown(word) + "'");
   if (!std::isfinite(v)) throw Error(what + " must be a finite number, got " + number_text(v));
@@ -94,7 +100,7 @@ double number_word(std::string_view word, const std::string& what) {
 }
 
 long long integer_word(std::string_view word, long long lo, long long hi, const std::string& what) {
-  if (!word.empty() && word.front() == '+') word.remove_prefix(1);
+  if (word.size() > 1 && word.front() == '+' && word[1] != '-' && word[1] != '+') word.remove_prefix(1);
   long long v = 0;
   const auto r = std::from_chars(word.data(), word.data() + word.size(), v);
   if (r.ec != std::errc() || r.ptr != word.data() + word.size())

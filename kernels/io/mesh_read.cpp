@@ -12,10 +12,12 @@ namespace selfsim::io {
 Dataset read_mesh_file(const std::filesystem::path& file, const std::string& ext) {
   try {
     const RegularFile f(file);
-    // Read data takes at most a few times the file's bytes (an STL corner: 12 bytes in the file, 32 read).
-    if (f.size() > read_budget_bytes() / 4)
-      throw Error("the file is larger than the reading limit of " + std::to_string(read_budget_bytes() >> 30) +
-                  " GiB / 4 for mesh files");
+    // Read data takes up to about 16 bytes per byte of file (an OBJ face "f 1 2 3": 8 bytes of text, 32 of
+    // ids and ends, twice that while the arrays grow), so mesh files get a sixteenth of the reading limit.
+    if (f.size() > read_budget_bytes() / 16)
+      throw Error("the file is larger than the reading limit for mesh files (" +
+                  std::to_string(read_budget_bytes() / 16 >> 20) + " MiB, a sixteenth of " +
+                  std::to_string(read_budget_bytes() >> 20) + " MiB: reading takes up to 16 bytes per file byte)");
     Dataset d = ext == ".stl" ? read_stl(f) : ext == ".obj" ? read_obj(f) : read_ply(f);
     check_dataset(d);
     return d;

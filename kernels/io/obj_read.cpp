@@ -23,7 +23,10 @@ Dataset read_obj(const RegularFile& f) {
     if (w.empty() || w[0].front() == '#') continue;
     const std::string at = "line " + std::to_string(in.line_number());
     if (w[0] == "v") {
-      if (w.size() < 4) throw Error(at + ": 'v' takes at least three coordinates");
+      // x y z, optionally w, or x y z with an r g b colour: nothing else, so no line can hide another.
+      if (w.size() != 4 && w.size() != 5 && w.size() != 7 && w.size() != 8)
+        throw Error(at + ": 'v' takes x y z, x y z w, or x y z r g b (with an optional w)");
+      for (std::size_t k = 4; k < w.size(); ++k) number_word(w[k], at + ": 'v' value " + std::to_string(k));
       d.points.push_back({number_word(w[1], at + ": x"), number_word(w[2], at + ": y"), number_word(w[3], at + ": z")});
     } else if (w[0] == "f") {
       if (w.size() < 4) throw Error(at + ": a face has at least three corners");

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "kernels/geom/check.h"
 #include "kernels/geom/error.h"
 #include "kernels/io/dataset.h"
 #include "kernels/io/file_stream.h"
@@ -16,6 +17,8 @@
 #include "kernels/io/read_error.h"
 
 namespace selfsim::io {
+
+static_assert(std::endian::native == std::endian::little, "the byte order conversion assumes a little-endian host");
 
 namespace {
 
@@ -52,6 +55,18 @@ struct Element {
 };
 
 // Values of one element instance, in property order, from a line (ASCII) or the bytes (binary).
+double lowest(const Type& t) { return t.is_signed ? -std::ldexp(1.0, 8 * t.bytes - 1) : 0; }
+double highest(const Type& t) { return std::ldexp(1.0, 8 * t.bytes - (t.is_signed ? 1 : 0)) - 1; }
+
+// The fewest bytes an instance of e can take: binary, its scalars and list counts; ASCII, a character and
+// a separator per value.
+std::uint64_t min_bytes(const Element& e, Format format) {
+  std::uint64_t n = 0;
+  for (const Property& p : e.properties)
+    n += format == Format::ascii ? 2 : static_cast<std::uint64_t>(p.list ? p.count.bytes : p.type.bytes);
+  return n;
+}
+
 class ValueReader {
  public:
   ValueReader(FileStream& in, Format format) : in_(in), format_(format) {}
@@ -66,10 +81,22 @@ class ValueReader {
     } while (words_.empty());
     next_ = 0;
   }
-  double value(const Type& t, const std::string& what) {
+  // `what` names the value in an error, built only then: `what()` returns it.
+  template <class What>
+  double value(const Type& t, What what) {
     if (format_ == Format::ascii) {
       if (next_ >= words_.size()) throw Error("line " + std::to_string(in_.line_number()) + ": too few values");
-      return number_word(words_[next_++], "line " + std::to_string(in_.line_number()) + ": " + what);
+      auto at = [&] { return "line " + std::to_string(in_.line_number()) + ": " + what(); };
+      double v = 0;
+      try {
+        v = number_word(words_[next_++], "");  // the message is built only for an error
+      } catch (const Error& e) {
+        throw Error(at() + e.what());
+      }
+      if (!t.real && (v != std::floor(v) || v < lowest(t) || v > highest(t)))
+        throw Error(at() + " must be a whole number in [" + number_text(lowest(t)) + ", " + number_text(highest(t)) +
+                    "]");
+      return v;
     }
     unsigned char b[8];
     in_.bytes(b, static_cast<std::size_t>(t.bytes));
@@ -83,12 +110,23 @@ class ValueReader {
       v = static_cast<double>(static_cast<std::int64_t>(u << (64 - 8 * t.bytes)) >> (64 - 8 * t.bytes));
     else
       v = static_cast<double>(u);
-    if (!std::isfinite(v)) throw Error(what + " must be a finite number");
+    if (!std::isfinite(v)) throw Error(what() + " must be a finite number");
     return v;
   }
   void end() {
     if (format_ == Format::ascii && next_ != words_.size())
       throw Error("line " + std::to_string(in_.line_number()) + ": more values than the header declares");
+  }
+  // After the last element: nothing but blank lines may follow.
+  void finish() {
+    if (format_ == Format::ascii) {
+      std::string_view line;
+      while (in_.line(line))
+        if (!words(line).empty())
+          throw Error("line " + std::to_string(in_.line_number()) + ": data after the last element");
+    } else if (!in_.at_end()) {
+      throw Error("data after the last element");
+    }
   }
 
  private:
@@ -118,6 +156,7 @@ Dataset read_ply(const RegularFile& f) {
     if (w[0] == "end_header") break;
     if (w[0] == "format") {
       if (w.size() != 3 || w[2] != "1.0") throw Error(at + ": expected 'format <kind> 1.0'");
+      if (has_format) throw Error(at + ": a second 'format' line");
       if (w[1] == "ascii")
         format = Format::ascii;
       else if (w[1] == "binary_little_endian")
@@ -142,12 +181,30 @@ Dataset read_ply(const RegularFile& f) {
       else
         throw Error(at + ": expected 'property <type> <name>' or 'property list <type> <type> <name>'");
       if (p.list && p.count.real) throw Error(at + ": a list count must be an integer type");
+      for (const Property& q : elements.back().properties)
+        if (q.name == p.name) throw Error(at + ": a second property '" + shown(p.name) + "'");
       elements.back().properties.push_back(p);
     } else {
       throw Error(at + ": unknown header line '" + shown(w[0]) + "'");
     }
   }
   if (!has_format) throw Error("the header has no 'format' line");
+  // What the header declares must fit the rest of the file, so no file makes us allocate or loop for
+  // more than it holds; and the vertices must say where they are.
+  double need = 0;
+  for (const Element& e : elements) {
+    if (e.properties.empty() && e.count > 0) throw Error("element '" + shown(e.name) + "' has no properties");
+    need += static_cast<double>(e.count) * static_cast<double>(min_bytes(e, format));
+    if (e.name == "vertex")
+      for (const char* axis : {"x", "y", "z"})
+        if (std::none_of(e.properties.begin(), e.properties.end(),
+                         [&](const Property& p) { return p.name == axis && !p.list; }))
+          throw Error(std::string("the vertex element has no '") + axis + "' property");
+  }
+  const std::uint64_t data = f.size() - std::min<std::uint64_t>(f.size(), header_bytes);
+  if (need > static_cast<double>(data))
+    throw Error("the header declares at least " + number_text(need) + " bytes of data, but the file holds " +
+                std::to_string(data));
 
   Dataset d;
   d.shapes = CellShapes::polygons;
@@ -159,21 +216,22 @@ Dataset read_ply(const RegularFile& f) {
       values.begin(e.name);
       std::array<double, 3> p{};
       for (const Property& prop : e.properties) {
-        const std::string what = e.name + " " + std::to_string(i + 1) + " " + prop.name;
+        const auto what = [&] { return e.name + " " + std::to_string(i + 1) + " " + prop.name; };
         if (!prop.list) {
           const double v = values.value(prop.type, what);
           if (vertex && (prop.name == "x" || prop.name == "y" || prop.name == "z"))
             p[static_cast<std::size_t>(prop.name[0] - 'x')] = v;
           continue;
         }
-        const double n = values.value(prop.count, what + " count");
-        if (n < 0 || n > 65535) throw Error(what + " count must be in [0, 65535], got " + std::to_string(n));
+        const double n = values.value(prop.count, [&] { return what() + " count"; });
+        if (n < 0 || n > 65535) throw Error(what() + " count must be in [0, 65535], got " + number_text(n));
         const bool corners = face && (prop.name == "vertex_indices" || prop.name == "vertex_index");
-        if (corners && n < 3) throw Error(what + ": a face has at least three corners");
+        if (corners && n < 3) throw Error(what() + ": a face has at least three corners");
         for (int k = 0; k < static_cast<int>(n); ++k) {
           const double id = values.value(prop.type, what);
           if (!corners) continue;
-          if (id < 0 || id != std::floor(id)) throw Error(what + " must hold vertex numbers from 0");
+          if (!(id >= 0 && id == std::floor(id) && id < 4294967296.0))
+            throw Error(what() + " must hold vertex numbers from 0, got " + number_text(id));
           d.cell_points.push_back(static_cast<std::size_t>(id));
         }
         if (corners) d.cell_ends.push_back(d.cell_points.size());
@@ -182,6 +240,7 @@ Dataset read_ply(const RegularFile& f) {
       if (vertex) d.points.push_back(p);
     }
   }
+  values.finish();
   for (std::size_t id : d.cell_points)
     if (id >= d.points.size())
       throw Error("a face uses vertex " + std::to_string(id) + ", but there are " + std::to_string(d.points.size()));

@@ -3,11 +3,12 @@
 // closed surface reads back closed. Strict: a binary file's size must match its triangle count, an ASCII
 // facet holds exactly three vertices, and every coordinate is a finite number, with the line or triangle
 // named otherwise.
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
 #include <cstring>
-#include <unordered_map>
+#include <vector>
 
 #include "kernels/geom/error.h"
 #include "kernels/io/dataset.h"
@@ -16,69 +17,65 @@
 
 namespace selfsim::io {
 
+static_assert(std::endian::native == std::endian::little, "binary STL is little-endian: add byte swaps");
+
 namespace {
 
-// Shared points: the first corner at a position gets the next index.
-class PointMerger {
- public:
-  explicit PointMerger(Dataset& d) : d_(d) {}
-  std::size_t index(const std::array<double, 3>& p) {
-    const auto [it, added] = ids_.try_emplace(key(p), d_.points.size());
-    if (added) d_.points.push_back(p);
-    return it->second;
-  }
+using Corner = std::array<double, 3>;
 
- private:
-  struct Key {
-    std::uint64_t x, y, z;
-    bool operator==(const Key&) const = default;
-  };
-  struct Hash {
-    std::size_t operator()(const Key& k) const {
-      return k.x * 0x9E3779B97F4A7C15ull ^ k.y * 0xC2B2AE3D27D4EB4Full ^ k.z;
-    }
-  };
-  // -0 and +0 are one position.
-  static std::uint64_t bits(double v) { return std::bit_cast<std::uint64_t>(v == 0 ? 0.0 : v); }
-  static Key key(const std::array<double, 3>& p) { return {bits(p[0]), bits(p[1]), bits(p[2])}; }
-
-  Dataset& d_;
-  std::unordered_map<Key, std::size_t, Hash> ids_;
-};
-
-void add_triangle(Dataset& d, PointMerger& points, const std::array<std::array<double, 3>, 3>& corners) {
-  for (const auto& c : corners) d.cell_points.push_back(points.index(c));
-  d.cell_ends.push_back(d.cell_points.size());
-}
-
-Dataset read_binary(const RegularFile& f, std::uint32_t n) {
+// Every triangle's corners, then shared points: corners at the same position become one point, numbered
+// in the order first seen. Found by sorting, not hashing, so no crafted file can make it quadratic.
+Dataset merged(const std::vector<Corner>& corners) {
   Dataset d;
   d.shapes = CellShapes::polygons;
-  PointMerger points(d);
-  FileStream in(f, 84);
-  for (std::uint32_t t = 0; t < n; ++t) {
-    unsigned char record[50];
-    in.bytes(record, sizeof record);
-    std::array<std::array<double, 3>, 3> corners{};
-    for (int k = 0; k < 9; ++k) {
-      std::uint32_t word = 0;
-      std::memcpy(&word, record + 12 + 4 * k, 4);  // after the normal; little-endian, as on this machine
-      const float v = std::bit_cast<float>(word);
-      if (!std::isfinite(v)) throw Error("triangle " + std::to_string(t + 1) + " has a non-finite coordinate");
-      corners[static_cast<std::size_t>(k / 3)][static_cast<std::size_t>(k % 3)] = v;
+  std::vector<std::size_t> order(corners.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return corners[a] != corners[b] ? corners[a] < corners[b] : a < b;  // -0 == +0: one position
+  });
+  std::vector<std::size_t> first(corners.size());  // the first corner at each corner's position
+  for (std::size_t k = 0; k < order.size(); ++k)
+    first[order[k]] = k > 0 && corners[order[k]] == corners[order[k - 1]] ? first[order[k - 1]] : order[k];
+  std::vector<std::size_t> id(corners.size());
+  d.cell_points.reserve(corners.size());
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    if (first[i] == i) {
+      id[i] = d.points.size();
+      d.points.push_back(corners[i]);
     }
-    add_triangle(d, points, corners);
+    d.cell_points.push_back(id[first[i]]);
+    if (i % 3 == 2) d.cell_ends.push_back(i + 1);
   }
   return d;
 }
 
+Dataset read_binary(const RegularFile& f, std::uint32_t n) {
+  std::vector<Corner> corners;
+  corners.reserve(3 * std::size_t{n});  // the file's size matches n: checked by the caller
+  FileStream in(f, 84);
+  for (std::uint32_t t = 0; t < n; ++t) {
+    unsigned char record[50];
+    in.bytes(record, sizeof record);
+    for (int k = 0; k < 3; ++k) {
+      Corner c{};
+      for (int j = 0; j < 3; ++j) {
+        std::uint32_t word = 0;
+        std::memcpy(&word, record + 12 + 12 * k + 4 * j, 4);  // after the normal; little-endian, as here
+        const float v = std::bit_cast<float>(word);
+        if (!std::isfinite(v)) throw Error("triangle " + std::to_string(t + 1) + " has a non-finite coordinate");
+        c[static_cast<std::size_t>(j)] = v;
+      }
+      corners.push_back(c);
+    }
+  }
+  return merged(corners);
+}
+
 Dataset read_ascii(const RegularFile& f) {
-  Dataset d;
-  d.shapes = CellShapes::polygons;
-  PointMerger points(d);
+  std::vector<Corner> corners;
   FileStream in(f);
   std::string_view line;
-  std::array<std::array<double, 3>, 3> corners{};
+  Corner c{};
   int corner = -1;  // -1 outside a facet, else vertices read in it
   bool ended = false;
   while (in.line(line)) {
@@ -94,13 +91,12 @@ Dataset read_ascii(const RegularFile& f) {
       if (corner < 0) throw Error(at + ": 'vertex' outside a facet");
       if (corner == 3) throw Error(at + ": a facet holds exactly three vertices, this one more");
       if (w.size() != 4) throw Error(at + ": 'vertex' takes three coordinates");
-      for (std::size_t k = 0; k < 3; ++k)
-        corners[static_cast<std::size_t>(corner)][k] = number_word(w[k + 1], at + ": vertex coordinate");
+      for (std::size_t k = 0; k < 3; ++k) c[k] = number_word(w[k + 1], at + ": vertex coordinate");
+      corners.push_back(c);
       ++corner;
     } else if (w[0] == "endfacet") {
       if (corner != 3)
         throw Error(at + ": a facet holds exactly three vertices, this one " + std::to_string(std::max(corner, 0)));
-      add_triangle(d, points, corners);
       corner = -1;
     } else if (w[0] == "endsolid") {
       ended = true;
@@ -109,7 +105,7 @@ Dataset read_ascii(const RegularFile& f) {
     }
   }
   if (corner >= 0) throw Error("the file ends inside a facet (truncated?)");
-  return d;
+  return merged(corners);
 }
 
 }  // namespace
@@ -120,7 +116,16 @@ Dataset read_stl(const RegularFile& f) {
   if (sized && f.size() == 84 + 50 * std::uint64_t{n}) return read_binary(f, n);
   char head[6] = {};
   f.read_at(0, head, 5);
-  if (std::string_view(head, 5) == "solid") return read_ascii(f);
+  if (std::string_view(head, 5) == "solid") {
+    try {
+      return read_ascii(f);
+    } catch (const Error&) {
+      // Binary STLs may begin "solid" too: one with NUL bytes near the start was meant to be binary.
+      char start[512] = {};
+      const std::size_t n = f.read_at(0, start, sizeof start);
+      if (!sized || std::memchr(start, '\0', n) == nullptr) throw;
+    }
+  }
   if (!sized) throw Error("not an STL file (too short for a binary STL, and no 'solid' for an ASCII one)");
   throw Error("a binary STL of " + std::to_string(n) + " triangles has " + std::to_string(84 + 50 * std::uint64_t{n}) +
               " bytes, this file " + std::to_string(f.size()) + " (truncated, or not an STL file)");

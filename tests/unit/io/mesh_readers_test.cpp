@@ -129,3 +129,46 @@ TEST(PlyRead, BrokenHeadersAreErrorsAtOnce) {
                 .find("a face uses vertex 1, but there are 1"),
             std::string::npos);
 }
+
+// The second hostile round: each of these was accepted as wrong geometry, or made the reader loop or
+// allocate for what the file does not hold.
+TEST(PlyRead, DeclaredDataMustBeInTheFile) {
+  TempDir dir;
+  const std::string head = "ply\nformat binary_little_endian 1.0\n";
+  EXPECT_NE(read_error(write(dir, "empty_el.ply", head + "element vertex 10\nend_header\n"))
+                .find("element 'vertex' has no properties"),
+            std::string::npos);
+  EXPECT_NE(read_error(write(dir, "short.ply",
+                             head +
+                                 "element vertex 20\nproperty float x\nproperty float y\n"
+                                 "property float z\nend_header\n" +
+                                 std::string(100, '\0')))
+                .find("declares at least 240 bytes of data, but the file holds 100"),
+            std::string::npos);
+  const std::string ascii =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+      "0 0 0\n1 0 0\n0 1 0\n";
+  EXPECT_NE(read_error(write(dir, "big_id.ply", ascii + "3 1e20 0 1\n")).find("must be a whole number in"),
+            std::string::npos);
+  EXPECT_NE(read_error(write(dir, "frac.ply", ascii + "3.5 0 1 2\n")).find("must be a whole number in [0, 255]"),
+            std::string::npos);
+  EXPECT_NE(read_error(write(dir, "tail.ply", ascii + "3 0 1 2\n9 9 9\n")).find("data after the last element"),
+            std::string::npos);
+  EXPECT_NE(read_error(write(dir, "noxyz.ply",
+                             "ply\nformat ascii 1.0\nelement vertex 1\nproperty float px\n"
+                             "property float py\nproperty float pz\nend_header\n0 0 0\n"))
+                .find("the vertex element has no 'x' property"),
+            std::string::npos);
+}
+
+TEST(ObjRead, NoLineHidesAnother) {
+  TempDir dir;
+  const io::Dataset d = io::read_dataset(write(dir, "bom.obj", "\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+  EXPECT_EQ(d.points.size(), 3u) << "a byte order mark does not hide the first line";
+  EXPECT_NE(read_error(write(dir, "cr.obj", "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r")).find("line 1: 'v' takes x y z"),
+            std::string::npos);
+  EXPECT_NE(read_error(write(dir, "sign.obj", "v +-5 0 0\n")).find("is not a number: '+-5'"), std::string::npos);
+  EXPECT_NE(read_error(write(dir, "huge.obj", "v 1e309 0 0\n")).find("out of the range of a double"),
+            std::string::npos);
+}
