@@ -23,6 +23,29 @@ struct TempDir {
   }
 };
 
+// A fresh folder per test and parameter, for tests parameterised by a file extension (GetParam()): the
+// folder is named after the test, whose name holds a '/' that TempDir would not take.
+class PerFormatTest : public ::testing::TestWithParam<const char*> {
+ protected:
+  std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("selfsim_" + std::to_string(::getpid()) + "_" + test_name());
+  void SetUp() override { std::filesystem::create_directories(dir); }
+  void TearDown() override {
+    std::error_code ignored;
+    std::filesystem::remove_all(dir, ignored);
+  }
+  // A file in the folder with the test's extension.
+  std::filesystem::path file(const std::string& stem) const { return dir / (stem + GetParam()); }
+
+ private:
+  static std::string test_name() {
+    std::string s = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    for (char& ch : s)
+      if (ch == '/') ch = '_';
+    return s;
+  }
+};
+
 // Two paths: (0,0) (1,0) (1,1), then (2,2) (3,2.5); a uniform level field of 7.
 inline selfsim::Polyline two_paths() {
   selfsim::Polyline c;

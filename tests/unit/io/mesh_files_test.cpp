@@ -187,24 +187,7 @@ void expect_same_mesh(const Mesh& m, vtkPolyData* d) {
 
 #endif  // SELFSIM_TEST_WITH_VTK_MESH_READERS
 
-// The test's name as one path component.
-std::string test_name() {
-  std::string s = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  for (char& ch : s)
-    if (ch == '/') ch = '_';
-  return s;
-}
-
-class MeshFiles : public ::testing::TestWithParam<const char*> {
- protected:
-  fs::path dir = fs::temp_directory_path() / ("selfsim_mesh_" + std::to_string(::getpid()) + "_" + test_name());
-  void SetUp() override { fs::create_directories(dir); }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir, ignored);
-  }
-  fs::path file(const std::string& stem) const { return dir / (stem + GetParam()); }
-};
+using MeshFiles = io_fixtures::PerFormatTest;
 
 }  // namespace
 

@@ -225,25 +225,7 @@ std::set<int> curve_types(const fs::path& f) {
 
 #endif  // SELFSIM_TEST_WITH_VTK
 
-// The test's name as one path component ("MeshThroughVtkReader/vtp" -> "MeshThroughVtkReader_vtp").
-std::string test_name() {
-  std::string s = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  for (char& ch : s)
-    if (ch == '/') ch = '_';
-  return s;
-}
-
-// A fresh folder per test and format (not io_fixtures::TempDir: a parameterised test's name holds a '/').
-class VtkRoundTrip : public ::testing::TestWithParam<const char*> {
- protected:
-  fs::path dir = fs::temp_directory_path() / ("selfsim_vtk_" + std::to_string(::getpid()) + "_" + test_name());
-  void SetUp() override { fs::create_directories(dir); }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir, ignored);
-  }
-  fs::path file(const std::string& stem) const { return dir / (stem + GetParam()); }
-};
+using VtkRoundTrip = io_fixtures::PerFormatTest;
 
 }  // namespace
 
