@@ -96,7 +96,7 @@ long long Options::integer(const char* key, long long fallback, long long lo, lo
     lua_pop(L, 1);
     return fallback;
   }
-  const std::string range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  const std::string range = range_text(lo, hi);
   // Whole floats (3.0) are accepted too: recipes compute levels with arithmetic.
   const bool whole = lua_isinteger(L, -1) ||
                      (lua_type(L, -1) == LUA_TNUMBER && std::floor(lua_tonumber(L, -1)) == lua_tonumber(L, -1) &&
@@ -104,8 +104,7 @@ long long Options::integer(const char* key, long long fallback, long long lo, lo
   if (!whole) throw Error(option(key) + " must be an integer in " + range + ", got " + describe(L, -1));
   const long long v = lua_isinteger(L, -1) ? lua_tointeger(L, -1) : static_cast<long long>(lua_tonumber(L, -1));
   lua_pop(L, 1);
-  if (v < lo || v > hi) throw Error(option(key) + " must be an integer in " + range + ", got " + std::to_string(v));
-  return v;
+  return check_range(v, lo, hi, option(key));
 }
 
 bool Options::boolean(const char* key, bool fallback) {
