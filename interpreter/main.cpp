@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "interpreter/commands.h"
+#include "interpreter/options_reader.h"
 
 namespace {
 
@@ -19,6 +20,7 @@ usage:
                             (default: a quarter of this machine's memory)
       --timeout S           stop the run after S seconds (default: none)
       --seed N              seed for math.random (default 0): same seed, same files
+      -h, --help            this text
       --threads N           threads for parallel kernels (default: all cores); the files are
                             byte-identical for any N
       -q, --quiet           print nothing but errors
@@ -54,7 +56,14 @@ int main(int argc, char** argv) {
       std::printf("selfsim %s\n", SELFSIM_VERSION);
       return 0;
     }
-    if (command == "run") return run_command(parse_run_arguments(rest));
+    if (command == "run") {
+      for (const std::string& a : rest)
+        if (a == "--help" || a == "-h") {
+          std::fputs(help, stdout);
+          return 0;
+        }
+      return run_command(parse_run_arguments(rest));
+    }
     if (command == "info") {
       if (rest.size() != 1) throw UsageError("info expects one file");
       return info_command(rest[0]);
@@ -73,7 +82,8 @@ int main(int argc, char** argv) {
       if (files.size() != 2) throw UsageError("diff expects two files");
       return diff_command(files[0], files[1], tol);
     }
-    throw UsageError("unknown command '" + command + "'");
+    const std::string near = suggestion(command, {"run", "diff", "info", "--help", "--version"});
+    throw UsageError("unknown command '" + command + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
   } catch (const UsageError& e) {
     return usage_error(e.what());
   } catch (const std::exception& e) {  // a filesystem error, out of memory: one line, never an abort

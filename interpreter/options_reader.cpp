@@ -35,6 +35,12 @@ std::string option(const char* key) { return std::string("option '") + key + "'"
 
 std::string suggestion(const std::string& word, const std::vector<std::string>& candidates) {
   std::string best;
+  // An abbreviation ("--out" for "--output") is the likeliest meaning, whatever the edit distances say.
+  if (word.size() >= 3)
+    for (const auto& c : candidates)
+      if (c.size() > word.size() && c.compare(0, word.size(), word) == 0 && (best.empty() || c.size() < best.size()))
+        best = c;
+  if (!best.empty()) return best;
   std::size_t best_distance = std::max<std::size_t>(2, word.size() / 3) + 1;
   for (const auto& c : candidates) {
     // The distance is at least the difference in length: skip the quadratic work (a 256 MiB name).

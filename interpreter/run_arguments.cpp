@@ -2,8 +2,10 @@
 // [--max-memory SIZE] [--timeout S] [--seed N] [--threads N] [-q].
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 
 #include "interpreter/commands.h"
+#include "interpreter/options_reader.h"
 #include "interpreter/parse_text.h"
 #include "kernels/geom/count_text.h"
 
@@ -33,6 +35,13 @@ double size_argument(const std::string& flag, const std::string& text) {
 }
 
 }  // namespace
+
+const std::vector<std::string>& run_flags() {
+  static const std::vector<std::string> flags{"-o",           "--output",  "--set",  "--max-points",
+                                              "--max-memory", "--timeout", "--seed", "--threads",
+                                              "-q",           "--quiet",   "--help"};
+  return flags;
+}
 
 RunConfig parse_run_arguments(const std::vector<std::string>& args) {
   RunConfig c;
@@ -70,9 +79,10 @@ RunConfig parse_run_arguments(const std::vector<std::string>& args) {
       c.seed = *seed;
     } else if (a == "-q" || a == "--quiet")
       c.quiet = true;
-    else if (!a.empty() && a[0] == '-')
-      throw UsageError("unknown option '" + a + "' for run");
-    else if (have_recipe)
+    else if (!a.empty() && a[0] == '-') {
+      const std::string near = suggestion(a, run_flags());
+      throw UsageError("unknown option '" + a + "' for run" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
+    } else if (have_recipe)
       throw UsageError("run takes one recipe, got '" + c.recipe.string() + "' and '" + a + "'");
     else {
       c.recipe = a;
@@ -80,6 +90,10 @@ RunConfig parse_run_arguments(const std::vector<std::string>& args) {
     }
   }
   if (!have_recipe) throw UsageError("run expects a recipe file");
+  // A file where the output folder should be is the command line's mistake: say so before the recipe runs.
+  std::error_code ec;
+  if (std::filesystem::exists(c.out_dir, ec) && !std::filesystem::is_directory(c.out_dir, ec))
+    throw UsageError("-o '" + c.out_dir.string() + "' is a file, not a folder");
   return c;
 }
 

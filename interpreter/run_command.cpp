@@ -10,6 +10,7 @@
 #include "interpreter/bindings.h"
 #include "interpreter/commands.h"
 #include "interpreter/lua_support.h"
+#include "interpreter/options_reader.h"
 #include "interpreter/sandbox.h"
 #include "interpreter/watchdog.h"
 
@@ -115,10 +116,14 @@ int run_command(const RunConfig& config) {
     run.reported = true;
     code = interrupted.load() ? 130 : 1;
   } else {
+    const std::vector<std::string> read(run.used_params.begin(), run.used_params.end());
     for (const auto& [key, value] : config.sets)
-      if (!run.used_params.contains(key))
-        std::fprintf(stderr, "selfsim: warning: --set %s=%s was not read by any param() in the recipe\n",
-                     shown_text(key).c_str(), shown_text(value).c_str());
+      if (!run.used_params.contains(key)) {
+        const std::string near = suggestion(key, read);
+        std::fprintf(stderr, "selfsim: warning: --set %s=%s was not read by any param() in the recipe%s\n",
+                     shown_text(key).c_str(), shown_text(value).c_str(),
+                     near.empty() ? "" : (" (did you mean '" + shown_text(near) + "'?)").c_str());
+      }
     if (!config.quiet)
       for (const auto& s : run.saved) std::printf("wrote %s\n", s.c_str());
   }

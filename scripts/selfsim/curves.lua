@@ -3,54 +3,74 @@
 -- curves (normalize = false) and closed curves keep their size from level to level.
 local M = {}
 
--- Heighway dragon: one segment becomes two, scaled by 1/sqrt(2). 2^n segments.
-function M.dragon()
-  return lsystem { axiom = "FX", rules = { X = "X-YF", Y = "FX+Y" }, angle = 90, shrink = math.sqrt(0.5) }
+-- The grammar constructors take no arguments: a level passed to one (curves.dragon(12)) would otherwise be
+-- ignored without a word. Errors name the caller's line.
+local function grammar(name, make)
+  M[name] = function(...)
+    if select("#", ...) > 0 then
+      error(name .. "() takes no arguments: it returns the grammar; draw a level with curves." .. name ..
+        "():curve(n)", 2)
+    end
+    return make()
+  end
 end
 
--- Davis-Knuth terdragon: one segment becomes three, scaled by 1/sqrt(3). 3^n segments.
-function M.terdragon()
-  return lsystem { axiom = "F", rules = { F = "F-F+F" }, angle = 120, shrink = 1 / math.sqrt(3) }
+-- The level argument of the curve functions: a whole number from 0.
+local function level_argument(name, n)
+  if math.type(n) == nil or n ~= math.floor(n) or n < 0 then
+    error(name .. "(n) expects a level, a whole number from 0, got " .. tostring(n), 3)
+  end
+  return n
 end
+
+-- Heighway dragon: one segment becomes two, scaled by 1/sqrt(2). 2^n segments.
+grammar("dragon", function()
+  return lsystem { axiom = "FX", rules = { X = "X-YF", Y = "FX+Y" }, angle = 90, shrink = math.sqrt(0.5) }
+end)
+
+-- Davis-Knuth terdragon: one segment becomes three, scaled by 1/sqrt(3). 3^n segments.
+grammar("terdragon", function()
+  return lsystem { axiom = "F", rules = { F = "F-F+F" }, angle = 120, shrink = 1 / math.sqrt(3) }
+end)
 
 -- Hilbert curve with Table 1's axiom (level 0 already visits the 2x2 grid): level n visits every cell of
 -- the 2^(n+1) x 2^(n+1) grid once, in 4^(n+1) - 1 segments.
-function M.hilbert()
+grammar("hilbert", function()
   return lsystem {
     axiom = "+YF-XFX-FY+",
     rules = { X = "+YF-XFX-FY+", Y = "-XF+YFY+FX-" },
     angle = 90, shrink = 0.5,
   }
-end
+end)
 
 -- Sierpinski arrowhead: 3^n segments. Odd levels end turned by 60 degrees (seed 001); the start angle
 -- list turns them back so un-normalised levels also run along the x axis.
-function M.arrowhead()
+grammar("arrowhead", function()
   return lsystem {
     axiom = "XF", rules = { X = "YF-XF-Y", Y = "XF+YF+X" },
     angle = 60, shrink = 0.5, start_angle = { 0, 60 },
   }
-end
+end)
 
 -- One Koch curve, bump to the left of its direction: 4^n segments.
-function M.koch()
+grammar("koch", function()
   return lsystem { axiom = "F", rules = { F = "F+F--F+F" }, angle = 60, shrink = 1 / 3 }
-end
+end)
 
 -- Koch snowflake: three Koch curves on a counterclockwise triangle, bumps outwards: 3*4^n segments.
 -- Closed, so it is placed as drawn: from (0,0) along the triangle (0,0), (1,0), (1/2, sqrt(3)/2).
-function M.koch_snowflake()
+grammar("koch_snowflake", function()
   return lsystem { axiom = "F++F++F", rules = { F = "F-F++F-F" }, angle = 60, shrink = 1 / 3 }
-end
+end)
 
 -- Gosper (flowsnake) curve: 7^n segments, scaled by 1/sqrt(7) per level.
-function M.gosper()
+grammar("gosper", function()
   return lsystem {
     axiom = "FX",
     rules = { X = "X+YF++YF-FX--FXFX-YF+", Y = "-FX+YFYF++YF+FX--FX-Y" },
     angle = 60, shrink = 1 / math.sqrt(7),
   }
-end
+end)
 
 -- Six arrowhead curves of level n on the sides of a regular hexagon with unit sides (seed 001).
 -- turn = 60 puts each curve's triangle inside (the hexagon); turn = -60 outside (the star).
@@ -65,9 +85,9 @@ local function arrowhead_ring(n, turn)
   return substitute { path = polyline(corners), generator = M.arrowhead():curve { level = n }, levels = 1 }
 end
 
-function M.arrowhead_star(n) return arrowhead_ring(n, -60) end
+function M.arrowhead_star(n) return arrowhead_ring(level_argument("arrowhead_star", n), -60) end
 
-function M.arrowhead_hexagon(n) return arrowhead_ring(n, 60) end
+function M.arrowhead_hexagon(n) return arrowhead_ring(level_argument("arrowhead_hexagon", n), 60) end
 
 -- A misspelt curve name gets a suggestion rather than "attempt to call a nil value".
 local function distance(a, b)

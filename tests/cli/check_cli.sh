@@ -38,6 +38,13 @@ expect 0 "run plant again" -- "$selfsim" run "$src/examples/plant.lua" -o "$tmp/
 expect 0 "run plant level 3" -- "$selfsim" run "$src/examples/plant.lua" -o "$tmp/c" --set level=3 -q
 expect 0 "unused --set only warns" -- "$selfsim" run "$src/examples/plant.lua" -o "$tmp/d" --set level=1 --set levl=3 -q
 contains "$tmp/err" "--set levl=3 was not read" "unused --set warning"
+contains "$tmp/err" "(did you mean 'level'?)" "unused --set suggests the param read"
+expect 0 "run --help" -- "$selfsim" run --help
+contains "$tmp/out" "selfsim run RECIPE.lua" "run --help prints the help"
+expect 2 "misspelt run flag" -- "$selfsim" run "$src/examples/plant.lua" --out "$tmp/x"
+contains "$tmp/err" "unknown option '--out' for run (did you mean '--output'?)" "run flag suggestion"
+expect 2 "misspelt command" -- "$selfsim" rnu "$src/examples/plant.lua"
+contains "$tmp/err" "unknown command 'rnu' (did you mean 'run'?)" "command suggestion"
 
 expect 0 "info" -- "$selfsim" info "$tmp/a/plant.vtp"
 contains "$tmp/out" "points: 26" "info points"

@@ -1,0 +1,1 @@
+local c = (require "selfsim.curves").dragon(12)

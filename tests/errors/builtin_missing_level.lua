@@ -1,0 +1,2 @@
+local curves = require "selfsim.curves"
+local star = curves.arrowhead_star()
