@@ -63,10 +63,8 @@ int param(lua_State* L) {
     } else if (type == LUA_TBOOLEAN) {
       if (text != "true" && text != "false") throw Error("--set " + name + "=" + text + ": expected true or false");
       lua_pushboolean(L, text == "true");
-    } else if (lua_isinteger(L, 2)) {
-      const auto v = parse_text<long long>(text);
-      if (!v) throw Error("--set " + name + "=" + text + ": expected an integer");
-      lua_pushinteger(L, *v);
+    } else if (const auto whole = parse_text<long long>(text)) {
+      lua_pushinteger(L, *whole);  // a number default takes any number: integers stay integers
     } else {
       const auto v = parse_text<double>(text);
       if (!v) throw Error("--set " + name + "=" + text + ": expected a finite number");

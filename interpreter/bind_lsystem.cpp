@@ -1,6 +1,7 @@
 // lsystem{ axiom, rules, angle, angles, start_angle, shrink, draw, move } -> grammar with methods
 // g:curve{ level, normalize }, g:string(level), g:count(level). A thin adapter over kernels/lsystem.
 #include <cmath>
+#include <string_view>
 
 #include "interpreter/bindings.h"
 #include "interpreter/curve_value.h"
@@ -145,9 +146,31 @@ int grammar_tostring(lua_State* L) {
   return 1;
 }
 
+// ABOP's 3D turtle commands that the 2D turtle neither draws nor turns by, in the order first written: a
+// 3D tree read by the 2D turtle would silently collapse, so the recipe is told once per grammar.
+std::string ignored_3d_symbols(const Grammar& g) {
+  std::string found;
+  auto scan = [&](const std::string& text) {
+    for (char c : text)
+      if (std::string_view("&^\\/!{}'").find(c) != std::string_view::npos && !g.draws(c) && !g.moves(c) &&
+          g.turn_of(c) == 0 && found.find(c) == std::string::npos)
+        found += c;
+  };
+  scan(g.axiom);
+  for (const auto& [symbol, rule] : g.rules) scan(rule);
+  return found;
+}
+
 int make_lsystem(lua_State* L) {
   return call_kernel(L, "lsystem", [&] {
     Grammar g = read_grammar(L, 1);
+    if (const std::string ignored = ignored_3d_symbols(g); !ignored.empty()) {
+      std::string list;
+      for (char c : ignored) list += std::string(list.empty() ? "'" : ", '") + c + "'";
+      const std::string message = recipe_where(L) + "lsystem: the 2D turtle ignores the 3D turtle commands " + list +
+                                  " (they still take part in rewriting)";
+      lua_warning(L, message.c_str(), 0);
+    }
     // A grammar's rules are recipe data held in C++ memory: they count against --max-memory like Lua's
     // own strings, so a recipe cannot hoard gigabytes of grammars.
     std::size_t bytes = sizeof(Grammar) + g.axiom.size() + g.draw.size() + g.move.size();

@@ -41,6 +41,14 @@ std::string suggestion(const std::string& word, const std::vector<std::string>& 
       if (c.size() > word.size() && c.compare(0, word.size(), word) == 0 && (best.empty() || c.size() < best.size()))
         best = c;
   if (!best.empty()) return best;
+  // A long shared start ("rotation" for "rotate") is a likely meaning too, when the lengths differ much.
+  std::size_t best_prefix = 3;
+  for (const auto& c : candidates) {
+    std::size_t k = 0;
+    while (k < word.size() && k < c.size() && word[k] == c[k]) ++k;
+    if (k > best_prefix && 2 * k >= word.size() && 2 * k >= c.size()) best_prefix = k, best = c;
+  }
+  if (!best.empty()) return best;
   std::size_t best_distance = std::max<std::size_t>(2, word.size() / 3) + 1;
   for (const auto& c : candidates) {
     // The distance is at least the difference in length: skip the quadratic work (a 256 MiB name).
@@ -236,8 +244,12 @@ void Options::finish() {
   }
   const std::vector<std::string> known(read_.begin(), read_.end());
   const std::string near = suggestion(unknown.front(), known);
-  throw Error("unknown option '" + shown_text(unknown.front()) + "'" +
-              (near.empty() ? "" : " (did you mean '" + near + "'?)") +
+  // Without a likely meaning, the valid options themselves (a short list: every binding reads few).
+  const std::string hint = !near.empty()        ? " (did you mean '" + near + "'?)"
+                           : known.empty()      ? " (it takes no options)"
+                           : known.size() <= 12 ? " (valid options: " + quoted_list(known) + ")"
+                                                : "";
+  throw Error("unknown option '" + shown_text(unknown.front()) + "'" + hint +
               (unknown.size() > 1 ? " (and " + std::to_string(unknown.size() - 1) + " more unknown)" : ""));
 }
 

@@ -57,6 +57,15 @@ contains "$tmp/out" "point count differs" "diff message"
 expect 2 "diff missing file" -- "$selfsim" diff "$tmp/a/plant.vtp" "$tmp/none.vtp"
 expect 2 "diff bad tolerance" -- "$selfsim" diff "$tmp/a/plant.vtp" "$tmp/b/plant.vtp" --tol x
 
+# Warnings and numbers: ABOP's 3D symbols are named once; a number default takes any number.
+cat >"$tmp/abop.lua" <<'LUA'
+local g = lsystem { axiom = "A", rules = { A = "F[&FA]/////[&FA]" }, angle = 22.5 }
+print(g:curve(2):paths(), param("angle", 60))
+LUA
+expect 0 "3D symbols only warn" -- "$selfsim" run "$tmp/abop.lua" -o "$tmp/abop" --set angle=22.5
+contains "$tmp/err" "the 2D turtle ignores the 3D turtle commands '&', '/'" "3D symbols warning"
+contains "$tmp/out" "22.5" "a number default takes 22.5"
+
 # Meshes: info tells a closed surface from an open one, diff names the first differing cell.
 cat >"$tmp/tet.lua" <<'LUA'
 local m = mesh { points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } },
