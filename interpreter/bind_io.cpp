@@ -1,5 +1,6 @@
 // save(value, "file.ext", opts?) and param(name, default): the recipe's only ways out and in.
 #include <algorithm>
+#include <cctype>
 
 #include "interpreter/bindings.h"
 #include "interpreter/lua_support.h"
@@ -7,6 +8,7 @@
 #include "interpreter/parse_text.h"
 #include "interpreter/run_context.h"
 #include "interpreter/value_types.h"
+#include "kernels/io/colour.h"
 #include "kernels/io/save.h"
 
 namespace selfsim::interp {
@@ -19,9 +21,20 @@ io::SaveOptions read_save_options(lua_State* L, int index, const io::Format& f) 
   Options o(L, index);
   io::SaveOptions s;
   auto has = [&](const char* name) { return std::find(f.options.begin(), f.options.end(), name) != f.options.end(); };
-  if (has("stroke")) s.stroke = o.string("stroke", s.stroke);
+  // A misspelt colour name gets a suggestion here; SaveOptions::validate refuses any other non-colour.
+  auto colour = [&](const char* key, const std::string& fallback) {
+    const std::string value = o.string(key, fallback);
+    std::string lower = value;
+    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (!value.empty() && value != "none" && !io::is_colour(value))
+      if (const std::string near = suggestion(lower, io::colour_names()); !near.empty())
+        throw Error(std::string("option '") + key + "': unknown colour '" + shown_text(value) + "' (did you mean '" +
+                    near + "'?)");
+    return value;
+  };
+  if (has("stroke")) s.stroke = colour("stroke", s.stroke);
   if (has("stroke_width")) s.stroke_width = o.number("stroke_width", s.stroke_width);
-  if (has("fill")) s.fill = o.string("fill", s.fill);
+  if (has("fill")) s.fill = colour("fill", s.fill);
   if (has("size")) s.size = o.number("size", s.size);
   io::check_options(f, o.unread());
   o.finish();

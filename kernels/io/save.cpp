@@ -6,18 +6,12 @@
 #include <string_view>
 
 #include "kernels/geom/error.h"
+#include "kernels/io/colour.h"
+#include "kernels/io/read_error.h"
 
 namespace selfsim::io {
 
 namespace {
-
-// A CSS colour ("#1d3557", "steelblue", "rgb(10, 20, 30)"): nothing that could end the SVG attribute.
-bool colour_like(const std::string& c) {
-  return !c.empty() && c.size() < 64 && std::all_of(c.begin(), c.end(), [](char ch) {
-    return std::isalnum(static_cast<unsigned char>(ch)) ||
-           std::string_view("#(),.% ").find(ch) != std::string_view::npos;
-  });
-}
 
 template <class V>
 void check_curve(const PolylineT<V>& c, const std::string& file) {
@@ -42,10 +36,11 @@ void check_mesh(const Mesh& m, const std::string& file) {
 }  // namespace
 
 void SaveOptions::validate() const {
-  if (!colour_like(stroke))
-    throw Error("option 'stroke' must be a colour such as '#1d3557' or 'black', got '" + stroke + "'");
-  if (!fill.empty() && !colour_like(fill))
-    throw Error("option 'fill' must be a colour such as '#a8dadc' or 'none', got '" + fill + "'");
+  // Shown through one_line: a colour is recipe text, and may hold anything.
+  if (!is_colour(stroke))
+    throw Error("option 'stroke' must be a CSS colour name, #rgb or #rrggbb, got '" + shown(stroke) + "'");
+  if (!fill.empty() && fill != "none" && !is_colour(fill))
+    throw Error("option 'fill' must be a CSS colour name, #rgb, #rrggbb or 'none', got '" + shown(fill) + "'");
   if (!(stroke_width > 0 && stroke_width < 1e6))
     throw Error("option 'stroke_width' must be a positive number of pixels");
   if (!(size >= 16 && size <= 100000)) throw Error("option 'size' must be in [16, 100000] pixels");
