@@ -1,6 +1,7 @@
 // save(value, "file.ext", opts?) and param(name, default): the recipe's only ways out and in.
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 
 #include "interpreter/bindings.h"
 #include "interpreter/lua_support.h"
@@ -51,7 +52,9 @@ int save(lua_State* L) {
     const io::Format& format = io::format_for(name, io::kind_of(v->ref()));
     const io::SaveOptions opt = read_save_options(L, 3, format);
     const std::string written = io::save(v->ref(), run.config.out_dir, name, opt, run);
-    run.saved.push_back(written + " (" + std::to_string(v->points()) + " points)");
+    // Said as each file is committed, in order with the recipe's own print output: when a later error fails
+    // the run, the files it did write were already reported.
+    if (!run.config.quiet) std::printf("wrote %s (%zu points)\n", shown_text(written, 4096).c_str(), v->points());
     return 0;
   });
 }

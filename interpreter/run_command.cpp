@@ -124,8 +124,6 @@ int run_command(const RunConfig& config) {
                      shown_text(key).c_str(), shown_text(value).c_str(),
                      near.empty() ? "" : (" (did you mean '" + shown_text(near) + "'?)").c_str());
       }
-    if (!config.quiet)
-      for (const auto& s : run.saved) std::printf("wrote %s\n", s.c_str());
   }
   std::fflush(stdout);
   lua_close(L);

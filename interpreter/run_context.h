@@ -42,7 +42,6 @@ class RunContext : public Progress {
   const RunConfig config;
   std::filesystem::path scripts_dir;  // the DSL's own library (require "selfsim.curves")
   std::set<std::string> used_params;  // --set keys that param() read
-  std::vector<std::string> saved;     // files written, for the summary
   double held_points = 0;             // points held by live values (curves), against --max-points
   bool ended = false;                 // the recipe has returned or failed: nothing more may be written
   std::atomic<bool> reported{false};  // the run's error line is printed: the watchdog adds none

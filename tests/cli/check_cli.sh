@@ -57,6 +57,12 @@ contains "$tmp/out" "point count differs" "diff message"
 expect 2 "diff missing file" -- "$selfsim" diff "$tmp/a/plant.vtp" "$tmp/none.vtp"
 expect 2 "diff bad tolerance" -- "$selfsim" diff "$tmp/a/plant.vtp" "$tmp/b/plant.vtp" --tol x
 
+# Files are reported as they are written: a later error does not hide the ones already there.
+printf '%s\n' 'save(polyline { { 0, 0 }, { 1, 0 } }, "a.svg")' 'print("between")' 'error("late")' >"$tmp/late.lua"
+expect 1 "error after a save" -- "$selfsim" run "$tmp/late.lua" -o "$tmp/late"
+contains "$tmp/out" "wrote $tmp/late/a.svg (2 points)" "the file written before the error is reported"
+contains "$tmp/out" "between" "print output too"
+
 # Warnings and numbers: ABOP's 3D symbols are named once; a number default takes any number.
 cat >"$tmp/abop.lua" <<'LUA'
 local g = lsystem { axiom = "A", rules = { A = "F[&FA]/////[&FA]" }, angle = 22.5 }
