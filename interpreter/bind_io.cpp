@@ -36,7 +36,25 @@ io::SaveOptions read_save_options(lua_State* L, int index, const io::Format& f) 
   if (has("stroke")) s.stroke = colour("stroke", s.stroke);
   if (has("stroke_width")) s.stroke_width = o.number("stroke_width", s.stroke_width);
   if (has("fill")) s.fill = colour("fill", s.fill);
-  if (has("size")) s.size = o.number("size", s.size);
+  // size = 800 (pixels) or size = "150mm" (also cm, in): a physical size for plotters.
+  if (has("size")) {
+    const int type = o.push("size");
+    if (type == LUA_TSTRING) {
+      const std::string text = text_value(L, -1, "option 'size'");
+      std::size_t digits = 0;
+      while (digits < text.size() && (std::isdigit(static_cast<unsigned char>(text[digits])) || text[digits] == '.'))
+        ++digits;
+      const auto value = parse_text<double>(text.substr(0, digits));
+      if (!value)
+        throw Error("option 'size' must be a number of pixels or a length such as \"150mm\", got '" + shown_text(text) +
+                    "'");
+      s.size = *value;
+      s.size_unit = text.substr(digits);
+    } else if (type != LUA_TNIL) {
+      s.size = finite_number(L, -1, "option 'size'");
+    }
+    lua_pop(L, 1);
+  }
   io::check_options(f, o.unread());
   o.finish();
   return s;

@@ -43,7 +43,11 @@ void SaveOptions::validate() const {
     throw Error("option 'fill' must be a CSS colour name, #rgb, #rrggbb or 'none', got '" + shown(fill) + "'");
   if (!(stroke_width > 0 && stroke_width < 1e6))
     throw Error("option 'stroke_width' must be a positive number of pixels");
-  if (!(size >= 16 && size <= 100000)) throw Error("option 'size' must be in [16, 100000] pixels");
+  if (size_unit.empty() && !(size >= 16 && size <= 100000)) throw Error("option 'size' must be in [16, 100000] pixels");
+  if (size_unit != "" && size_unit != "mm" && size_unit != "cm" && size_unit != "in")
+    throw Error("option 'size' takes the units mm, cm or in, got '" + shown(size_unit) + "'");
+  if (!size_unit.empty() && !(size > 0 && size <= 100000))
+    throw Error("option 'size' must be a positive length of at most 100000" + size_unit);
 }
 
 std::string save(const ValueRef& v, const std::filesystem::path& root, const std::string& name, const SaveOptions& opt,

@@ -18,7 +18,8 @@ struct SaveOptions {
   std::string stroke = "#1d3557";  // .svg: stroke colour
   double stroke_width = 1;         // .svg: stroke width in screen pixels, whatever the curve's scale
   std::string fill;                // .svg: fill colour with the even-odd rule; empty for no fill
-  double size = 800;               // .svg: width or height in pixels, whichever is larger
+  double size = 800;               // .svg: width or height, whichever is larger, in size_unit
+  std::string size_unit;           // .svg: "" (pixels), "mm", "cm" or "in": a physical size for plotters
   std::vector<std::string> given;  // the options the caller set, checked against the format's options
 
   // Throws Error naming the first bad field.

@@ -42,11 +42,12 @@ void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
     out.write(s);
     s.clear();
   };
+  // Width and height in the size's unit (pixels, or mm/cm/in for plotters); the stroke width is in that unit too.
   s += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"";
   put(s, extent.x * px);
-  s += "\" height=\"";
+  s += opt.size_unit + "\" height=\"";
   put(s, extent.y * px);
-  s += "\" viewBox=\"";
+  s += opt.size_unit + "\" viewBox=\"";
   for (double v : {lo.x, -(lo.y + extent.y), extent.x, extent.y}) {
     put(s, v);
     s += ' ';
@@ -56,10 +57,13 @@ void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
        "\" fill-rule=\"evenodd\" stroke=\"" + opt.stroke + "\" stroke-width=\"";
   put(s, opt.stroke_width / px);
   s += "\" stroke-linejoin=\"round\" stroke-linecap=\"round\" d=\"";
+  const double noise = 1e-12 * big;
   std::size_t written = 0;
   for (std::size_t i = 0; i < c.paths(); ++i) {
     char cmd = 'M';
     for (Vec2 p : c.path(i)) {
+      // Rounding noise around zero (-1.36e-19 on a unit curve) is written as the 0 it means.
+      p = {std::abs(p.x) < noise ? 0.0 : p.x, std::abs(p.y) < noise ? 0.0 : p.y};
       if (++written % (1u << 20) == 0)
         progress.step(0.9 * static_cast<double>(written) / static_cast<double>(c.points.size()));
       s += cmd;

@@ -94,3 +94,16 @@ TEST(DatasetDiff, FindsMovedPointsAndMissingFields) {
   EXPECT_NE(d[0].find("point 1 differs"), std::string::npos);
   EXPECT_NE(d[1].find("'level' only in the first file"), std::string::npos);
 }
+
+TEST(SaveSvg, PhysicalSizeAndRoundingNoise) {
+  TempDir dir;
+  Polyline c = Polyline::single({{0, 0}, {1, -1.36e-19}, {1, 1}});
+  const fs::path f = dir.path / "mm.svg";
+  io::save(&c, f, {.size = 150, .size_unit = "mm"}, no_progress());
+  std::ifstream in(f);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("width=\"150mm\" height=\"150mm\""), std::string::npos);
+  EXPECT_NE(text.find("L1 0 "), std::string::npos) << "rounding noise written as 0";
+  EXPECT_EQ(text.find("e-19"), std::string::npos);
+  EXPECT_THROW(io::save(&c, dir.path / "bad.svg", {.size = 150, .size_unit = "furlongs"}, no_progress()), Error);
+}
