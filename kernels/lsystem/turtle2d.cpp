@@ -49,11 +49,25 @@ template <class Heading>
 void draw_sequential(const Grammar& g, const TurtleOptions& opt, const Compiled& c, Heading heading,
                      const LatticeBlocks* blocks, const LevelCounts& counts, Polyline& out, Progress& progress) {
   PathTurtle<Heading> turtle{c, heading, blocks, out, progress, counts.max_points()};
+  // Branched systems (a plant) also get their branch order and distance from the root: one colour per
+  // `level` and an arclength that restarts on every branch say little about a tree.
+  TreeFields tree;
+  if (counts.max_depth > 0) {
+    tree.depth.reserve(out.points.capacity());
+    tree.root_distance.reserve(out.points.capacity());
+    turtle.tree = &tree;
+  }
   rewrite(c, g.axiom, opt.level, turtle);
   out.close_path();
   progress.fraction(1);
   const Similarity2 place = placement(g, opt, turtle.pos, counts.segments + counts.breaks);
   for (Vec2& p : out.points) p = place(p);
+  if (turtle.tree != nullptr) {
+    const double scale = norm(place.a);  // unit steps to the curve's own length
+    for (double& d : tree.root_distance) d *= scale;
+    out.point_fields.set(int_field("depth", std::move(tree.depth)));
+    out.point_fields.set(real_field("root_distance", std::move(tree.root_distance)));
+  }
   if (!all_finite(out.points.data(), out.points.size())) throw non_finite(opt.level);
 }
 

@@ -43,17 +43,39 @@ inline const LatticeBlocks::Block* block_for(const LatticeBlocks* blocks, std::u
   return &blocks->blocks[static_cast<std::size_t>(blocks->block[s])];
 }
 
+// Per-point fields of a branched system, for colouring a plant: its branch order and its distance along the
+// tree from the start (in unit steps; the caller scales them with the curve).
+struct TreeFields {
+  std::vector<std::int32_t> depth;  // '[' open when the point was drawn
+  std::vector<double> root_distance;
+};
+
 template <class Heading>
 struct PathTurtle {
+  struct State {
+    Vec2 pos;
+    Heading heading;
+    double walked;
+  };
   const Compiled& c;
   Heading heading;
   const LatticeBlocks* blocks;  // null for free headings
   Polyline& out;
   Progress& reporter;
   double predicted_points;
+  TreeFields* tree = nullptr;  // filled when given
   Vec2 pos{};
   bool path_open = false;
-  std::vector<std::pair<Vec2, Heading>> saved;
+  double walked = 0;  // unit steps from the start along the tree
+  std::vector<State> saved;
+
+  void add_point(Vec2 p) {
+    out.points.push_back(p);
+    if (tree != nullptr) {
+      tree->depth.push_back(static_cast<std::int32_t>(saved.size()));
+      tree->root_distance.push_back(walked);
+    }
+  }
 
   void progress() { reporter.step(static_cast<double>(out.points.size()) / predicted_points); }
 
@@ -62,9 +84,12 @@ struct PathTurtle {
       if (const LatticeBlocks::Block* b = block_for(blocks, s, remaining)) {
         const std::vector<Vec2>& pts = b->points[static_cast<std::size_t>(heading.k)];
         if (!pts.empty()) {
-          if (!path_open) out.points.push_back(pos);
+          if (!path_open) add_point(pos);
           path_open = true;
-          for (const Vec2& p : pts) out.points.push_back(pos + p);
+          for (const Vec2& p : pts) {
+            walked += 1;  // a block is a run of unit steps
+            add_point(pos + p);
+          }
           pos = out.points.back();
         }
         heading.k = heading.table->rotate(heading.k, b->turn);
@@ -80,29 +105,32 @@ struct PathTurtle {
         break;
       case Action::Draw:
         if (!path_open) {
-          out.points.push_back(pos);
+          add_point(pos);
           path_open = true;
         }
         pos += heading.forward();
-        out.points.push_back(pos);
+        walked += 1;
+        add_point(pos);
         break;
       case Action::Move:
         out.close_path();
         path_open = false;
         pos += heading.forward();
+        walked += 1;
         break;
       case Action::Turn:
         heading.rotate(s);
         break;
       case Action::Push:
-        saved.emplace_back(pos, heading);
+        saved.push_back({pos, heading, walked});
         break;
       case Action::Pop:
         if (saved.empty()) throw Error("option 'axiom'/'rules': ']' without a matching '['");
         out.close_path();
         path_open = false;
-        pos = saved.back().first;
-        heading = saved.back().second;
+        pos = saved.back().pos;
+        heading = saved.back().heading;
+        walked = saved.back().walked;
         saved.pop_back();
         break;
     }

@@ -220,3 +220,20 @@ TEST(Grammar, ValidationNamesTheField) {
   EXPECT_NE(message(Grammar{.axiom = "F", .shrink = 0}).find("'shrink'"), std::string::npos);
   EXPECT_NE(message(Grammar{.axiom = "F", .start_angles = {}}).find("'start_angle'"), std::string::npos);
 }
+
+TEST(Turtle, BranchedSystemsCarryDepthAndRootDistance) {
+  // F[+F]F: a stem of two steps with a branch at its middle; normalised, the stem runs (0,0) → (1,0). The
+  // branch continues the first path; the stem's second step starts a new one at (1/2, 0).
+  const Polyline c = turtle2d(Grammar{.axiom = "F[+F]F", .angle = 90}, {.level = 0}, no_progress());
+  ASSERT_EQ(c.points.size(), 5u);
+  const Field* depth = c.point_fields.find("depth");
+  const Field* root = c.point_fields.find("root_distance");
+  ASSERT_NE(depth, nullptr);
+  ASSERT_NE(root, nullptr);
+  const std::vector<std::int32_t> want_depth{0, 0, 1, 0, 0};
+  const std::vector<double> want_root{0, 0.5, 1, 0.5, 1};  // unit steps scaled by the normalisation
+  EXPECT_EQ(std::vector<std::int32_t>(depth->ints().begin(), depth->ints().end()), want_depth);
+  EXPECT_EQ(std::vector<double>(root->reals().begin(), root->reals().end()), want_root);
+  // Unbranched curves stay as they were: only the level.
+  EXPECT_EQ(turtle2d(table1::dragon(), {.level = 5}, no_progress()).point_fields.list.size(), 1u);
+}
