@@ -21,6 +21,28 @@ bool close(double a, double b, double tol) {
   return std::abs(a - b) <= tol * std::max({1.0, std::abs(a), std::abs(b)});
 }
 
+// Where values differ: how many elements, the first, and the largest difference.
+struct Differences {
+  std::size_t count = 0, first = 0, largest_at = 0;
+  double largest = -1;
+  void add(std::size_t element, double difference) {
+    if (count == 0) first = element;
+    if (count == 0 || element != last) ++count;
+    if (!(difference <= largest)) largest = difference, largest_at = element;  // NaN counts as largest
+    last = element;
+  }
+  // "3 of 40 points, the largest difference 0.25 at point 7" (1-based, as c:point(i) counts).
+  std::string summary(std::size_t total, const char* element) const {
+    std::string s = std::to_string(count) + " of " + std::to_string(total) + " " + element + "s";
+    if (count > 1)
+      s += ", the largest difference " + num(largest) + " at " + element + " " + std::to_string(largest_at + 1);
+    return s;
+  }
+
+ private:
+  std::size_t last = 0;
+};
+
 struct Report {
   std::vector<std::string> lines;
   std::size_t max;
@@ -43,13 +65,18 @@ void compare_fields(const char* kind, const std::map<std::string, io::FieldValue
       r.add(std::string(kind) + " field '" + name + "' has a different size");
       continue;
     }
-    for (std::size_t i = 0; i < fa.values.size() && !r.full(); ++i)
-      if (!close(fa.values[i], fb.values[i], tol)) {
-        r.add(std::string(kind) + " field '" + name + "' differs at tuple " +
-              std::to_string(i / static_cast<std::size_t>(fa.components)) + ": " + num(fa.values[i]) + " vs " +
-              num(fb.values[i]));
-        break;
-      }
+    Differences d;
+    const std::size_t k = static_cast<std::size_t>(fa.components);
+    for (std::size_t i = 0; i < fa.values.size(); ++i)
+      if (!close(fa.values[i], fb.values[i], tol)) d.add(i / k, std::abs(fa.values[i] - fb.values[i]));
+    if (d.count > 0) {
+      const std::size_t first = d.first * k;
+      std::string values;
+      for (std::size_t c = 0; c < k; ++c)
+        values += (c ? ", " : "") + num(fa.values[first + c]) + " vs " + num(fb.values[first + c]);
+      r.add(std::string(kind) + " field '" + name + "' differs at " + d.summary(fa.values.size() / k, "tuple") +
+            "; the first, tuple " + std::to_string(d.first + 1) + ": " + values);
+    }
   }
   for (const auto& [name, fb] : b)
     if (!a.contains(name)) r.add(std::string(kind) + " field '" + name + "' only in the second file");
@@ -62,7 +89,7 @@ std::vector<std::size_t> cell_of(const io::Dataset& d, std::size_t i) {
           d.cell_points.begin() + static_cast<std::ptrdiff_t>(d.cell_ends[i])};
 }
 
-// "(0, 1, 2)", at most 8 ids shown.
+// "(0, 1, 2)", at most 8 ids shown: point ids as the file stores them (0-based, as ParaView shows them).
 std::string ids_text(const std::vector<std::size_t>& ids) {
   std::string s = "(";
   for (std::size_t k = 0; k < ids.size() && k < 8; ++k) s += (k ? ", " : "") + std::to_string(ids[k]);
@@ -73,17 +100,21 @@ std::string ids_text(const std::vector<std::size_t>& ids) {
 
 std::vector<std::string> dataset_diff(const io::Dataset& a, const io::Dataset& b, double tol, std::size_t max_reports) {
   Report r{{}, max_reports};
-  if (a.points.size() != b.points.size())
+  if (a.points.size() != b.points.size()) {
     r.add("point count differs: " + std::to_string(a.points.size()) + " vs " + std::to_string(b.points.size()));
-  else
-    for (std::size_t i = 0; i < a.points.size() && !r.full(); ++i)
+  } else {
+    Differences d;
+    for (std::size_t i = 0; i < a.points.size(); ++i)
       for (int k = 0; k < 3; ++k)
-        if (!close(a.points[i][k], b.points[i][k], tol)) {
-          r.add("point " + std::to_string(i) + " differs: (" + num(a.points[i][0]) + ", " + num(a.points[i][1]) + ", " +
-                num(a.points[i][2]) + ") vs (" + num(b.points[i][0]) + ", " + num(b.points[i][1]) + ", " +
-                num(b.points[i][2]) + ")");
-          break;
-        }
+        if (!close(a.points[i][k], b.points[i][k], tol)) d.add(i, std::abs(a.points[i][k] - b.points[i][k]));
+    if (d.count > 0) {
+      const auto& p = a.points[d.first];
+      const auto& q = b.points[d.first];
+      r.add("points differ at " + d.summary(a.points.size(), "point") + "; the first, point " +
+            std::to_string(d.first + 1) + ": (" + num(p[0]) + ", " + num(p[1]) + ", " + num(p[2]) + ") vs (" +
+            num(q[0]) + ", " + num(q[1]) + ", " + num(q[2]) + ")");
+    }
+  }
   if (a.cell_ends.size() != b.cell_ends.size())
     r.add("cell count differs: " + std::to_string(a.cell_ends.size()) + " vs " + std::to_string(b.cell_ends.size()));
   else if (a.shapes != b.shapes)
@@ -91,7 +122,7 @@ std::vector<std::string> dataset_diff(const io::Dataset& a, const io::Dataset& b
   else
     for (std::size_t i = 0; i < a.cell_ends.size(); ++i)
       if (cell_of(a, i) != cell_of(b, i)) {
-        r.add("cell " + std::to_string(i) + " differs: points " + ids_text(cell_of(a, i)) + " vs " +
+        r.add("cell " + std::to_string(i + 1) + " differs: points " + ids_text(cell_of(a, i)) + " vs " +
               ids_text(cell_of(b, i)));
         break;
       }

@@ -32,10 +32,12 @@ TEST(DatasetDiff, SameDatasetsMatch) {
 TEST(DatasetDiff, FirstDifferingPointFieldValueNamesFieldAndTuple) {
   io::Dataset b = base();
   b.point_fields["color"].values[3] = 1.75;  // tuple 1, component 1
-  b.point_fields["color"].values[6] = 9;     // tuple 3: only the first difference of a field is reported
+  b.point_fields["color"].values[6] = 9;     // tuple 3: one summary line per field, tuples counted from 1
   const auto d = analysis::dataset_diff(base(), b, 1e-12);
   ASSERT_EQ(d.size(), 1u);
-  EXPECT_EQ(d[0], "point field 'color' differs at tuple 1: 1.5 vs 1.75");
+  EXPECT_EQ(d[0],
+            "point field 'color' differs at 2 of 4 tuples, the largest difference 6 at tuple 4; the first, tuple 2: "
+            "1 vs 1, 1.5 vs 1.75");
 }
 
 TEST(DatasetDiff, CellFieldDifference) {
@@ -43,7 +45,7 @@ TEST(DatasetDiff, CellFieldDifference) {
   b.cell_fields["path"].values[1] = 2;
   const auto d = analysis::dataset_diff(base(), b, 1e-12);
   ASSERT_EQ(d.size(), 1u);
-  EXPECT_EQ(d[0], "cell field 'path' differs at tuple 1: 1 vs 2");
+  EXPECT_EQ(d[0], "cell field 'path' differs at 1 of 2 tuples; the first, tuple 2: 1 vs 2");
 }
 
 TEST(DatasetDiff, ToleranceIsRelativeForLargeValues) {
@@ -59,7 +61,7 @@ TEST(DatasetDiff, DifferingCellsAreNamed) {
   b.cell_points = {0, 1, 3, 2};
   const auto d = analysis::dataset_diff(base(), b, 1e-12);
   ASSERT_EQ(d.size(), 1u);
-  EXPECT_EQ(d[0], "cell 1 differs: points (2, 3) vs (3, 2)");
+  EXPECT_EQ(d[0], "cell 2 differs: points (2, 3) vs (3, 2)");  // cells from 1; point ids as stored
 }
 
 TEST(DatasetDiff, DifferentCellSplitIsACellDifference) {
@@ -67,7 +69,7 @@ TEST(DatasetDiff, DifferentCellSplitIsACellDifference) {
   b.cell_ends = {3, 4};
   const auto d = analysis::dataset_diff(base(), b, 1e-12);
   ASSERT_EQ(d.size(), 1u);
-  EXPECT_EQ(d[0], "cell 0 differs: points (0, 1) vs (0, 1, 2)");
+  EXPECT_EQ(d[0], "cell 1 differs: points (0, 1) vs (0, 1, 2)");
 }
 
 TEST(DatasetDiff, DifferentCellKinds) {
@@ -109,7 +111,7 @@ TEST(DatasetDiff, MovedPointPrintsAllDigits) {
   b.points[2][2] = 0.1;
   const auto d = analysis::dataset_diff(base(), b, 1e-12);
   ASSERT_EQ(d.size(), 1u);
-  EXPECT_EQ(d[0], "point 2 differs: (1, 1, 0) vs (1, 1, 0.10000000000000001)");
+  EXPECT_EQ(d[0], "points differ at 1 of 4 points; the first, point 3: (1, 1, 0) vs (1, 1, 0.10000000000000001)");
 }
 
 TEST(DatasetDiff, AtMostMaxReports) {
@@ -117,9 +119,12 @@ TEST(DatasetDiff, AtMostMaxReports) {
   for (auto& p : b.points) p[0] += 1;
   b.point_fields["color"].values[0] = 7;
   b.cell_fields["path"].values[0] = 7;
-  EXPECT_EQ(analysis::dataset_diff(base(), b, 1e-12, 10).size(), 6u);  // 4 points and 2 fields
+  // One summary line for the points (not one per point) and one per field.
+  const auto all = analysis::dataset_diff(base(), b, 1e-12, 10);
+  ASSERT_EQ(all.size(), 3u);
+  EXPECT_EQ(all[0].rfind("points differ at 4 of 4 points, the largest difference 1 at point 1; the first, point 1", 0),
+            0u);
   const auto two = analysis::dataset_diff(base(), b, 1e-12, 2);
   ASSERT_EQ(two.size(), 2u);
-  EXPECT_EQ(two[0].rfind("point 0 differs", 0), 0u);
-  EXPECT_EQ(two[1].rfind("point 1 differs", 0), 0u);
+  EXPECT_EQ(two[1].rfind("point field 'color' differs", 0), 0u);
 }
