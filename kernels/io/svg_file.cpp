@@ -61,7 +61,11 @@ void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
   std::size_t written = 0;
   for (std::size_t i = 0; i < c.paths(); ++i) {
     char cmd = 'M';
-    for (Vec2 p : c.path(i)) {
+    // A closed path (back at its start) ends with Z, so renderers join its last corner like the others.
+    auto path = c.path(i);
+    const bool closed = path.size() > 2 && path.front() == path.back();
+    if (closed) path = path.first(path.size() - 1);
+    for (Vec2 p : path) {
       // Rounding noise around zero (-1.36e-19 on a unit curve) is written as the 0 it means.
       p = {std::abs(p.x) < noise ? 0.0 : p.x, std::abs(p.y) < noise ? 0.0 : p.y};
       if (++written % (1u << 20) == 0)
@@ -73,6 +77,7 @@ void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
       cmd = cmd == 'M' ? 'L' : ' ';
       if (s.size() > (1u << 20)) flush();
     }
+    if (closed) s += 'Z';
   }
   s += "\"/>\n</g>\n</svg>\n";
   flush();

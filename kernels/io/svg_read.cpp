@@ -1,4 +1,4 @@
-// Reading SVG path data back (selfsim diff / info): the absolute M/L path data that write_svg produces, one
+// Reading SVG path data back (selfsim diff / info): the absolute M/L/Z path data that write_svg produces, one
 // polyline cell per subpath, from every <path d="..."> element.
 //
 // The file is streamed in 64 KiB chunks (a regular file only, read up to its size when opened: see
@@ -77,8 +77,16 @@ class PathData {
       open_ = true;
     } else if (c == 'L') {
       if (!open_) throw Error("the path data does not start with M");
+    } else if (c == 'Z' || c == 'z') {  // closes the subpath: back to its first point
+      if (!open_) throw Error("the path data does not start with M");
+      if (pending_) throw Error("the path data has an odd number of coordinates in a subpath");
+      if (points_in_subpath_ == 0) throw Error("the path data closes a subpath without coordinates");
+      d_.cell_points.push_back(d_.points.size());
+      d_.points.push_back(d_.points[subpath_first_]);
+      ++points_in_subpath_;
+      end_subpath();
     } else if (letter) {
-      throw Error(std::string("unsupported path command '") + c + "' (only absolute M and L are read)");
+      throw Error(std::string("unsupported path command '") + c + "' (only absolute M, L and Z are read)");
     } else {
       throw Error("unexpected character '" + one_line(std::string(1, c)) + "' in the path data");
     }
@@ -97,7 +105,7 @@ class PathData {
     for (char& ch : w) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
     if (w == "nan" || w == "inf" || w == "infinity")
       throw Error("the path data holds a non-finite number ('" + w + "')");
-    if (w.size() == 1) throw Error("unsupported path command '" + w + "' (only absolute M and L are read)");
+    if (w.size() == 1) throw Error("unsupported path command '" + w + "' (only absolute M, L and Z are read)");
     throw Error("unexpected text '" + one_line(w) + "' in the path data");
   }
 
@@ -121,6 +129,7 @@ class PathData {
     pending_ = false;
     if (d_.points.size() >= read_budget_bytes() / 40)
       throw Error("the path data holds more points than the reading limit");
+    if (points_in_subpath_ == 0) subpath_first_ = d_.points.size();
     d_.cell_points.push_back(d_.points.size());
     d_.points.push_back({x_, v, 0});
     ++points_in_subpath_;
@@ -138,6 +147,7 @@ class PathData {
   Dataset& d_;
   std::string number_, word_;
   bool open_ = false, pending_ = false;  // a subpath started; an x waits for its y
+  std::size_t subpath_first_ = 0;        // index of the current subpath's first point
   double x_ = 0;
   std::size_t points_in_subpath_ = 0;
 };

@@ -107,3 +107,17 @@ TEST(SaveSvg, PhysicalSizeAndRoundingNoise) {
   EXPECT_EQ(text.find("e-19"), std::string::npos);
   EXPECT_THROW(io::save(&c, dir.path / "bad.svg", {.size = 150, .size_unit = "furlongs"}, no_progress()), Error);
 }
+
+TEST(SaveSvg, ClosedPathsEndWithZAndReadBackWhole) {
+  TempDir dir;
+  const Polyline square = Polyline::single({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}});
+  const fs::path f = dir.path / "square.svg";
+  io::save(&square, f, {}, no_progress());
+  std::ifstream in(f);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find(" 0 1Z\""), std::string::npos) << "the closing corner is a Z, not a repeated point";
+  const io::Dataset d = io::read_dataset(f);
+  ASSERT_EQ(d.points.size(), 5u);
+  EXPECT_EQ(d.points[4], (std::array<double, 3>{0, 0, 0}));
+  EXPECT_EQ(d.cell_ends, (std::vector<std::size_t>{5}));
+}
