@@ -9,6 +9,7 @@
 #include "interpreter/parse_text.h"
 #include "interpreter/run_context.h"
 #include "interpreter/value_types.h"
+#include "kernels/geom/lower_case.h"
 #include "kernels/io/colour.h"
 #include "kernels/io/save.h"
 
@@ -25,10 +26,8 @@ io::SaveOptions read_save_options(lua_State* L, int index, const io::Format& f) 
   // A misspelt colour name gets a suggestion here; SaveOptions::validate refuses any other non-colour.
   auto colour = [&](const char* key, const std::string& fallback) {
     const std::string value = o.string(key, fallback);
-    std::string lower = value;
-    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (!value.empty() && value != "none" && !io::is_colour(value))
-      if (const std::string near = suggestion(lower, io::colour_names()); !near.empty())
+      if (const std::string near = suggestion(lower_case(value), io::colour_names()); !near.empty())
         throw Error(std::string("option '") + key + "': unknown colour '" + shown_text(value) + "' (did you mean '" +
                     near + "'?)");
     return value;

@@ -12,6 +12,7 @@
 #include "interpreter/options_reader.h"
 #include "interpreter/run_context.h"
 #include "interpreter/value_types.h"
+#include "kernels/geom/lower_case.h"
 #include "kernels/io/dataset_values.h"
 #include "kernels/io/read.h"
 #include "kernels/io/regular_file.h"
@@ -29,8 +30,7 @@ void check_name(const std::string& name) {
     throw Error("'" + shown_text(name) + "' must be a file name relative to the recipe's folder");
   for (const auto& part : rel)
     if (part == "..") throw Error("'" + shown_text(name) + "' leads outside the recipe's folder ('..' is not allowed)");
-  std::string ext = rel.extension().string();
-  for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));  // x.STL too
+  const std::string ext = lower_case(rel.extension().string());  // x.STL too
   if (std::find(std::begin(loadable), std::end(loadable), ext) == std::end(loadable))
     throw Error("cannot load '" + shown_text(name) +
                 "': expected one of: " + quoted_list({std::begin(loadable), std::end(loadable)}));

@@ -2,15 +2,12 @@
 
 #include <string>
 
+#include "kernels/geom/all_finite.h"
 #include "kernels/geom/error.h"
 
 namespace selfsim {
 
-bool Mesh::finite() const {
-  bool ok = true;  // no early exit, so the loop stays branch-free
-  for (const Vec3& p : points) ok &= (p.x - p.x == 0) & (p.y - p.y == 0) & (p.z - p.z == 0);
-  return ok;
-}
+bool Mesh::finite() const { return all_finite<Vec3>(points); }
 
 std::size_t Mesh::bytes() const {
   return points.capacity() * sizeof(Vec3) + triangles.capacity() * sizeof(Triangle) + point_fields.bytes() +

@@ -1,14 +1,8 @@
 #include "kernels/geom/polyline.h"
 
+#include "kernels/geom/all_finite.h"
+
 namespace selfsim {
-
-namespace {
-
-// x - x is 0 for a finite x and NaN otherwise: no branch per coordinate.
-inline bool finite_bits(Vec2 p) { return (p.x - p.x == 0) & (p.y - p.y == 0); }
-inline bool finite_bits(Vec3 p) { return (p.x - p.x == 0) & (p.y - p.y == 0) & (p.z - p.z == 0); }
-
-}  // namespace
 
 template <class V>
 PolylineT<V> PolylineT<V>::single(const std::vector<V>& pts) {
@@ -40,9 +34,7 @@ double PolylineT<V>::length() const {
 
 template <class V>
 bool PolylineT<V>::finite() const {
-  bool ok = true;  // no early exit, so the loop stays branch-free
-  for (const V& p : points) ok &= finite_bits(p);
-  return ok;
+  return all_finite<V>(points);
 }
 
 template <class V>

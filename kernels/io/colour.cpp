@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "kernels/geom/lower_case.h"
 namespace selfsim::io {
 
 const std::vector<std::string>& colour_names() {
@@ -162,10 +163,8 @@ bool is_colour(const std::string& text) {
     return (text.size() == 4 || text.size() == 7) && std::all_of(text.begin() + 1, text.end(), [](char c) {
              return std::isxdigit(static_cast<unsigned char>(c));
            });
-  std::string lower = text;
-  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   const auto& names = colour_names();
-  return std::find(names.begin(), names.end(), lower) != names.end();
+  return std::find(names.begin(), names.end(), lower_case(text)) != names.end();
 }
 
 }  // namespace selfsim::io

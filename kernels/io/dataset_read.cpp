@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "kernels/geom/error.h"
+#include "kernels/geom/lower_case.h"
 #include "kernels/io/read.h"
 #include "kernels/io/read_error.h"
 #include "kernels/io/regular_file.h"
@@ -19,8 +20,7 @@ namespace {
 
 Dataset read_by_extension(const std::filesystem::path& file, std::string ext) {
   try {
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    ext = lower_case(std::move(ext));
     const bool vtk = ext == ".vtp" || ext == ".vtu", mesh = ext == ".stl" || ext == ".obj" || ext == ".ply";
     if (vtk || mesh || ext == ".svg") {
       // selfsim never writes an empty file, and two broken files must never compare as "same".

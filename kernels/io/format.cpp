@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "kernels/geom/error.h"
+#include "kernels/geom/lower_case.h"
 #include "kernels/io/writers.h"
 
 namespace selfsim::io {
@@ -52,8 +53,7 @@ const Format* find_format(std::string_view extension) {
 const Format& format_for(const std::string& name, ValueKind k) {
   const std::filesystem::path p(name);
   const std::string file = p.filename().string();
-  std::string ext = p.extension().string();
-  for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));  // x.VTP too
+  const std::string ext = lower_case(p.extension().string());  // x.VTP too
   std::vector<std::string> able;
   for (const Format& f : formats())
     if (f.holds(k)) able.push_back(f.extension);

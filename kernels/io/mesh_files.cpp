@@ -1,22 +1,63 @@
 // .stl (binary), .obj and .ply (binary) meshes, written by OpenMesh's own writers so that what slicers and
-// Blender read is what OpenMesh, a reference implementation of these formats, writes. The conversion is in
-// openmesh_mesh.cpp. Fields are not written: these formats have no place for them (.vtp and .vtu do).
+// Blender read is what OpenMesh, a reference implementation of these formats, writes. to_openmesh below is
+// the one place selfsim's Mesh meets OpenMesh's half-edge mesh; OpenMesh's headers stay in this file (they
+// are heavy). Fields are not written: these formats have no place for them (.vtp and .vtu do).
 // OpenMesh's writers take points as single-precision floats, so all three hold float32 coordinates: plenty
 // for printing and rendering; .vtp and .vtu keep the doubles.
 #include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/System/omstream.hh>
 #include <cmath>
 #include <limits>
 #include <ostream>
 #include <streambuf>
+#include <string>
+#include <vector>
 
 #include "kernels/geom/check.h"
 #include "kernels/geom/error.h"
-#include "kernels/io/openmesh_mesh.h"
 #include "kernels/io/writers.h"
 
 namespace selfsim::io {
 
 namespace {
+
+struct OpenMeshTraits : OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;  // selfsim's coordinates are doubles; keep them up to the writer
+  using Normal = OpenMesh::Vec3d;
+};
+using OMesh = OpenMesh::TriMesh_ArrayKernelT<OpenMeshTraits>;
+
+// OpenMesh prints progress and complaints to the terminal; selfsim reports through its own messages.
+void quiet_openmesh() {
+  static const bool done = [] {
+    omlog().disable();
+    omout().disable();
+    omerr().disable();
+    return true;
+  }();
+  (void)done;
+}
+
+// m as an OpenMesh mesh. OpenMesh holds only manifold meshes: throws Error naming the first triangle it
+// refuses (an edge of three faces, a bowtie, a flipped neighbour) rather than dropping it.
+OMesh to_openmesh(const Mesh& m) {
+  quiet_openmesh();
+  OMesh om;
+  om.reserve(m.points.size(), 3 * m.faces() / 2 + m.points.size(), m.faces());
+  std::vector<OMesh::VertexHandle> v;
+  v.reserve(m.points.size());
+  for (const Vec3& p : m.points) v.push_back(om.add_vertex(OMesh::Point(p.x, p.y, p.z)));
+  for (std::size_t f = 0; f < m.faces(); ++f) {
+    const Triangle& t = m.triangles[f];
+    if (!om.add_face(v[t[0]], v[t[1]], v[t[2]]).is_valid())
+      throw Error(
+          "triangle " + std::to_string(f + 1) +
+          " makes the mesh non-manifold (an edge of three faces, two faces meeting at a point, or a "
+          "flipped neighbour): STL, OBJ and PLY are written through OpenMesh, which holds manifold meshes only");
+  }
+  return om;
+}
 
 // An ostream's buffer that passes its bytes on to an OutputFile and checks cancellation every megabyte,
 // so OpenMesh's writers stream into our atomic, confined file and a long write can still be stopped.

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <thread>
 
+#include "kernels/geom/all_finite.h"
 #include "kernels/geom/budget.h"
 #include "kernels/geom/check.h"
 #include "kernels/geom/count_text.h"
@@ -37,13 +38,6 @@ Error non_finite(int level) {
   return Error("level " + std::to_string(level) + " has non-finite coordinates (shrink^level overflows)");
 }
 
-// True if every point of p is finite; no early exit, so the loop stays branch-free.
-bool all_finite(const Vec2* p, std::size_t n) {
-  bool ok = true;
-  for (std::size_t i = 0; i < n; ++i) ok &= (p[i].x - p[i].x == 0) & (p[i].y - p[i].y == 0);
-  return ok;
-}
-
 // One thread, any grammar: draws in unit steps, then places every point.
 template <class Heading>
 void draw_sequential(const Grammar& g, const TurtleOptions& opt, const Compiled& c, Heading heading,
@@ -68,7 +62,7 @@ void draw_sequential(const Grammar& g, const TurtleOptions& opt, const Compiled&
     out.point_fields.set(int_field("depth", std::move(tree.depth)));
     out.point_fields.set(real_field("root_distance", std::move(tree.root_distance)));
   }
-  if (!all_finite(out.points.data(), out.points.size())) throw non_finite(opt.level);
+  if (!out.finite()) throw non_finite(opt.level);
 }
 
 // Several threads, each drawing its chunks straight into their slices, already placed (the split knows
@@ -81,7 +75,7 @@ void draw_parallel(const Grammar& g, const TurtleOptions& opt, const Compiled& c
   out.points.resize(split.points);
   Vec2* points = out.points.data();
   points[0] = place(Vec2{});
-  if (!all_finite(points, 1)) throw non_finite(opt.level);
+  if (!finite_bits(points[0])) throw non_finite(opt.level);
   const std::thread::id caller = std::this_thread::get_id();
   std::atomic<std::size_t> done{0};
   // One chunk per task: the split (not the thread count) decides what each task draws.
@@ -92,7 +86,8 @@ void draw_parallel(const Grammar& g, const TurtleOptions& opt, const Compiled& c
                          progress};
       rewrite(c, std::string_view(split.symbols).substr(k.begin, k.end - k.begin), remaining, turtle);
       if (turtle.cursor != points + k.first_point + k.points) throw Error("internal error: a chunk drew a wrong count");
-      if (!all_finite(points + k.first_point, k.points)) throw non_finite(opt.level);  // while the slice is in cache
+      if (!all_finite(std::span<const Vec2>(points + k.first_point, k.points)))
+        throw non_finite(opt.level);  // while the slice is in cache
       const std::size_t total = done += k.points;
       if (std::this_thread::get_id() == caller) progress.fraction(static_cast<double>(total) / split.points);
       if (progress.cancelled()) throw Cancelled();

@@ -1,0 +1,1 @@
+load("load_bad_face.obj")

@@ -1,0 +1,1 @@
+load("load_nan.stl")
