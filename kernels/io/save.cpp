@@ -1,9 +1,6 @@
 #include "kernels/io/save.h"
 
-#include <algorithm>
-#include <cctype>
 #include <cmath>
-#include <string_view>
 
 #include "kernels/geom/error.h"
 #include "kernels/io/colour.h"
