@@ -72,9 +72,10 @@ int main(int argc, char** argv) {
   std::vector<File> files;
   files.push_back({"dragon3", seed_curve("F", "F+F-", 90, 3, true), {}});
   files.push_back({"koch2", seed_curve("F", "F+F--F+F", 60, 2, true), {}});
-  files.push_back({"branches", seed_curve("F", "F[+F]F[-F]", 30, 1, false), {.stroke = "black", .fill = "#a8dadc"}});
   files.push_back(
-      {"square", Polyline::single({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}}, 0), {.stroke_width = 2, .size = 64}});
+      {"branches", seed_curve("F", "F[+F]F[-F]", 30, 1, false), {.stroke = {"black"}, .fill = {"#a8dadc"}}});
+  files.push_back(
+      {"square", Polyline::single({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}}, 0), {.stroke_width = {2}, .size = 64}});
   for (const char* ext : {".vtp", ".svg"}) {
     const fs::path sub = dir / (ext + 1);
     fs::create_directories(sub);

@@ -8,6 +8,7 @@
 #include "interpreter/options_reader.h"
 #include "interpreter/parse_text.h"
 #include "interpreter/run_context.h"
+#include "interpreter/style_reader.h"
 #include "interpreter/value_types.h"
 #include "kernels/geom/lower_case.h"
 #include "kernels/io/colour.h"
@@ -23,18 +24,18 @@ io::SaveOptions read_save_options(lua_State* L, int index, const io::Format& f) 
   Options o(L, index);
   io::SaveOptions s;
   auto has = [&](const char* name) { return std::find(f.options.begin(), f.options.end(), name) != f.options.end(); };
-  // A misspelt colour name gets a suggestion here; SaveOptions::validate refuses any other non-colour.
-  auto colour = [&](const char* key, const std::string& fallback) {
-    const std::string value = o.string(key, fallback);
-    if (!value.empty() && value != "none" && !io::is_colour(value))
-      if (const std::string near = suggestion(lower_case(value), io::colour_names()); !near.empty())
-        throw Error(std::string("option '") + key + "': unknown colour '" + shown_text(value) + "' (did you mean '" +
-                    near + "'?)");
-    return value;
-  };
-  if (has("stroke")) s.stroke = colour("stroke", s.stroke);
-  if (has("stroke_width")) s.stroke_width = o.number("stroke_width", s.stroke_width);
-  if (has("fill")) s.fill = colour("fill", s.fill);
+  if (has("stroke")) {  // the style options: one value each, or a palette cycled over a group's members
+    StyleOptions style = read_style(L, o, true);
+    // Given options override the style a curve carries in its fields (svg_style.h), so they are recorded.
+    auto take = [&](auto& from, auto& to, const char* name) {
+      if (from.empty()) return;
+      to = std::move(from);
+      s.given.push_back(name);
+    };
+    take(style.stroke, s.stroke, "stroke");
+    take(style.stroke_width, s.stroke_width, "stroke_width");
+    take(style.fill, s.fill, "fill");
+  }
   // size = 800 (pixels) or size = "150mm" (also cm, in): a physical size for plotters.
   if (has("size")) {
     const int type = o.push("size");
@@ -62,8 +63,12 @@ io::SaveOptions read_save_options(lua_State* L, int index, const io::Format& f) 
 int save(lua_State* L) {
   return call_kernel(L, "save", [&] {
     RunContext& run = RunContext::of(L);
+    if (lua_type(L, 1) == LUA_TTABLE) {  // save({ a, b }, ...): the group of the list
+      push_group(L, 1);
+      lua_replace(L, 1);
+    }
     const std::optional<AnyValue> v = test_any(L, 1);
-    if (!v) throw Error("argument 1 must be a curve or a mesh, got " + describe(L, 1));
+    if (!v) throw Error("argument 1 must be a curve, a mesh or a list of curves, got " + describe(L, 1));
     if (lua_type(L, 2) != LUA_TSTRING) throw Error("argument 2 must be a file name, got " + describe(L, 2));
     const std::string name = text_value(L, 2, "argument 2 (the file name)");
     const io::Format& format = io::format_for(name, io::kind_of(v->ref()));

@@ -3,6 +3,9 @@
 
 #include <lua.hpp>
 
+#include "kernels/geom/vec2.h"
+#include "kernels/geom/vec3.h"
+
 namespace selfsim::interp {
 
 void open_curve(lua_State* L);       // curve_value.cpp: Curve, polyline{}, polygon{}
@@ -11,6 +14,13 @@ void open_lsystem(lua_State* L);     // bind_lsystem.cpp: lsystem{}
 void open_substitute(lua_State* L);  // bind_substitute.cpp: substitute{}
 void open_io(lua_State* L);          // bind_io.cpp: save(), param()
 void open_load(lua_State* L);        // bind_load.cpp: load()
+void open_group(lua_State* L);       // bind_group.cpp: group{}, concat()
+
+// bind_group.cpp: pushes group{...} of the list at index (save({ a, b }, ...) uses it too).
+void push_group(lua_State* L, int index);
+// bind_group.cpp: c:reverse() for Curve (V = Vec2) and Curve3 (Vec3).
+template <class V>
+int curve_reverse(lua_State* L);
 
 inline void open_all(lua_State* L) {
   open_curve(L);
@@ -19,6 +29,7 @@ inline void open_all(lua_State* L) {
   open_substitute(L);
   open_io(L);
   open_load(L);
+  open_group(L);
 }
 
 }  // namespace selfsim::interp

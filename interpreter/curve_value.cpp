@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "interpreter/bindings.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
 #include "interpreter/point_reader.h"
@@ -99,11 +100,13 @@ void open_curve(lua_State* L) {
                                   {"length", curve_length<Polyline>},
                                   {"level", curve_level},
                                   {"point", curve_point<Polyline>},
-                                  {"transform", curve_transform}});
+                                  {"transform", curve_transform},
+                                  {"reverse", curve_reverse<Vec2>}});
   register_geometry<Polyline3>(L, {{"segments", curve_segments<Polyline3>},
                                    {"paths", curve_paths<Polyline3>},
                                    {"length", curve_length<Polyline3>},
-                                   {"point", curve_point<Polyline3>}});
+                                   {"point", curve_point<Polyline3>},
+                                   {"reverse", curve_reverse<Vec3>}});
   lua_register(L, "polyline", [](lua_State* S) { return make_polyline(S, "polyline", false); });
   lua_register(L, "polygon", [](lua_State* S) { return make_polyline(S, "polygon", true); });
 }

@@ -158,6 +158,10 @@ std::vector<std::string> Options::unread() {
   const int n = push_sorted_keys(L, index_);
   for (int i = 1; i <= n; ++i) {
     lua_rawgeti(L, -1, i);
+    if (lua_isinteger(L, -1) && lua_tointeger(L, -1) >= 1 && lua_tointeger(L, -1) <= positional_) {
+      lua_pop(L, 1);
+      continue;
+    }
     if (lua_type(L, -1) != LUA_TSTRING)
       throw Error("options must be named (key = value), got a value at key " + describe(L, -1));
     std::size_t len = 0;

@@ -43,6 +43,8 @@ class Options {
   Polyline curve(const char* key);
   // A Mesh value (null when absent).
   Held<Mesh> mesh(const char* key);
+  // Accepts the keys 1..n as positional entries the caller reads itself (group{ a, b, stroke = ... }).
+  void positional(lua_Integer n) { positional_ = n; }
   // Pushes the value at key (marking it read) and returns its Lua type; the caller pops it.
   int push(const char* key);
   // The keys no reader asked for, in sorted order.
@@ -55,6 +57,7 @@ class Options {
   lua_State* L;
   int index_;
   std::set<std::string> read_;
+  lua_Integer positional_ = 0;
   std::vector<std::string> missing_;  // "option 'level' is required (...)", in the order required
 };
 

@@ -48,6 +48,10 @@ void Fields::set(Field f) {
   list.push_back(std::move(f));
 }
 
+void Fields::erase(std::string_view name) {
+  std::erase_if(list, [&](const Field& f) { return f.name == name; });
+}
+
 std::size_t Fields::bytes() const {
   std::size_t n = 0;
   for (const Field& f : list) n += f.bytes();
@@ -73,6 +77,58 @@ void Fields::check(std::size_t count, const char* element) const {
       for (double v : f.reals())
         if (!std::isfinite(v)) throw Error(what + " has a non-finite value");
   }
+}
+
+namespace {
+
+bool same_tuple(const Field& a, const Field& b) {
+  for (int c = 0; c < a.components; ++c)
+    if (a.at(0, c) != b.at(0, c)) return false;
+  return true;
+}
+
+}  // namespace
+
+Fields join_fields(std::span<const Fields* const> parts, std::span<const std::size_t> counts,
+                   std::span<const std::size_t> skip, const Fields& defaults) {
+  std::vector<std::string> names;  // every name any part has, in order of first appearance
+  for (const Fields* part : parts)
+    for (const Field& f : part->list)
+      if (std::find(names.begin(), names.end(), f.name) == names.end()) names.push_back(f.name);
+  Fields out;
+  for (const std::string& name : names) {
+    std::vector<const Field*> sources;
+    for (const Fields* part : parts) {
+      const Field* f = part->find(name);
+      if (f == nullptr) f = defaults.find(name);
+      const bool fits = f != nullptr && (sources.empty() || (f->components == sources.front()->components &&
+                                                             f->scalar() == sources.front()->scalar()));
+      if (!fits) {
+        sources.clear();
+        break;
+      }
+      sources.push_back(f);
+    }
+    if (sources.empty()) continue;
+    const bool uniform = std::all_of(sources.begin(), sources.end(),
+                                     [&](const Field* f) { return f->uniform && same_tuple(*f, *sources.front()); });
+    Field joined{name, sources.front()->components, sources.front()->data, uniform};
+    if (!uniform)
+      std::visit(
+          [&](auto& values) {
+            values.clear();
+            std::size_t total = 0;
+            for (std::size_t p = 0; p < sources.size(); ++p) total += counts[p] - skip[p];
+            values.reserve(total * static_cast<std::size_t>(joined.components));
+            for (std::size_t p = 0; p < sources.size(); ++p)
+              for (std::size_t e = skip[p]; e < counts[p]; ++e)
+                for (int c = 0; c < joined.components; ++c)
+                  values.push_back(static_cast<std::decay_t<decltype(values[0])>>(sources[p]->at(e, c)));
+          },
+          joined.data);
+    out.list.push_back(std::move(joined));
+  }
+  return out;
 }
 
 }  // namespace selfsim

@@ -45,11 +45,19 @@ struct Fields {
   const Field* find(std::string_view name) const;
   // Attaches f, replacing a field of the same name.
   void set(Field f);
+  // Removes the field of that name, if there is one.
+  void erase(std::string_view name);
   bool empty() const { return list.empty(); }
   std::size_t bytes() const;
   // Throws Error naming the first field (on `element`s: "point", "cell") with a bad name, component count
   // or size for `count` elements, or a non-finite value.
   void check(std::size_t count, const char* element) const;
 };
+
+// The fields of elements joined from several parts, part p contributing its elements [skip[p], counts[p]) in
+// order. A field is kept when every part has it, or `defaults` holds one for the parts that lack it, with one
+// type and component count throughout; it stays uniform when every part's tuple is the same single one.
+Fields join_fields(std::span<const Fields* const> parts, std::span<const std::size_t> counts,
+                   std::span<const std::size_t> skip, const Fields& defaults);
 
 }  // namespace selfsim

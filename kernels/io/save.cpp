@@ -34,12 +34,16 @@ void check_mesh(const Mesh& m, const std::string& file) {
 
 void SaveOptions::validate() const {
   // Shown through one_line: a colour is recipe text, and may hold anything.
-  if (!is_colour(stroke))
-    throw Error("option 'stroke' must be a CSS colour name, #rgb or #rrggbb, got '" + shown(stroke) + "'");
-  if (!fill.empty() && fill != "none" && !is_colour(fill))
-    throw Error("option 'fill' must be a CSS colour name, #rgb, #rrggbb or 'none', got '" + shown(fill) + "'");
-  if (!(stroke_width > 0 && stroke_width < 1e6))
-    throw Error("option 'stroke_width' must be a positive number of pixels");
+  if (stroke.empty() || stroke_width.empty())
+    throw Error("options 'stroke' and 'stroke_width' need at least one value");
+  for (const std::string& c : stroke)
+    if (!is_colour(c))
+      throw Error("option 'stroke' must be a CSS colour name, #rgb or #rrggbb, got '" + shown(c) + "'");
+  for (const std::string& c : fill)
+    if (c != "none" && !is_colour(c))
+      throw Error("option 'fill' must be a CSS colour name, #rgb, #rrggbb or 'none', got '" + shown(c) + "'");
+  for (double w : stroke_width)
+    if (!(w > 0 && w < 1e6)) throw Error("option 'stroke_width' must be a positive number of pixels");
   if (size_unit.empty() && !(size >= 16 && size <= 100000)) throw Error("option 'size' must be in [16, 100000] pixels");
   if (size_unit != "" && size_unit != "mm" && size_unit != "cm" && size_unit != "in")
     throw Error("option 'size' takes the units mm, cm or in, got '" + shown(size_unit) + "'");

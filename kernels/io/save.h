@@ -15,12 +15,14 @@
 namespace selfsim::io {
 
 struct SaveOptions {
-  std::string stroke = "#1d3557";  // .svg: stroke colour
-  double stroke_width = 1;         // .svg: stroke width in screen pixels, whatever the curve's scale
-  std::string fill;                // .svg: fill colour with the even-odd rule; empty for no fill
-  double size = 800;               // .svg: width or height, whichever is larger, in size_unit
-  std::string size_unit;           // .svg: "" (pixels), "mm", "cm" or "in": a physical size for plotters
-  std::vector<std::string> given;  // the options the caller set, checked against the format's options
+  // .svg style, each one value or a palette cycled over a group's members (svg_style.h); given, they
+  // override the style a curve carries in its cell fields.
+  std::vector<std::string> stroke{"#1d3557"};  // stroke colours
+  std::vector<double> stroke_width{1};         // stroke widths in pixels (or size_unit), whatever the curve's scale
+  std::vector<std::string> fill;               // fill colours (or "none") with the even-odd rule; empty for none
+  double size = 800;                           // .svg: width or height, whichever is larger, in size_unit
+  std::string size_unit;                       // .svg: "" (pixels), "mm", "cm" or "in": a physical size for plotters
+  std::vector<std::string> given;              // the options the caller set, checked against the format's options
 
   // Throws Error naming the first bad field.
   void validate() const;

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "kernels/geom/error.h"
+#include "kernels/io/svg_style.h"
 #include "kernels/io/writers.h"
 
 namespace selfsim::io {
@@ -21,6 +22,9 @@ void put(std::string& s, double v) {
   s.append(buf, r.ptr);
 }
 
+const char* const overflow =
+    "the curve's extent and the options give a non-finite SVG size or stroke width (scale the curve)";
+
 }  // namespace
 
 void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress) {
@@ -33,9 +37,9 @@ void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
   extent = extent + Vec2{2 * margin, 2 * margin};
   const double px = opt.size / std::max(extent.x, extent.y);
   // Everything the header derives from the extent must be a number a viewer can read.
-  for (double v : {lo.x, lo.y + extent.y, extent.x * px, extent.y * px, opt.stroke_width / px})
-    if (!std::isfinite(v))
-      throw Error("the curve's extent and the options give a non-finite SVG size or stroke width (scale the curve)");
+  for (double v : {lo.x, lo.y + extent.y, extent.x * px, extent.y * px, 1 / px})
+    if (!std::isfinite(v)) throw Error(overflow);
+  const SvgStyles styles(c, opt);
 
   std::string s;  // written out every megabyte or so: memory stays flat whatever the curve
   auto flush = [&] {
@@ -53,13 +57,20 @@ void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
     s += ' ';
   }
   s.back() = '"';
-  s += ">\n<g transform=\"scale(1,-1)\">\n<path fill=\"" + (opt.fill.empty() ? std::string("none") : opt.fill) +
-       "\" fill-rule=\"evenodd\" stroke=\"" + opt.stroke + "\" stroke-width=\"";
-  put(s, opt.stroke_width / px);
-  s += "\" stroke-linejoin=\"round\" stroke-linecap=\"round\" d=\"";
+  s += ">\n<g transform=\"scale(1,-1)\" fill-rule=\"evenodd\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
   const double noise = 1e-12 * big;
   std::size_t written = 0;
+  PathStyle style;
+  // One <path> element per run of paths of one style: a group's member, or the whole of a plain curve.
   for (std::size_t i = 0; i < c.paths(); ++i) {
+    if (const PathStyle next = styles.at(i); i == 0 || !(next == style)) {
+      if (i > 0) s += "\"/>\n";
+      style = next;
+      s += "<path fill=\"" + style.fill + "\" stroke=\"" + style.stroke + "\" stroke-width=\"";
+      if (!std::isfinite(style.width / px)) throw Error(overflow);
+      put(s, style.width / px);
+      s += "\" d=\"";
+    }
     char cmd = 'M';
     // A closed path (back at its start) ends with Z, so renderers join its last corner like the others.
     auto path = c.path(i);
@@ -79,7 +90,7 @@ void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
     }
     if (closed) s += 'Z';
   }
-  s += "\"/>\n</g>\n</svg>\n";
+  s += "\"/>\n</g>\n</svg>\n";  // c has at least one path: save() refuses empty curves
   flush();
 }
 

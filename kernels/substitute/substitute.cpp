@@ -60,8 +60,7 @@ void SubstituteOptions::validate(std::size_t generator_segments) const {
 }
 
 Polyline substitute(const Polyline& path, const Polyline& generator, const SubstituteOptions& opt, Progress& progress) {
-  if (path.paths() != 1 || path.segments() < 1)
-    throw Error("option 'path' must be a single path with at least one segment");
+  if (path.segments() < 1) throw Error("option 'path' must have at least one segment");
   if (generator.paths() != 1 || generator.segments() < 1)
     throw Error("option 'generator' must be a single path with at least one segment");
   const auto g = generator.path(0);
@@ -72,22 +71,28 @@ Polyline substitute(const Polyline& path, const Polyline& generator, const Subst
   opt.validate(n);
 
   const double segments = static_cast<double>(path.segments()) * std::pow(static_cast<double>(n), opt.levels);
-  check_budget(segments + 1, opt.budget, "levels " + std::to_string(opt.levels));
+  const double points = segments + static_cast<double>(path.paths());
+  check_budget(points, opt.budget, "levels " + std::to_string(opt.levels));
 
   Polyline result;
   result.point_fields.set(uniform_int("level", opt.levels));
-  result.points.reserve(static_cast<std::size_t>(segments) + 1);
+  result.points.reserve(static_cast<std::size_t>(points));
   progress.start("substitute");
-  Substitution s{{}, {}, result.points, progress, segments + 1};
+  Substitution s{{}, {}, result.points, progress, points};
   for (std::size_t i = 0; i < n; ++i) {
     const SegmentTransform t = opt.transforms.empty() ? SegmentTransform::Identity : opt.transforms[i];
     s.child.push_back(Similarity2::from_segment(g[i], g[i + 1]).after(transform_map(t)));
     s.child_reversed.push_back(reverses(t));
   }
-  const auto p = path.path(0);
-  result.points.push_back(p.front());
-  for (std::size_t k = 0; k + 1 < p.size(); ++k) s.emit(Similarity2::from_segment(p[k], p[k + 1]), opt.levels, true);
-  result.close_path();
+  // Every path of the input is substituted on its own and stays a path of the result, with its cell fields
+  // (a group's `curve`, a member's colour).
+  for (std::size_t i = 0; i < path.paths(); ++i) {
+    const auto p = path.path(i);
+    result.points.push_back(p.front());
+    for (std::size_t k = 0; k + 1 < p.size(); ++k) s.emit(Similarity2::from_segment(p[k], p[k + 1]), opt.levels, true);
+    result.close_path();
+  }
+  result.cell_fields = path.cell_fields;
   if (!result.finite()) throw Error("substitution produced non-finite coordinates");
   return result;
 }

@@ -28,8 +28,9 @@ struct SubstituteOptions {
   void validate(std::size_t generator_segments) const;
 };
 
-// The substituted path. `path` is any polyline (closed if its ends coincide); `generator` must start at
-// (0,0) and end at (1,0) with at least one segment. The result is one path; its level is opt.levels.
+// The substituted curve. `path` is any curve (a path is closed if its ends coincide), each of its paths
+// substituted on its own into one path of the result, which keeps the input's cell fields; `generator` must
+// start at (0,0) and end at (1,0) with at least one segment. The result's level is opt.levels.
 Polyline substitute(const Polyline& path, const Polyline& generator, const SubstituteOptions& opt, Progress& progress);
 
 }  // namespace selfsim::substitute

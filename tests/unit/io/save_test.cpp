@@ -37,7 +37,7 @@ TEST(SaveSvg, PathDataKeepsTheCurvesCoordinates) {
   TempDir dir;
   const Polyline c = two_paths();
   const fs::path f = dir.path / "c.svg";
-  io::save(&c, f, {.fill = "#ff0000"}, no_progress());
+  io::save(&c, f, {.fill = {"#ff0000"}}, no_progress());
   const io::Dataset d = io::read_dataset(f);
   ASSERT_EQ(d.points.size(), 5u);
   EXPECT_EQ(d.points[3], (std::array<double, 3>{2, 2, 0}));

@@ -100,3 +100,26 @@ TEST(Substitute, Errors) {
   EXPECT_THROW(run(unit, tent, -1), Error);
   EXPECT_THROW(substitute::substitute(unit, tent, {.levels = 60, .budget = {1e6}}, no_progress()), Error);
 }
+
+TEST(Substitute, EveryPathOfASeveralPathCurveOnItsOwn) {
+  // Two paths: the unit segment, and a segment two units up walked backwards. Each becomes its own tent
+  // chain; neither joins the other, and the cell fields (a group's member numbers) are kept.
+  Polyline two = unit;
+  two.points.push_back({1, 2});
+  two.points.push_back({0, 2});
+  two.close_path();
+  two.cell_fields.set(int_field("curve", {1, 2}));
+  const Polyline r = run(two, tent, 3);
+  ASSERT_EQ(r.paths(), 2u);
+  EXPECT_EQ(r.path(0).size(), 9u);
+  EXPECT_EQ(r.path(1).size(), 9u);
+  Polyline second = Polyline::single({{1, 2}, {0, 2}});
+  const Polyline alone = run(second, tent, 3);
+  for (std::size_t i = 0; i < 9; ++i) {
+    EXPECT_NEAR(norm(r.path(0)[i] - run(unit, tent, 3).points[i]), 0, 1e-15);
+    EXPECT_NEAR(norm(r.path(1)[i] - alone.points[i]), 0, 1e-15);
+  }
+  ASSERT_NE(r.cell_fields.find("curve"), nullptr);
+  EXPECT_EQ(r.cell_fields.find("curve")->at(1), 2);
+  EXPECT_NO_THROW(r.cell_fields.check(r.paths(), "cell"));
+}

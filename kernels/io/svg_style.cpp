@@ -1,0 +1,78 @@
+#include "kernels/io/svg_style.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "kernels/geom/error.h"
+#include "kernels/io/colour.h"
+
+namespace selfsim::io {
+
+namespace {
+
+bool given(const SaveOptions& opt, const char* name) {
+  return std::find(opt.given.begin(), opt.given.end(), name) != opt.given.end();
+}
+
+// A cell field of that name and component count, or null: a field of another shape is not a style.
+const Field* style_field(const Polyline& c, const char* name, int components) {
+  const Field* f = c.cell_fields.find(name);
+  return f != nullptr && f->components == components ? f : nullptr;
+}
+
+Rgb rgb_at(const Field& f, std::size_t i) { return {f.at(i, 0), f.at(i, 1), f.at(i, 2)}; }
+
+bool unit_rgb(const Rgb& c) {
+  return std::all_of(c.begin(), c.end(), [](double v) { return v >= 0 && v <= 1; });
+}
+
+template <class T>
+const T& cycled(const std::vector<T>& palette, std::size_t member) {
+  return palette[member % palette.size()];
+}
+
+}  // namespace
+
+SvgStyles::SvgStyles(const Polyline& c, const SaveOptions& opt)
+    : opt_(opt),
+      member_(style_field(c, "curve", 1)),
+      color_(style_field(c, "color", 3)),
+      width_(style_field(c, "width", 1)),
+      fill_(style_field(c, "fill", 3)),
+      stroke_given_(given(opt, "stroke")),
+      width_given_(given(opt, "stroke_width")),
+      fill_given_(given(opt, "fill")) {
+  // Fields may come from a loaded file: check them once here rather than write a colour nobody chose.
+  for (std::size_t i = 0; i < c.paths(); ++i) {
+    const std::string where = " of path " + std::to_string(i + 1);
+    if (color_ && !stroke_given_ && !unit_rgb(rgb_at(*color_, i)))
+      throw Error("cell field 'color'" + where + " must hold red, green, blue in [0, 1]");
+    if (width_ && !width_given_ && !(width_->at(i) > 0 && width_->at(i) < 1e6))
+      throw Error("cell field 'width'" + where + " must be a positive stroke width");
+    if (fill_ && !fill_given_) {
+      const Rgb f = rgb_at(*fill_, i);
+      if (!unit_rgb(f) && std::none_of(f.begin(), f.end(), [](double v) { return v < 0; }))
+        throw Error("cell field 'fill'" + where + " must hold red, green, blue in [0, 1], or negative values for none");
+    }
+  }
+}
+
+PathStyle SvgStyles::at(std::size_t path) const {
+  const double number = member_ ? member_->at(path) : 1;
+  const std::size_t member = number >= 1 ? static_cast<std::size_t>(number - 1) : 0;
+  PathStyle s;
+  if (stroke_given_ || !color_)
+    s.stroke = cycled(opt_.stroke, member);
+  else
+    s.stroke = colour_hex(rgb_at(*color_, path));
+  s.width = width_given_ || !width_ ? cycled(opt_.stroke_width, member) : width_->at(path);
+  if (fill_given_ || !fill_) {
+    s.fill = opt_.fill.empty() ? "none" : cycled(opt_.fill, member);
+  } else {
+    const Rgb f = rgb_at(*fill_, path);
+    s.fill = unit_rgb(f) ? colour_hex(f) : "none";
+  }
+  return s;
+}
+
+}  // namespace selfsim::io

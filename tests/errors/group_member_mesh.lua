@@ -1,0 +1,3 @@
+local a = polyline { { 0, 0 }, { 1, 0 } }
+local m = mesh { points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, triangles = { { 1, 2, 3 } } }
+save({ a, m }, "g.svg")
