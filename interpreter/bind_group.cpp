@@ -1,5 +1,6 @@
 // group{ a, b, { c, stroke = "red" } }, concat(a, b, ...) and c:reverse(): curves joined into one value, or
 // walked backwards. A thin adapter over kernels/geom/curve_join.h.
+#include <algorithm>
 #include <variant>
 
 #include "interpreter/bindings.h"
@@ -8,6 +9,7 @@
 #include "interpreter/options_reader.h"
 #include "interpreter/run_context.h"
 #include "interpreter/style_reader.h"
+#include "kernels/geom/check.h"
 #include "kernels/geom/curve_join.h"
 #include "kernels/io/colour.h"
 #include "kernels/io/save.h"
@@ -41,7 +43,8 @@ Fields style_fields(const StyleOptions& s) {
   if (!s.stroke.empty()) f.set(rgb_field("color", s.stroke[0]));
   if (!s.stroke_width.empty()) {
     if (!(s.stroke_width[0] > 0 && s.stroke_width[0] < 1e6))
-      throw Error("option 'stroke_width' must be a positive number of pixels");
+      throw Error("option 'stroke_width' must be a positive number below 1000000, got " +
+                  number_text(s.stroke_width[0]));
     f.set(uniform_real("width", {s.stroke_width[0]}));
   }
   if (!s.fill.empty()) f.set(rgb_field("fill", s.fill[0]));
@@ -95,16 +98,32 @@ void read_member(lua_State* L, lua_Integer i, Members& m) {
 
 template <class V>
 PolylineT<V> group_of(const Members& m, Progress& progress) {
+  const Fields defaults = style_defaults();
   std::vector<const PolylineT<V>*> curves;
   for (std::size_t i = 0; i < m.curves.size(); ++i) {
+    const std::string what = "member " + std::to_string(i + 1) + " of the group";
     const auto* held = std::get_if<Held<PolylineT<V>>>(&m.curves[i]);
     if (held == nullptr)
-      throw Error("member " + std::to_string(i + 1) + " of the group is a " +
-                  (sizeof(V) == sizeof(Vec2) ? "3D" : "2D") +
+      throw Error(what + " is a " + (sizeof(V) == sizeof(Vec2) ? "3D" : "2D") +
                   " curve and member 1 is not: a group is all 2D or all 3D");
+    // A field of a style's name but another shape (from a loaded file) would silently drop every member's
+    // style of that name when the fields are joined.
+    for (const Field& d : defaults.list) {
+      const bool styled =
+          std::any_of(m.styles.begin(), m.styles.end(), [&](const Fields& s) { return s.find(d.name) != nullptr; });
+      const Field* f = (*held)->cell_fields.find(d.name);
+      if (styled && f != nullptr && m.styles[i].find(d.name) == nullptr &&
+          (f->components != d.components || f->scalar() != d.scalar()))
+        throw Error(what + " has a cell field '" + d.name + "' that is not a style (" + std::to_string(d.components) +
+                    " float components): give the member its own, { curve, " +
+                    (d.name == "color"   ? "stroke"
+                     : d.name == "width" ? "stroke_width"
+                                         : "fill") +
+                    " = ... }");
+    }
     curves.push_back(held->get());
   }
-  return group<V>(curves, m.styles, style_defaults(), progress);
+  return group<V>(curves, m.styles, defaults, progress);
 }
 
 }  // namespace
@@ -112,12 +131,8 @@ PolylineT<V> group_of(const Members& m, Progress& progress) {
 void push_group(lua_State* L, int index) {
   index = lua_absindex(L, index);
   if (lua_type(L, index) != LUA_TTABLE) throw Error("expected a list of curves, got " + describe(L, index));
-  const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, index));
-  Options o(L, index);
-  o.positional(n);
-  if (const auto keys = o.unread(); !keys.empty())
-    throw Error("a group is a list of curves, got the key '" + shown_text(keys.front()) +
-                "' (style a member as { curve, stroke = ... }, or give save() a palette)");
+  const lua_Integer n =
+      list_length(L, index, "a group", " (style a member as { curve, stroke = ... }, or give save() a palette)");
   if (n == 0) throw Error("a group needs at least one curve");
   check_run_budget(L, static_cast<double>(n), "group");
   Members m;
@@ -140,6 +155,8 @@ namespace {
 
 int make_group(lua_State* L) {
   return call_kernel(L, "group", [&] {
+    if (lua_gettop(L) != 1)
+      throw Error("takes one list of curves, group{ a, b, ... }, got " + std::to_string(lua_gettop(L)) + " arguments");
     push_group(L, 1);
     return 1;
   });
@@ -154,7 +171,9 @@ int push_concat(lua_State* L, const std::vector<Held<PolylineT<V>>>& held) {
     points += static_cast<double>(h->points.size());
   }
   check_run_budget(L, points, "concat");
-  push_geometry(L, concat<V>(parts, RunContext::of(L)));
+  PolylineT<V> joined = concat<V>(parts, RunContext::of(L));
+  if (joined.points.size() < 2) throw Error("the joined curve has a single point (a curve needs at least 2)");
+  push_geometry(L, std::move(joined));
   return 1;
 }
 

@@ -1,6 +1,7 @@
 // save(value, "file.ext", opts?) and param(name, default): the recipe's only ways out and in.
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 
 #include "interpreter/bindings.h"
@@ -10,6 +11,7 @@
 #include "interpreter/run_context.h"
 #include "interpreter/style_reader.h"
 #include "interpreter/value_types.h"
+#include "kernels/geom/check.h"
 #include "kernels/geom/lower_case.h"
 #include "kernels/io/colour.h"
 #include "kernels/io/save.h"
@@ -60,6 +62,20 @@ io::SaveOptions read_save_options(lua_State* L, int index, const io::Format& f) 
   return s;
 }
 
+// SVG renderers (librsvg, browsers) draw in single precision: a curve far from the origin for its size
+// comes out blurred or broken even though the file holds every digit. Say so rather than let it look right.
+void warn_if_far(lua_State* L, const Polyline& c) {
+  const BBox2 b = c.bbox();
+  const double size = std::max(b.size().x, b.size().y);
+  const double far = std::max({std::abs(b.min.x), std::abs(b.min.y), std::abs(b.max.x), std::abs(b.max.y)});
+  if (!(far > 1e5 * size)) return;
+  const std::string message = recipe_where(L) + "save: the curve lies " + number_text(far) +
+                              " from the origin but is only " + number_text(size) +
+                              " across: SVG viewers draw in single precision and may show it broken (move it "
+                              "nearer the origin with c:transform{ translate = ... })";
+  lua_warning(L, message.c_str(), 0);
+}
+
 int save(lua_State* L) {
   return call_kernel(L, "save", [&] {
     RunContext& run = RunContext::of(L);
@@ -73,6 +89,7 @@ int save(lua_State* L) {
     const std::string name = text_value(L, 2, "argument 2 (the file name)");
     const io::Format& format = io::format_for(name, io::kind_of(v->ref()));
     const io::SaveOptions opt = read_save_options(L, 3, format);
+    if (format.extension == ".svg") warn_if_far(L, *std::get<const Polyline*>(v->ref()));
     const std::string written = io::save(v->ref(), run.config.out_dir, name, opt, run);
     // Said as each file is committed, in order with the recipe's own print output: when a later error fails
     // the run, the files it did write were already reported.

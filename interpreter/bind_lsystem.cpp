@@ -62,7 +62,8 @@ Grammar read_grammar(lua_State* L, int index) {
   const int t = o.push("start_angle");
   if (t == LUA_TTABLE) {
     g.start_angles.clear();
-    for (lua_Integer i = 1; i <= static_cast<lua_Integer>(lua_rawlen(L, -1)); ++i) {
+    const lua_Integer n = list_length(L, -1, "option 'start_angle'");
+    for (lua_Integer i = 1; i <= n; ++i) {
       lua_rawgeti(L, -1, i);
       const double a = finite_number(L, -1, "option 'start_angle' entry " + std::to_string(i));
       lua_pop(L, 1);

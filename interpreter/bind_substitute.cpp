@@ -17,7 +17,8 @@ const std::vector<std::string> transform_names{"identity", "reflect_segment", "r
 std::vector<SegmentTransform> read_transforms(lua_State* L) {
   std::vector<SegmentTransform> out;
   if (lua_type(L, -1) != LUA_TTABLE) throw Error("option 'transforms' must be a list of names, got " + describe(L, -1));
-  for (lua_Integer i = 1; i <= static_cast<lua_Integer>(lua_rawlen(L, -1)); ++i) {
+  const lua_Integer n = list_length(L, -1, "option 'transforms'");
+  for (lua_Integer i = 1; i <= n; ++i) {
     lua_rawgeti(L, -1, i);
     const std::string name =
         lua_type(L, -1) == LUA_TSTRING ? shown_text(text_value(L, -1, "option 'transforms'")) : describe(L, -1);

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "interpreter/options_reader.h"
 #include "interpreter/run_context.h"
 #include "kernels/geom/check.h"
 
@@ -23,6 +24,65 @@ std::string stack_where(lua_State* L, const std::string& library, int first_leve
     if (std::string_view(ar.source).substr(0, library.size()) != library) return where;
   }
   return first;
+}
+
+int method_index(lua_State* L) {
+  lua_pushvalue(L, 2);
+  if (lua_rawget(L, lua_upvalueindex(1)) != LUA_TNIL) return 1;
+  std::string message;
+  {
+    std::vector<std::string> names;
+    lua_pushnil(L);
+    while (lua_next(L, lua_upvalueindex(1)) != 0) {
+      lua_pop(L, 1);
+      if (lua_type(L, -1) == LUA_TSTRING) names.emplace_back(lua_tostring(L, -1));
+    }
+    std::sort(names.begin(), names.end());
+    std::string type = lua_tostring(L, lua_upvalueindex(2));
+    type = type.substr(type.find('.') + 1);
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+    const std::string key = lua_type(L, 2) == LUA_TSTRING ? lua_tostring(L, 2) : "";
+    const std::string near = key.empty() ? "" : suggestion(key, names);
+    message = recipe_where(L) + type + " has no method " + describe(L, 2) +
+              (near.empty() ? "" : " (did you mean '" + near + "'?)") + "; its methods: " + list;
+  }
+  lua_pushstring(L, message.c_str());
+  return lua_error(L);
+}
+
+lua_Integer list_length(lua_State* L, int index, const std::string& what, const std::string& hint) {
+  index = lua_absindex(L, index);
+  const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, index));
+  lua_Integer keys = 0;
+  lua_pushnil(L);
+  while (lua_next(L, index) != 0) {
+    lua_pop(L, 1);
+    ++keys;
+  }
+  if (keys == n) {
+    // As many keys as entries 1..n: a list exactly when every entry is there.
+    bool whole = true;
+    for (lua_Integer i = 1; i <= n && whole; ++i) {
+      whole = lua_rawgeti(L, index, i) != LUA_TNIL;
+      lua_pop(L, 1);
+    }
+    if (whole) return n;
+  }
+  // Something else is there: name it, the same one on every run (keys in their fixed order).
+  const int count = push_sorted_keys(L, index);
+  for (int k = 1; k <= count; ++k) {
+    lua_rawgeti(L, -1, k);
+    if (!lua_isinteger(L, -1) || lua_tointeger(L, -1) < 1 || lua_tointeger(L, -1) > n)
+      throw Error(what + " must be a list (entries 1, 2, 3, ...), got the key " + describe(L, -1) + hint);
+    lua_pop(L, 1);
+  }
+  for (lua_Integer i = 1; i <= n; ++i)
+    if (lua_rawgeti(L, index, i) == LUA_TNIL)
+      throw Error(what + " has no entry " + std::to_string(i) + " (a list's entries run 1, 2, 3, ... without holes)");
+    else
+      lua_pop(L, 1);
+  return n;  // not reached: some key was out of place
 }
 
 std::string describe(lua_State* L, int index) {

@@ -30,6 +30,11 @@ std::string shown_text(std::string_view text, std::size_t max_bytes = 60);
 // seed; recipes and messages must not.
 int push_sorted_keys(lua_State* L, int table);
 
+// The length of the list (a table with entries 1 to n and no other key) at index. Throws Error naming the
+// first key that is not an entry, or the first hole: `what` names the table, `hint` is added to the message
+// for a stray key.
+lua_Integer list_length(lua_State* L, int index, const std::string& what, const std::string& hint = "");
+
 // Describes a Lua value for an error message: 41, 'abc', a table, nil.
 std::string describe(lua_State* L, int index);
 
@@ -167,6 +172,11 @@ Held<T> check_self(lua_State* L, const char* type, const char* method) {
 
 // Registers a metatable for T: __name, __gc, __tostring, __index = the given methods, and __metatable so
 // that getmetatable() gives recipes a string, never the table whose __gc runs destructors.
+// A type's __index: its method, or an error naming the type, the likeliest method meant and all of them
+// (Curve3:transform is "Curve3 has no method 'transform'", not "attempt to call a nil value").
+// Upvalues: the methods table, the type's name.
+int method_index(lua_State* L);
+
 template <class T>
 void register_type(lua_State* L, const char* type, const luaL_Reg* methods, lua_CFunction tostring) {
   luaL_newmetatable(L, type);
@@ -189,6 +199,8 @@ void register_type(lua_State* L, const char* type, const luaL_Reg* methods, lua_
   lua_setfield(L, -2, "__tostring");
   lua_newtable(L);
   luaL_setfuncs(L, methods, 0);
+  lua_pushstring(L, type);
+  lua_pushcclosure(L, method_index, 2);
   lua_setfield(L, -2, "__index");
   lua_pushstring(L, "locked");
   lua_setfield(L, -2, "__metatable");

@@ -22,7 +22,7 @@ int mesh_faces(lua_State* L) {
 std::vector<Triangle> read_triangles(lua_State* L, int index, std::size_t points) {
   if (lua_type(L, index) != LUA_TTABLE)
     throw Error("option 'triangles' must be a table of {i, j, k} point indices, got " + describe(L, index));
-  const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, index));
+  const lua_Integer n = list_length(L, index, "option 'triangles'");
   check_run_budget(L, static_cast<double>(n), "option 'triangles'");
   std::vector<Triangle> tris;
   tris.reserve(static_cast<std::size_t>(n));

@@ -196,7 +196,7 @@ std::vector<double> Options::numbers(const char* key) {
     return out;
   }
   if (lua_type(L, -1) != LUA_TTABLE) throw Error(option(key) + " must be a list of numbers, got " + describe(L, -1));
-  const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, -1));
+  const lua_Integer n = list_length(L, -1, option(key));
   check_run_budget(L, static_cast<double>(n), option(key));
   for (lua_Integer i = 1; i <= n; ++i) {
     lua_rawgeti(L, -1, i);

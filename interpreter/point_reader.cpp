@@ -43,7 +43,7 @@ std::vector<V> read_point_list(lua_State* L, int index, const std::string& what)
   const char* shape = sizeof(V) == sizeof(Vec2) ? "{x, y}" : "{x, y, z}";
   if (lua_type(L, index) != LUA_TTABLE)
     throw Error(what + " must be a table of " + shape + " points, got " + describe(L, index));
-  const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, index));
+  const lua_Integer n = list_length(L, index, what.empty() ? "the table of points" : what);
   check_run_budget(L, static_cast<double>(n), what.empty() ? "a table of points" : what);  // before copying
   std::vector<V> pts;
   pts.reserve(static_cast<std::size_t>(n));

@@ -8,14 +8,15 @@ namespace selfsim::interp {
 namespace {
 
 std::string colour(lua_State* L, const std::string& what, bool none_allowed) {
-  if (lua_type(L, -1) != LUA_TSTRING)
-    throw Error(what + " must be a colour name or \"#rrggbb\", got " + describe(L, -1));
+  const std::string expected =
+      std::string(" must be a CSS colour name, #rgb") + (none_allowed ? ", #rrggbb or 'none'" : " or #rrggbb");
+  if (lua_type(L, -1) != LUA_TSTRING) throw Error(what + expected + ", got " + describe(L, -1));
   const std::string value = text_value(L, -1, what);
-  if ((none_allowed && value == "none") || io::is_colour(value)) return value;
+  if (none_allowed && lower_case(value) == "none") return "none";
+  if (io::is_colour(value)) return value;
   if (const std::string near = suggestion(lower_case(value), io::colour_names()); !near.empty())
     throw Error(what + ": unknown colour '" + shown_text(value) + "' (did you mean '" + near + "'?)");
-  throw Error(what + " must be a CSS colour name, #rgb" + (none_allowed ? ", #rrggbb or 'none'" : " or #rrggbb") +
-              ", got '" + shown_text(value) + "'");
+  throw Error(what + expected + ", got '" + shown_text(value) + "'");
 }
 
 // The value at key read by `one` from the top of the stack, or, when palette is allowed, each entry of a
@@ -26,7 +27,7 @@ std::vector<T> one_or_list(lua_State* L, Options& o, const char* key, bool palet
   const std::string what = std::string("option '") + key + "'";
   const int type = o.push(key);
   if (type == LUA_TTABLE && palette) {
-    const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, -1));
+    const lua_Integer n = list_length(L, -1, what);
     if (n == 0) throw Error(what + " is an empty list (give one value, or a list of values cycled over the curves)");
     check_run_budget(L, static_cast<double>(n), what);
     for (lua_Integer i = 1; i <= n; ++i) {

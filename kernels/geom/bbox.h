@@ -19,6 +19,11 @@ struct BBox {
     min = min_each(min, p);
     max = max_each(max, p);
   }
+  void add(const BBox& b) {
+    if (b.empty()) return;
+    add(b.min);
+    add(b.max);
+  }
   // Extent along each axis; zero for an empty box.
   V size() const { return empty() ? V{} : max - min; }
 };

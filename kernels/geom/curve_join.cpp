@@ -1,6 +1,7 @@
 #include "kernels/geom/curve_join.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "kernels/geom/error.h"
@@ -20,10 +21,11 @@ void append(PointArray<V>& out, std::span<const V> pts, Progress& progress) {
   }
 }
 
-// A curve is a path's end meeting the next path's start when they agree to rounding.
+// A path's end meets the next path's start when they agree to rounding: within a billionth of the
+// parts' whole extent (not of the coordinates' size, which would swallow real gaps far from the origin).
 template <class V>
-bool meets(const V& a, const V& b) {
-  return norm(a - b) <= 1e-9 * (1 + norm(a));
+bool meets(const V& a, const V& b, double extent) {
+  return norm(a - b) <= 1e-9 * extent;
 }
 
 template <class V>
@@ -74,6 +76,10 @@ PolylineT<V> concat(std::span<const PolylineT<V>* const> parts, Progress& progre
   if (parts.empty()) throw Error("concat needs at least one curve");
   PolylineT<V> out;
   out.points.reserve(total_points(parts));
+  BBox<V> box = parts.front()->bbox();
+  for (const PolylineT<V>* c : parts) box.add(c->bbox());
+  const double diagonal = norm(box.size());
+  const double extent = std::isfinite(diagonal) ? diagonal : 0;  // an overflowing extent: exact meeting only
   std::vector<const Fields*> point_fields;
   std::vector<std::size_t> points, skip;
   for (std::size_t p = 0; p < parts.size(); ++p) {
@@ -81,7 +87,7 @@ PolylineT<V> concat(std::span<const PolylineT<V>* const> parts, Progress& progre
     if (c.paths() != 1)
       throw Error("argument " + std::to_string(p + 1) + " has " + std::to_string(c.paths()) +
                   " paths; concat joins single paths (group{} keeps several paths in one value)");
-    const std::size_t first = !out.points.empty() && meets(out.points.back(), c.points.front()) ? 1 : 0;
+    const std::size_t first = !out.points.empty() && meets(out.points.back(), c.points.front(), extent) ? 1 : 0;
     append<V>(out.points, std::span<const V>(c.points).subspan(first), progress);
     point_fields.push_back(&c.point_fields);
     points.push_back(c.points.size());

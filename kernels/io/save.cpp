@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "kernels/geom/check.h"
 #include "kernels/geom/error.h"
 #include "kernels/io/colour.h"
 #include "kernels/io/read_error.h"
@@ -42,8 +43,10 @@ void SaveOptions::validate() const {
   for (const std::string& c : fill)
     if (c != "none" && !is_colour(c))
       throw Error("option 'fill' must be a CSS colour name, #rgb, #rrggbb or 'none', got '" + shown(c) + "'");
-  for (double w : stroke_width)
-    if (!(w > 0 && w < 1e6)) throw Error("option 'stroke_width' must be a positive number of pixels");
+  for (std::size_t i = 0; i < stroke_width.size(); ++i)
+    if (!(stroke_width[i] > 0 && stroke_width[i] < 1e6))
+      throw Error("option 'stroke_width'" + (stroke_width.size() > 1 ? " entry " + std::to_string(i + 1) : "") +
+                  " must be a positive number below 1000000, got " + number_text(stroke_width[i]));
   if (size_unit.empty() && !(size >= 16 && size <= 100000)) throw Error("option 'size' must be in [16, 100000] pixels");
   if (size_unit != "" && size_unit != "mm" && size_unit != "cm" && size_unit != "in")
     throw Error("option 'size' takes the units mm, cm or in, got '" + shown(size_unit) + "'");

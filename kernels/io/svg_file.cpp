@@ -16,10 +16,18 @@ namespace selfsim::io {
 namespace {
 
 // Nine significant digits: well below a pixel at any sensible zoom, and far smaller files than 17.
-void put(std::string& s, double v) {
+void put(std::string& s, double v, int digits = 9) {
   char buf[32];
-  auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 9);
+  auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, digits);
   s.append(buf, r.ptr);
+}
+
+// Digits for coordinates: nine relative to the curve's own extent, so a curve far from the origin (a
+// dragon moved to (1e8, 1e8)) keeps its detail; at most the 17 a double holds.
+int coordinate_digits(const BBox2& b, double extent) {
+  const double far = std::max({std::abs(b.min.x), std::abs(b.min.y), std::abs(b.max.x), std::abs(b.max.y)});
+  if (!(far > extent)) return 9;
+  return static_cast<int>(std::min(17.0, 9 + std::ceil(std::log10(far / extent))));
 }
 
 const char* const overflow =
@@ -40,6 +48,7 @@ void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
   for (double v : {lo.x, lo.y + extent.y, extent.x * px, extent.y * px, 1 / px})
     if (!std::isfinite(v)) throw Error(overflow);
   const SvgStyles styles(c, opt);
+  const int digits = coordinate_digits(b, big);
 
   std::string s;  // written out every megabyte or so: memory stays flat whatever the curve
   auto flush = [&] {
@@ -53,7 +62,7 @@ void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
   put(s, extent.y * px);
   s += opt.size_unit + "\" viewBox=\"";
   for (double v : {lo.x, -(lo.y + extent.y), extent.x, extent.y}) {
-    put(s, v);
+    put(s, v, digits);
     s += ' ';
   }
   s.back() = '"';
@@ -82,9 +91,9 @@ void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
       if (++written % (1u << 20) == 0)
         progress.step(0.9 * static_cast<double>(written) / static_cast<double>(c.points.size()));
       s += cmd;
-      put(s, p.x);
+      put(s, p.x, digits);
       s += ' ';
-      put(s, p.y);
+      put(s, p.y, digits);
       cmd = cmd == 'M' ? 'L' : ' ';
       if (s.size() > (1u << 20)) flush();
     }

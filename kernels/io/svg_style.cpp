@@ -43,7 +43,19 @@ SvgStyles::SvgStyles(const Polyline& c, const SaveOptions& opt)
       width_given_(given(opt, "stroke_width")),
       fill_given_(given(opt, "fill")) {
   // Fields may come from a loaded file: check them once here rather than write a colour nobody chose.
+  const bool palette = (stroke_given_ && opt.stroke.size() > 1) || (width_given_ && opt.stroke_width.size() > 1) ||
+                       (fill_given_ && opt.fill.size() > 1);
+  const Field* curve = c.cell_fields.find("curve");
+  if (palette && curve != nullptr && curve->components != 1)
+    throw Error("cell field 'curve' has " + std::to_string(curve->components) +
+                " components; a palette needs one member number per path");
   for (std::size_t i = 0; i < c.paths(); ++i) {
+    if (palette && member_) {
+      const double k = member_->at(i);
+      if (!(k >= 1 && k <= 2147483647 && k == std::floor(k)))
+        throw Error("cell field 'curve' of path " + std::to_string(i + 1) +
+                    " must be a whole number from 1 (a group's member number) for a palette");
+    }
     const std::string where = " of path " + std::to_string(i + 1);
     if (color_ && !stroke_given_ && !unit_rgb(rgb_at(*color_, i)))
       throw Error("cell field 'color'" + where + " must hold red, green, blue in [0, 1]");
@@ -58,8 +70,9 @@ SvgStyles::SvgStyles(const Polyline& c, const SaveOptions& opt)
 }
 
 PathStyle SvgStyles::at(std::size_t path) const {
+  // Checked whole and in range where a palette reads it; any member is the first otherwise.
   const double number = member_ ? member_->at(path) : 1;
-  const std::size_t member = number >= 1 ? static_cast<std::size_t>(number - 1) : 0;
+  const std::size_t member = number >= 1 && number <= 2147483647 ? static_cast<std::size_t>(number - 1) : 0;
   PathStyle s;
   if (stroke_given_ || !color_)
     s.stroke = cycled(opt_.stroke, member);

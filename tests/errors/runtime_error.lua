@@ -1,3 +1,3 @@
 local curves = require "selfsim.curves"
 local c = curves.dragon():curve { level = 3 }
-print(c:nope())
+print(nope(c))

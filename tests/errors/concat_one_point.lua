@@ -1,0 +1,1 @@
+local c = concat({ { 0, 0 } })

@@ -1,0 +1,1 @@
+local c = polyline { { 0, 0 }, [3] = { 1, 0 } }
