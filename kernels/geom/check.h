@@ -31,6 +31,14 @@ inline std::string number_text(double v) {
   return buf;
 }
 
+// Throws Error "<what> must be a number in [lo, hi], got v" unless lo <= v <= hi (NaN never is).
+inline double check_between(double v, double lo, double hi, const std::string& what) {
+  if (!(v >= lo && v <= hi))
+    throw Error(what + " must be a number in [" + number_text(lo) + ", " + number_text(hi) + "], got " +
+                number_text(v));
+  return v;
+}
+
 // Throws Error "<what> must be a finite number, got NaN" unless v is finite.
 inline double check_finite(double v, const std::string& what) {
   if (!std::isfinite(v)) throw Error(what + " must be a finite number, got " + number_text(v));

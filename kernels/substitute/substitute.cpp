@@ -12,22 +12,6 @@ namespace selfsim::substitute {
 
 namespace {
 
-Similarity2 transform_map(SegmentTransform t) {
-  switch (t) {
-    case SegmentTransform::Identity:
-      return {};
-    case SegmentTransform::ReflectSegment:
-      return {{1, 0}, {0, 0}, true};
-    case SegmentTransform::ReflectBisector:
-      return {{-1, 0}, {1, 0}, true};
-    case SegmentTransform::HalfTurn:
-      return {{-1, 0}, {1, 0}, false};
-  }
-  return {};
-}
-
-bool reverses(SegmentTransform t) { return t == SegmentTransform::ReflectBisector || t == SegmentTransform::HalfTurn; }
-
 struct Substitution {
   std::vector<Similarity2> child;    // generator segment i as a map of the unit segment, transform included
   std::vector<bool> child_reversed;  // true where that copy is walked backwards
@@ -81,8 +65,8 @@ Polyline substitute(const Polyline& path, const Polyline& generator, const Subst
   Substitution s{{}, {}, result.points, progress, points};
   for (std::size_t i = 0; i < n; ++i) {
     const SegmentTransform t = opt.transforms.empty() ? SegmentTransform::Identity : opt.transforms[i];
-    s.child.push_back(Similarity2::from_segment(g[i], g[i + 1]).after(transform_map(t)));
-    s.child_reversed.push_back(reverses(t));
+    s.child.push_back(Similarity2::from_segment(g[i], g[i + 1]).after(unit_map(t)));
+    s.child_reversed.push_back(walks_backwards(t));
   }
   // Every path of the input is substituted on its own and stays a path of the result, with its cell fields
   // (a group's `curve`, a member's colour).

@@ -9,16 +9,12 @@
 #include "kernels/geom/budget.h"
 #include "kernels/geom/polyline.h"
 #include "kernels/geom/progress.h"
+#include "kernels/geom/segment_transform.h"
 
 namespace selfsim::substitute {
 
-// How a copy of the generator sits on a segment, in the segment's own frame (0 at its start, 1 at its end).
-enum class SegmentTransform {
-  Identity,         // z -> z
-  ReflectSegment,   // z -> conj(z): mirrored across the segment
-  ReflectBisector,  // z -> 1 - conj(z): mirrored across the segment's perpendicular bisector
-  HalfTurn,         // z -> 1 - z: turned half a circle about the segment's midpoint
-};
+// How a copy of the generator sits on a segment: kernels/geom/segment_transform.h.
+using selfsim::SegmentTransform;
 
 struct SubstituteOptions {
   int levels = 1;                            // rounds of substitution, in [0, 64]
