@@ -37,7 +37,7 @@ Field rgb_field(const char* name, const std::string& colour) {
   return uniform_real(name, {c[0], c[1], c[2]});
 }
 
-// A member's SVG style as the cell fields the writer reads (kernels/io/svg_style.h).
+// A member's SVG style as the cell fields the writer reads (kernels/io/curve_style.h).
 Fields style_fields(const StyleOptions& s) {
   Fields f;
   if (!s.stroke.empty()) f.set(rgb_field("color", s.stroke[0]));

@@ -28,7 +28,7 @@ io::SaveOptions read_save_options(lua_State* L, int index, const io::Format& f) 
   auto has = [&](const char* name) { return std::find(f.options.begin(), f.options.end(), name) != f.options.end(); };
   if (has("stroke")) {  // the style options: one value each, or a palette cycled over a group's members
     StyleOptions style = read_style(L, o, true);
-    // Given options override the style a curve carries in its fields (svg_style.h), so they are recorded.
+    // Given options override the style a curve carries in its fields (curve_style.h), so they are recorded.
     auto take = [&](auto& from, auto& to, const char* name) {
       if (from.empty()) return;
       to = std::move(from);

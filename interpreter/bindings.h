@@ -15,6 +15,7 @@ void open_substitute(lua_State* L);  // bind_substitute.cpp: substitute{}
 void open_io(lua_State* L);          // bind_io.cpp: save(), param()
 void open_load(lua_State* L);        // bind_load.cpp: load()
 void open_group(lua_State* L);       // bind_group.cpp: group{}, concat()
+void open_hoist(lua_State* L);       // bind_hoist.cpp: bspline{}, catmull_rom{}, hoist.*, simplify()
 
 // bind_group.cpp: pushes group{...} of the list at index (save({ a, b }, ...) uses it too).
 void push_group(lua_State* L, int index);
@@ -30,6 +31,7 @@ inline void open_all(lua_State* L) {
   open_io(L);
   open_load(L);
   open_group(L);
+  open_hoist(L);
 }
 
 }  // namespace selfsim::interp

@@ -52,7 +52,8 @@ void mark(std::span<const Vec2> pts, double tolerance, std::vector<char>& keep, 
 }  // namespace
 
 Polyline simplify(const Polyline& c, double tolerance, Progress& progress) {
-  check_between(tolerance, 1e-300, 1e300, "tolerance");
+  if (!(tolerance > 0 && std::isfinite(tolerance)))
+    throw Error("tolerance must be a positive distance in the curve's units, got " + number_text(tolerance));
   progress.start("simplify");
   std::vector<char> keep(c.points.size(), 0);
   for (std::size_t i = 0; i < c.paths(); ++i) {

@@ -21,6 +21,7 @@ const std::vector<Format>& formats() {
       {".vtp", "VTK PolyData: ParaView (curves as lines, meshes as polygons; every field)", {C, C3, M}, {}, write_vtp},
       {".vtu", "VTK unstructured grid: ParaView (every field)", {C, C3, M}, {}, write_vtu},
       {".svg", "SVG: browsers, Inkscape, plotters", {C}, {"stroke", "stroke_width", "fill", "size"}, write_svg},
+      {".eps", "EPS: print, LaTeX, illustration programs", {C}, {"stroke", "stroke_width", "fill", "size"}, write_eps},
       {".stl", "binary STL: slicers for 3D printing", {M}, {}, write_stl},
       {".obj", "Wavefront OBJ: Blender, MeshLab", {M}, {}, write_obj},
       {".ply", "binary PLY: MeshLab, Blender", {M}, {}, write_ply},

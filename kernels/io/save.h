@@ -15,7 +15,7 @@
 namespace selfsim::io {
 
 struct SaveOptions {
-  // .svg style, each one value or a palette cycled over a group's members (svg_style.h); given, they
+  // .svg style, each one value or a palette cycled over a group's members (curve_style.h); given, they
   // override the style a curve carries in its cell fields.
   std::vector<std::string> stroke{"#1d3557"};  // stroke colours
   std::vector<double> stroke_width{1};         // stroke widths in pixels (or size_unit), whatever the curve's scale

@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "kernels/geom/error.h"
-#include "kernels/io/svg_style.h"
+#include "kernels/io/curve_style.h"
 #include "kernels/io/writers.h"
 
 namespace selfsim::io {
@@ -22,33 +22,15 @@ void put(std::string& s, double v, int digits = 9) {
   s.append(buf, r.ptr);
 }
 
-// Digits for coordinates: nine relative to the curve's own extent, so a curve far from the origin (a
-// dragon moved to (1e8, 1e8)) keeps its detail; at most the 17 a double holds.
-int coordinate_digits(const BBox2& b, double extent) {
-  const double far = std::max({std::abs(b.min.x), std::abs(b.min.y), std::abs(b.max.x), std::abs(b.max.y)});
-  if (!(far > extent)) return 9;
-  return static_cast<int>(std::min(17.0, 9 + std::ceil(std::log10(far / extent))));
-}
-
-const char* const overflow =
-    "the curve's extent and the options give a non-finite SVG size or stroke width (scale the curve)";
-
 }  // namespace
 
 void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress) {
   const Polyline& c = *std::get<const Polyline*>(v);  // the registry sends only 2D curves here
-  const BBox2 b = c.bbox();
-  Vec2 extent = b.size();
-  const double big = std::max({extent.x, extent.y, 1e-300});
-  const double margin = 0.02 * big;
-  const Vec2 lo = b.min - Vec2{margin, margin};
-  extent = extent + Vec2{2 * margin, 2 * margin};
-  const double px = opt.size / std::max(extent.x, extent.y);
-  // Everything the header derives from the extent must be a number a viewer can read.
-  for (double v : {lo.x, lo.y + extent.y, extent.x * px, extent.y * px, 1 / px})
-    if (!std::isfinite(v)) throw Error(overflow);
-  const SvgStyles styles(c, opt);
-  const int digits = coordinate_digits(b, big);
+  const DrawingFrame frame = drawing_frame(c, opt.size);
+  const Vec2 lo = frame.lo, extent = frame.extent;
+  const double px = frame.scale, big = frame.diameter;
+  const CurveStyles styles(c, opt);
+  const int digits = coordinate_digits(c, frame);
 
   std::string s;  // written out every megabyte or so: memory stays flat whatever the curve
   auto flush = [&] {
@@ -76,7 +58,7 @@ void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
       if (i > 0) s += "\"/>\n";
       style = next;
       s += "<path fill=\"" + style.fill + "\" stroke=\"" + style.stroke + "\" stroke-width=\"";
-      if (!std::isfinite(style.width / px)) throw Error(overflow);
+      if (!std::isfinite(style.width / px)) throw Error(drawing_overflow);
       put(s, style.width / px);
       s += "\" d=\"";
     }

@@ -10,6 +10,7 @@ namespace selfsim::io {
 void write_vtp(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress);  // vtk_files.cpp
 void write_vtu(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress);  // vtk_files.cpp
 void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress);  // svg_file.cpp
+void write_eps(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress);  // eps_file.cpp
 void write_stl(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress);  // mesh_files.cpp
 void write_obj(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress);  // mesh_files.cpp
 void write_ply(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress);  // mesh_files.cpp

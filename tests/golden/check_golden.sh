@@ -37,6 +37,10 @@ if [ "$want" != "$got" ]; then
 fi
 for f in $want; do
   [ -f "$actual/$f" ] || continue
+  if [[ "$f" == *.eps ]]; then  # selfsim does not read EPS back: the bytes must match
+    cmp -s "$expected/$f" "$actual/$f" || { echo "$case/$f: bytes differ from the expected file"; status=1; }
+    continue
+  fi
   if ! out=$("$selfsim" diff "$expected/$f" "$actual/$f" --tol 1e-9); then
     echo "$case/$f:"
     echo "$out"

@@ -34,14 +34,14 @@ std::string options_error(const std::string& ext, const std::vector<std::string>
 }  // namespace
 
 TEST(Format, FindFormatKnowsEachExtension) {
-  for (const char* ext : {".vtp", ".vtu", ".svg", ".stl", ".obj", ".ply"}) {
+  for (const char* ext : {".vtp", ".vtu", ".svg", ".eps", ".stl", ".obj", ".ply"}) {
     const io::Format* f = io::find_format(ext);
     ASSERT_NE(f, nullptr) << ext;
     EXPECT_EQ(f->extension, ext);
     EXPECT_FALSE(f->description.empty()) << ext;
     EXPECT_NE(f->write, nullptr) << ext;
   }
-  EXPECT_EQ(io::formats().size(), 6u);
+  EXPECT_EQ(io::formats().size(), 7u);
   EXPECT_EQ(io::find_format(".dxf"), nullptr);
   EXPECT_EQ(io::find_format("vtp"), nullptr);  // the dot is part of the extension
   EXPECT_EQ(io::find_format(""), nullptr);
@@ -90,7 +90,7 @@ TEST(Format, FormatForFindsTheFormat) {
 
 TEST(Format, FormatForUnknownExtensionListsTheValidOnes) {
   EXPECT_EQ(format_error("c.dxf", ValueKind::Curve),
-            "cannot save a curve as '.dxf' (file 'c.dxf'), expected one of: '.svg', '.vtp', '.vtu'");
+            "cannot save a curve as '.dxf' (file 'c.dxf'), expected one of: '.eps', '.svg', '.vtp', '.vtu'");
   EXPECT_EQ(format_error("out/m.dxf", ValueKind::Mesh),
             "cannot save a mesh as '.dxf' (file 'm.dxf'), expected one of: '.obj', '.ply', '.stl', '.vtp', '.vtu'");
   EXPECT_EQ(format_error("noext", ValueKind::Curve3),
@@ -101,19 +101,22 @@ TEST(Format, FormatForAFormatThatCannotHoldTheValue) {
   EXPECT_EQ(format_error("m.svg", ValueKind::Mesh),
             "cannot save a mesh as '.svg' (file 'm.svg'), expected one of: '.obj', '.ply', '.stl', '.vtp', '.vtu'");
   EXPECT_EQ(format_error("c.stl", ValueKind::Curve),
-            "cannot save a curve as '.stl' (file 'c.stl'), expected one of: '.svg', '.vtp', '.vtu'");
+            "cannot save a curve as '.stl' (file 'c.stl'), expected one of: '.eps', '.svg', '.vtp', '.vtu'");
   EXPECT_EQ(format_error("helix.svg", ValueKind::Curve3),
             "cannot save a 3D curve as '.svg' (file 'helix.svg'), expected one of: '.vtp', '.vtu'");
 }
 
 TEST(Format, CheckOptionsRefusesAnotherFormatsOption) {
-  EXPECT_EQ(options_error(".stl", {"stroke"}),
-            "option 'stroke' does not apply to '.stl' files (it is an option of '.svg'; '.stl' takes no options)");
-  EXPECT_EQ(options_error(".vtp", {"size"}),
-            "option 'size' does not apply to '.vtp' files (it is an option of '.svg'; '.vtp' takes no options)");
+  EXPECT_EQ(
+      options_error(".stl", {"stroke"}),
+      "option 'stroke' does not apply to '.stl' files (it is an option of '.svg', '.eps'; '.stl' takes no options)");
+  EXPECT_EQ(
+      options_error(".vtp", {"size"}),
+      "option 'size' does not apply to '.vtp' files (it is an option of '.svg', '.eps'; '.vtp' takes no options)");
   // The first offending name is the one reported.
-  EXPECT_EQ(options_error(".ply", {"colour", "fill", "stroke"}),
-            "option 'fill' does not apply to '.ply' files (it is an option of '.svg'; '.ply' takes no options)");
+  EXPECT_EQ(
+      options_error(".ply", {"colour", "fill", "stroke"}),
+      "option 'fill' does not apply to '.ply' files (it is an option of '.svg', '.eps'; '.ply' takes no options)");
 }
 
 TEST(Format, CheckOptionsPassesOwnOptionsAndLeavesUnknownNames) {

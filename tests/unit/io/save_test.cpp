@@ -57,7 +57,7 @@ TEST(Save, UnknownExtensionIsRefusedAndLeavesNothing) {
     FAIL();
   } catch (const Error& e) {
     EXPECT_EQ(std::string(e.what()),
-              "cannot save a curve as '.dxf' (file 'c.dxf'), expected one of: '.svg', '.vtp', '.vtu'");
+              "cannot save a curve as '.dxf' (file 'c.dxf'), expected one of: '.eps', '.svg', '.vtp', '.vtu'");
   }
   EXPECT_TRUE(fs::is_empty(dir.path));
 }

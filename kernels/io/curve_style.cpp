@@ -1,4 +1,4 @@
-#include "kernels/io/svg_style.h"
+#include "kernels/io/curve_style.h"
 
 #include <algorithm>
 #include <cmath>
@@ -33,7 +33,26 @@ const T& cycled(const std::vector<T>& palette, std::size_t member) {
 
 }  // namespace
 
-SvgStyles::SvgStyles(const Polyline& c, const SaveOptions& opt)
+DrawingFrame drawing_frame(const Polyline& c, double size) {
+  const BBox2 b = c.bbox();
+  const Vec2 own = b.size();
+  const double big = std::max({own.x, own.y, 1e-300});
+  const double margin = 0.02 * big;
+  DrawingFrame f{b.min - Vec2{margin, margin}, own + Vec2{2 * margin, 2 * margin}, 0, big};
+  f.scale = size / std::max(f.extent.x, f.extent.y);
+  for (double v : {f.lo.x, f.lo.y + f.extent.y, f.extent.x * f.scale, f.extent.y * f.scale, 1 / f.scale})
+    if (!std::isfinite(v)) throw Error(drawing_overflow);
+  return f;
+}
+
+int coordinate_digits(const Polyline& c, const DrawingFrame& f) {
+  const BBox2 b = c.bbox();
+  const double far = std::max({std::abs(b.min.x), std::abs(b.min.y), std::abs(b.max.x), std::abs(b.max.y)});
+  if (!(far > f.diameter)) return 9;
+  return static_cast<int>(std::min(17.0, 9 + std::ceil(std::log10(far / f.diameter))));
+}
+
+CurveStyles::CurveStyles(const Polyline& c, const SaveOptions& opt)
     : opt_(opt),
       member_(style_field(c, "curve", 1)),
       color_(style_field(c, "color", 3)),
@@ -69,7 +88,7 @@ SvgStyles::SvgStyles(const Polyline& c, const SaveOptions& opt)
   }
 }
 
-PathStyle SvgStyles::at(std::size_t path) const {
+PathStyle CurveStyles::at(std::size_t path) const {
   // Checked whole and in range where a palette reads it; any member is the first otherwise.
   const double number = member_ ? member_->at(path) : 1;
   const std::size_t member = number >= 1 && number <= 2147483647 ? static_cast<std::size_t>(number - 1) : 0;

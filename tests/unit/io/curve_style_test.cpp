@@ -1,4 +1,4 @@
-#include "kernels/io/svg_style.h"
+#include "kernels/io/curve_style.h"
 
 #include <gtest/gtest.h>
 
@@ -9,8 +9,8 @@
 #include "kernels/io/read.h"
 
 using namespace selfsim;
+using io::CurveStyles;
 using io::PathStyle;
-using io::SvgStyles;
 using io_fixtures::TempDir;
 using io_fixtures::two_paths;
 
@@ -42,44 +42,44 @@ std::size_t count(const std::string& text, const std::string& word) {
 
 }  // namespace
 
-TEST(SvgStyle, FieldsGiveEachPathItsStyle) {
+TEST(CurveStyle, FieldsGiveEachPathItsStyle) {
   const Polyline c = styled();
-  const SvgStyles s(c, {});
+  const CurveStyles s(c, {});
   EXPECT_EQ(s.at(0), (PathStyle{"#ff0000", 1, "none"}));
   EXPECT_EQ(s.at(1), (PathStyle{"#0000ff", 3, "#ffcc00"}));
   EXPECT_EQ(s.at(2), s.at(1));
 }
 
-TEST(SvgStyle, GivenOptionsOverrideFieldsAndCycleOverMembers) {
+TEST(CurveStyle, GivenOptionsOverrideFieldsAndCycleOverMembers) {
   const Polyline c = styled();
   const io::SaveOptions opt{
       .stroke = {"red", "green"}, .stroke_width = {2}, .fill = {"none"}, .given = {"stroke", "stroke_width", "fill"}};
-  const SvgStyles s(c, opt);
+  const CurveStyles s(c, opt);
   EXPECT_EQ(s.at(0), (PathStyle{"red", 2, "none"}));
   EXPECT_EQ(s.at(1), (PathStyle{"green", 2, "none"}));
   // Without a `curve` field the whole curve is one member: the palette's first entry.
   Polyline plain = two_paths();
-  const SvgStyles p(plain, opt);
+  const CurveStyles p(plain, opt);
   EXPECT_EQ(p.at(1).stroke, "red");
 }
 
-TEST(SvgStyle, OutOfRangeFieldsAreRefused) {
+TEST(CurveStyle, OutOfRangeFieldsAreRefused) {
   Polyline c = styled();
   c.cell_fields.set(real_field("color", {1, 0, 0, 0, 0, 255, 0, 0, 1}, 3));
   try {
-    SvgStyles s(c, {});
+    CurveStyles s(c, {});
     FAIL() << "expected an error";
   } catch (const Error& e) {
     EXPECT_STREQ(e.what(), "cell field 'color' of path 2 must hold red, green, blue in [0, 1]");
   }
   c = styled();
   c.cell_fields.set(real_field("width", {1, 0, 3}));
-  EXPECT_THROW(SvgStyles(c, {}), Error);
+  EXPECT_THROW(CurveStyles(c, {}), Error);
   // An overriding option makes the field irrelevant.
-  EXPECT_NO_THROW(SvgStyles(c, {.stroke_width = {1}, .given = {"stroke_width"}}));
+  EXPECT_NO_THROW(CurveStyles(c, {.stroke_width = {1}, .given = {"stroke_width"}}));
 }
 
-TEST(SvgStyle, OnePathElementPerRunOfOneStyle) {
+TEST(CurveStyle, OnePathElementPerRunOfOneStyle) {
   TempDir dir;
   const Polyline c = styled();
   const auto f = dir.path / "g.svg";

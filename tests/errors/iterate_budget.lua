@@ -1,0 +1,3 @@
+-- args: --max-points 1000000
+local P = bspline { points = { { 0, 0 }, { 0.5, 0.5 }, { 1, 0 } } }
+local h = hoist.iterate(P, { multiplicity = 5, generations = 20 })

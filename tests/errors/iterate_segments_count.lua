@@ -1,0 +1,2 @@
+local P = bspline { points = { { 0, 0 }, { 0.5, 0.5 }, { 1, 0 } } }
+local h = hoist.iterate(P, { multiplicity = 2.5, generations = 2, segments = { "identity", "rotate" } })
