@@ -1,10 +1,16 @@
 #include "kernels/hoist/multiply.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <atomic>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "kernels/geom/check.h"
 #include "kernels/geom/error.h"
+#include "kernels/geom/huge_pages.h"
 
 namespace selfsim::hoist {
 
@@ -48,47 +54,83 @@ Polyline multiply(const Polyline& c, const MultiplyOptions& opt, Progress& progr
   if (!(length > 0)) throw Error("the curve to multiply has no length");
   const std::vector<double> t = parameter_of(c);
 
-  Polyline out;
-  std::vector<double> out_t;
-  out.points.reserve(static_cast<std::size_t>(multiplied_points(pts.size(), m)));
-  out_t.reserve(out.points.capacity());
-  out.points.push_back({0, 0});
-  out_t.push_back(0);
+  const std::size_t n = pts.size();
   const double whole = std::floor(m + 1e-12);  // copies taken whole; a last one only in part
-  const double cut = (m - whole) * length;     // arclength of the partial copy (0 when m is whole)
-  for (std::size_t i = 0; static_cast<double>(i) < n_copies; ++i) {
-    if (progress.cancelled()) throw Cancelled();  // once per copy: a copy is at most the budget
+  const auto whole_copies = static_cast<std::size_t>(whole);
+  auto copy_map = [&](std::size_t i) {
     const SegmentTransform tr =
         opt.transforms.empty() ? SegmentTransform::Identity : opt.transforms[i % opt.transforms.size()];
-    const Similarity2 map = Similarity2{{1, 0}, {static_cast<double>(i), 0}}.after(unit_map(tr));
-    const bool back = walks_backwards(tr);
-    const bool partial = static_cast<double>(i) >= whole;
+    return std::pair{Similarity2{{1, 0}, {static_cast<double>(i), 0}}.after(unit_map(tr)), walks_backwards(tr)};
+  };
+
+  // The partial copy first (walked until its arclength reaches the fraction m − ⌊m⌋ of C's), since its
+  // end decides the similarity that puts the whole result back onto (0,0)–(1,0).
+  std::vector<Vec2> tail;
+  std::vector<double> tail_t;
+  if (n_copies > whole) {
+    const auto [map, back] = copy_map(whole_copies);
+    const double cut = (m - whole) * length;
     double walked = 0;
-    for (std::size_t k = 1; k < pts.size(); ++k) {
-      const std::size_t j = back ? pts.size() - 1 - k : k;  // the point reached
-      const std::size_t from = back ? j + 1 : j - 1;        // the point left
+    for (std::size_t k = 1; k < n; ++k) {
+      const std::size_t j = back ? n - 1 - k : k;     // the point reached
+      const std::size_t from = back ? j + 1 : j - 1;  // the point left
       const double tj = back ? 1 - t[j] : t[j];
-      if (partial) {
-        const double step = norm(pts[j] - pts[from]);
-        if (walked + step >= cut) {  // the cut falls on this segment: end there
-          const double w = step > 0 ? (cut - walked) / step : 1;
-          const double tf = back ? 1 - t[from] : t[from];
-          out.points.push_back(map(lerp(pts[from], pts[j], w)));
-          out_t.push_back((static_cast<double>(i) + tf + w * (tj - tf)) / m);
-          break;
-        }
-        walked += step;
+      const double step = norm(pts[j] - pts[from]);
+      if (walked + step >= cut) {  // the cut falls on this segment: end there
+        const double w = step > 0 ? (cut - walked) / step : 1;
+        const double tf = back ? 1 - t[from] : t[from];
+        tail.push_back(map(lerp(pts[from], pts[j], w)));
+        tail_t.push_back((whole + tf + w * (tj - tf)) / m);
+        break;
       }
-      out.points.push_back(map(pts[j]));
-      out_t.push_back((static_cast<double>(i) + tj) / m);
+      walked += step;
+      tail.push_back(map(pts[j]));
+      tail_t.push_back((whole + tj) / m);
     }
   }
   // Back onto (0,0)–(1,0): by 1/m for whole m (exactly), by the similarity taking the end to (1,0) otherwise.
-  const Vec2 end = m == whole ? Vec2{m, 0} : out.points.back();
+  const Vec2 end = tail.empty() ? Vec2{m, 0} : tail.back();
   if (!(norm(end) > 1e-12 * m))
     throw Error("the multiplied curve ends where it starts: it cannot be scaled back to (1,0)");
   const Vec2 a = Vec2{1, 0} / end;
-  for (Vec2& p : out.points) p = a * p;
+
+  // The whole copies, point k of the result from copy (k − 1)/(n − 1): every point has its own place, so
+  // threads fill fixed chunks (and first-touch their own pages, which on a fresh array costs more than the
+  // arithmetic). The bytes do not depend on the thread count.
+  const std::size_t body = 1 + whole_copies * (n - 1), total = body + tail.size();
+  Polyline out;
+  out.points.resize(total);
+  advise_huge_pages(out.points);
+  std::vector<double> out_t;
+  out_t.reserve(total);
+  advise_huge_pages(out_t);
+  out_t.resize(total);
+  std::vector<std::pair<Similarity2, bool>> maps(whole_copies);
+  for (std::size_t i = 0; i < whole_copies; ++i) maps[i] = copy_map(i);
+  out.points[0] = {0, 0};
+  out_t[0] = 0;
+  std::atomic<bool> stop{false};
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(1, body, std::size_t{1} << 14),
+      [&](const tbb::blocked_range<std::size_t>& r) {
+        if (stop.load(std::memory_order_relaxed) || progress.cancelled()) {
+          stop = true;
+          return;
+        }
+        for (std::size_t k = r.begin(); k < r.end(); ++k) {
+          const std::size_t i = (k - 1) / (n - 1), step = (k - 1) % (n - 1) + 1;
+          const auto& [map, back] = maps[i];
+          const std::size_t j = back ? n - 1 - step : step;
+          out.points[k] = a * map(pts[j]);
+          out_t[k] = (static_cast<double>(i) + (back ? 1 - t[j] : t[j])) / m;
+        }
+      },
+      tbb::simple_partitioner());
+  if (stop) throw Cancelled();
+  for (std::size_t k = 0; k < tail.size(); ++k) {
+    out.points[body + k] = a * tail[k];
+    out_t[body + k] = tail_t[k];
+  }
   out.points.back() = {1, 0};
   out.close_path();
   for (const Field& f : c.point_fields.list)
