@@ -23,10 +23,16 @@ void push_point(lua_State* L, Vec3 p) { push_coordinates(L, {p.x, p.y, p.z}); }
 
 namespace {
 
+// ", level 8" (or ", generation 4") where a kernel recorded one for the whole curve.
+std::string recorded(const Fields& f, const char* name) {
+  const Field* field = f.find(name);
+  if (field == nullptr || !field->uniform) return "";
+  return std::string(", ") + name + " " + std::to_string(static_cast<long long>(field->at(0)));
+}
+
 std::string summary(const Polyline& c) {
-  const Field* level = c.point_fields.find("level");
   return "Curve(" + std::to_string(c.points.size()) + " points, " + std::to_string(c.paths()) + " paths" +
-         (level && level->uniform ? ", level " + std::to_string(static_cast<long long>(level->at(0))) : "") + ")";
+         recorded(c.point_fields, "level") + recorded(c.point_fields, "generation") + ")";
 }
 std::string summary(const Polyline3& c) {
   return "Curve3(" + std::to_string(c.points.size()) + " points, " + std::to_string(c.paths()) + " paths)";
