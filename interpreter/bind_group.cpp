@@ -192,9 +192,7 @@ int make_concat(lua_State* L) {
     }
     std::vector<Held<Polyline>> held;
     for (int i = 1; i <= n; ++i) {
-      held.push_back(test_curve(L, i));
-      if (!held.back())
-        held.back() = std::make_shared<const Polyline>(to_polyline(L, i, "argument " + std::to_string(i)));
+      held.push_back(held_curve(L, i, "argument " + std::to_string(i)));
     }
     return push_concat<Vec2>(L, held);
   });

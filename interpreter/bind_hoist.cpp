@@ -93,21 +93,21 @@ int make_spline(lua_State* L, const char* fn, hoist::SplineKind kind) {
 
 int hoist_onto(lua_State* L) {
   return call_kernel(L, "hoist.onto", [&] {
-    const Polyline q = to_polyline(L, 1, "argument 1 (the path Q)");
-    const Polyline p = to_polyline(L, 2, "argument 2 (the base curve P)");
+    const Held<Polyline> q = held_curve(L, 1, "argument 1 (the path Q)");
+    const Held<Polyline> p = held_curve(L, 2, "argument 2 (the base curve P)");
     Options o(L, 3);
     const Boundary boundary = read_boundary(o);
     o.finish();
-    const hoist::BaseCurve base(p);
-    check_run_budget(L, static_cast<double>(q.points.size()), "hoist.onto");
-    push_curve(L, hoist::hoist_onto(q, base, boundary, RunContext::of(L)));
+    const hoist::BaseCurve base(*p);
+    check_run_budget(L, static_cast<double>(q->points.size()), "hoist.onto");
+    push_curve(L, hoist::hoist_onto(*q, base, boundary, RunContext::of(L)));
     return 1;
   });
 }
 
 int hoist_multiply(lua_State* L) {
   return call_kernel(L, "hoist.multiply", [&] {
-    const Polyline c = to_polyline(L, 1, "argument 1 (the curve)");
+    const Held<Polyline> c = held_curve(L, 1, "argument 1 (the curve)");
     hoist::MultiplyOptions opt;
     opt.multiplicity = finite_number(L, 2, "argument 2 (the multiplicity)");
     opt.validate();
@@ -116,7 +116,7 @@ int hoist_multiply(lua_State* L) {
     o.finish();
     push_curve(L, with_budget(L, [&](const PointBudget& b) {
                  opt.budget = b;
-                 return hoist::multiply(c, opt, RunContext::of(L));
+                 return hoist::multiply(*c, opt, RunContext::of(L));
                }));
     return 1;
   });
@@ -124,7 +124,7 @@ int hoist_multiply(lua_State* L) {
 
 int hoist_iterate(lua_State* L) {
   return call_kernel(L, "hoist.iterate", [&] {
-    const Polyline p = to_polyline(L, 1, "argument 1 (the base curve P)");
+    const Held<Polyline> p = held_curve(L, 1, "argument 1 (the base curve P)");
     Options o(L, 2);
     o.require("multiplicity", "copies of the curve per generation, e.g. multiplicity = 3");
     o.require("generations", "rounds of multiplying and hoisting, e.g. generations = 4");
@@ -145,7 +145,7 @@ int hoist_iterate(lua_State* L) {
     opt.validate();
     push_curve(L, with_budget(L, [&](const PointBudget& b) {
                  opt.budget = b;
-                 return hoist::iterate(p, opt, RunContext::of(L));
+                 return hoist::iterate(*p, opt, RunContext::of(L));
                }));
     return 1;
   });
@@ -174,10 +174,10 @@ int hoist_rotate(lua_State* L) {
 
 int make_simplify(lua_State* L) {
   return call_kernel(L, "simplify", [&] {
-    const Polyline c = to_polyline(L, 1, "argument 1 (the curve)");
+    const Held<Polyline> c = held_curve(L, 1, "argument 1 (the curve)");
     const double tolerance = finite_number(L, 2, "argument 2 (the tolerance)");
-    check_run_budget(L, static_cast<double>(c.points.size()), "simplify");
-    push_curve(L, hoist::simplify(c, tolerance, RunContext::of(L)));
+    check_run_budget(L, static_cast<double>(c->points.size()), "simplify");
+    push_curve(L, hoist::simplify(*c, tolerance, RunContext::of(L)));
     return 1;
   });
 }

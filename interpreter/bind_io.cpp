@@ -57,6 +57,10 @@ io::SaveOptions read_save_options(lua_State* L, int index, const io::Format& f) 
     }
     lua_pop(L, 1);
   }
+  // With a physical size the stroke width is a pen's, in that unit: 0.3 mm unless given (1 mm would be a
+  // marker, 1 in a blob).
+  if (!s.size_unit.empty() && std::find(s.given.begin(), s.given.end(), "stroke_width") == s.given.end())
+    s.stroke_width = {s.size_unit == "mm" ? 0.3 : s.size_unit == "cm" ? 0.03 : 0.3 / 25.4};
   io::check_options(f, o.unread());
   o.finish();
   return s;

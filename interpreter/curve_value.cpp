@@ -94,6 +94,11 @@ Polyline to_polyline(lua_State* L, int index, const std::string& what) {
   return Polyline::single(read_point_list<Vec2>(L, lua_absindex(L, index), what));
 }
 
+Held<Polyline> held_curve(lua_State* L, int index, const std::string& what) {
+  if (Held<Polyline> c = test_curve(L, index)) return c;
+  return std::make_shared<const Polyline>(to_polyline(L, index, what));
+}
+
 void open_curve(lua_State* L) {
   register_geometry<Polyline>(L, {{"segments", curve_segments<Polyline>},
                                   {"paths", curve_paths<Polyline>},

@@ -17,6 +17,9 @@ inline void push_curve(lua_State* L, Polyline&& c) { push_geometry(L, std::move(
 inline Held<Polyline> test_curve(lua_State* L, int index) { return test_geometry<Polyline>(L, index); }
 // A curve userdata, or a table of {x, y} points read as one open path. Throws Error naming `what`.
 Polyline to_polyline(lua_State* L, int index, const std::string& what);
+// The same without copying a curve: the value itself, held for the call (a curve of a hundred million
+// points is not duplicated to be read), or a new one read from a table.
+Held<Polyline> held_curve(lua_State* L, int index, const std::string& what);
 
 // Registers the Curve and Curve3 types and the polyline{} / polygon{} constructors.
 void open_curve(lua_State* L);

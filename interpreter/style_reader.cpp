@@ -7,12 +7,11 @@ namespace selfsim::interp {
 
 namespace {
 
-std::string colour(lua_State* L, const std::string& what, bool none_allowed) {
-  const std::string expected =
-      std::string(" must be a CSS colour name, #rgb") + (none_allowed ? ", #rrggbb or 'none'" : " or #rrggbb");
+std::string colour(lua_State* L, const std::string& what) {
+  const std::string expected = " must be a CSS colour name, #rgb, #rrggbb or 'none'";
   if (lua_type(L, -1) != LUA_TSTRING) throw Error(what + expected + ", got " + describe(L, -1));
   const std::string value = text_value(L, -1, what);
-  if (none_allowed && lower_case(value) == "none") return "none";
+  if (lower_case(value) == "none") return "none";
   if (io::is_colour(value)) return value;
   if (const std::string near = suggestion(lower_case(value), io::colour_names()); !near.empty())
     throw Error(what + ": unknown colour '" + shown_text(value) + "' (did you mean '" + near + "'?)");
@@ -48,11 +47,10 @@ std::vector<T> one_or_list(lua_State* L, Options& o, const char* key, bool palet
 
 StyleOptions read_style(lua_State* L, Options& o, bool palette) {
   StyleOptions s;
-  s.stroke =
-      one_or_list<std::string>(L, o, "stroke", palette, [&](const std::string& w) { return colour(L, w, false); });
+  s.stroke = one_or_list<std::string>(L, o, "stroke", palette, [&](const std::string& w) { return colour(L, w); });
   s.stroke_width =
       one_or_list<double>(L, o, "stroke_width", palette, [&](const std::string& w) { return finite_number(L, -1, w); });
-  s.fill = one_or_list<std::string>(L, o, "fill", palette, [&](const std::string& w) { return colour(L, w, true); });
+  s.fill = one_or_list<std::string>(L, o, "fill", palette, [&](const std::string& w) { return colour(L, w); });
   return s;
 }
 

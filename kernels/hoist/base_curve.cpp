@@ -24,12 +24,13 @@ BaseCurve::BaseCurve(const Polyline& p) {
   if (tangent != nullptr && tangent->components != 2) tangent = nullptr;
   // Samples closer than rounding add nothing and would make a zero-length interval: dropped.
   for (std::size_t i = 0; i < pts.size(); ++i) {
-    if (!points_.empty() && norm(pts[i] - points_.back()) <= 1e-15) continue;
-    Vec2 d;
-    if (tangent != nullptr) d = {tangent->at(i, 0), tangent->at(i, 1)};
-    if (!(norm(d) > 0) || !is_finite(d)) d = pts[std::min(i + 1, pts.size() - 1)] - pts[i > 0 ? i - 1 : 0];
-    if (!(norm(d) > 0)) d = {1, 0};
+    if (!points_.empty() && pts[i] == points_.back()) continue;
     points_.push_back(pts[i]);
+    if (tangent == nullptr) continue;
+    Vec2 d{tangent->at(i, 0), tangent->at(i, 1)};
+    // A sample without a usable tangent takes the direction between its neighbours.
+    if (!(norm(d) > 0) || !is_finite(d)) d = pts[std::min(i + 1, pts.size() - 1)] - pts[i > 0 ? i - 1 : 0];
+    if (!(norm(d) > 0) || !is_finite(d)) d = {1, 0};
     tangents_.push_back(unit(d));
   }
   if (points_.size() < 2) throw Error("the base curve has no length");
@@ -46,6 +47,7 @@ Frame BaseCurve::inside(double t) const {
   const auto it = std::upper_bound(t_.begin() + 1, t_.end() - 1, t);
   const std::size_t i = static_cast<std::size_t>(it - t_.begin()) - 1;
   const double w = std::clamp((t - t_[i]) / (t_[i + 1] - t_[i]), 0.0, 1.0);
+  if (tangents_.empty()) return {lerp(points_[i], points_[i + 1], w), unit(points_[i + 1] - points_[i])};
   Vec2 d = lerp(tangents_[i], tangents_[i + 1], w);
   // Opposite tangents at the two ends of an interval (a cusp) average to nothing: the chord then.
   if (!(norm(d) > 1e-12)) d = points_[i + 1] - points_[i];

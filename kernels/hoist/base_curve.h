@@ -33,8 +33,10 @@ struct Frame {
 class BaseCurve {
  public:
   // P: one path from (0,0) to (1,0) of positive length. Its `tangent` point field (2 components, as
-  // sample_spline records) gives the tangents; without one, each sample takes the direction between its
-  // neighbours (a polyline's own turns). Throws Error naming what is wrong.
+  // sample_spline records) gives the tangents at the samples, interpolated between them. Without one, P is
+  // a polyline taken as it is: each segment's own direction is the frame along it (so hoisting onto a
+  // polyline places Q on every segment as substitution would, corners and U-turns included). Repeated
+  // points are skipped. Throws Error naming what is wrong.
   explicit BaseCurve(const Polyline& p);
 
   // P at fraction t of its arclength, t any finite number, extended outside [0, 1] by `mode`.
@@ -46,8 +48,8 @@ class BaseCurve {
  private:
   Frame inside(double t) const;  // t in [0, 1]
 
-  std::vector<Vec2> points_, tangents_;
-  std::vector<double> t_;  // fraction of arclength at each sample, increasing from 0 to 1
+  std::vector<Vec2> points_, tangents_;  // tangents_ empty: P is a polyline, framed segment by segment
+  std::vector<double> t_;                // fraction of arclength at each sample, increasing from 0 to 1
   double length_ = 0;
 };
 

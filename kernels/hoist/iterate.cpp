@@ -28,8 +28,10 @@ double iterated_points(std::size_t n, const IterateOptions& opt) {
 Polyline iterate(const Polyline& p, const IterateOptions& opt, Progress& progress) {
   opt.validate();
   const BaseCurve base(p);
-  check_budget(iterated_points(p.points.size(), opt), opt.budget,
-               "generations " + std::to_string(opt.generations) + " at multiplicity " + number_text(opt.multiplicity));
+  const std::string what =
+      "generations " + std::to_string(opt.generations) + " at multiplicity " + number_text(opt.multiplicity) +
+      (opt.multiplicity == std::floor(opt.multiplicity) ? "" : " (an estimate for a fractional multiplicity)");
+  check_budget(iterated_points(p.points.size(), opt), opt.budget, what);
   progress.start("iterating");
   Polyline c;
   c.points = p.points;
@@ -38,8 +40,8 @@ Polyline iterate(const Polyline& p, const IterateOptions& opt, Progress& progres
   for (int g = 0; g < opt.generations; ++g) {
     ProgressStage stage(progress, static_cast<double>(g) / opt.generations,
                         static_cast<double>(g + 1) / opt.generations);
-    MultiplyOptions m{opt.multiplicity, opt.transforms, {}};
-    m.budget.limit = highest_max_points;  // checked for the whole iteration above
+    MultiplyOptions m{opt.multiplicity, opt.transforms, opt.budget};
+    m.budget.held += static_cast<double>(c.points.size());  // C is held while the next generation is made
     c = hoist_onto(multiply(c, m, stage), base, opt.boundary, stage);
     progress.fraction(static_cast<double>(g + 1) / opt.generations);
   }

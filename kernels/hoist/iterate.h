@@ -24,8 +24,9 @@ struct IterateOptions {
   void validate() const;
 };
 
-// Points after g generations from a P of n samples: (n − 1)·⌈m⌉^g + 1 (plus one cut point a generation for
-// a non-integer m), with room for the previous generation, which is held while the next is made.
+// Points after g generations from a P of n samples: (n − 1)·m^g + 1 (exactly for whole m, about that for a
+// non-integer m), with room for the previous generation, which is held while the next is made. Checked
+// before any work; each generation's MULTIPLY checks its exact count again before allocating.
 double iterated_points(std::size_t n, const IterateOptions& opt);
 
 // The iterated curve: one path from (0,0) to (1,0); point fields `t` (multiply.h) and `generation`

@@ -37,7 +37,7 @@ void MultiplyOptions::validate() const { check_between(multiplicity, 1, 1e6, "mu
 double copies(double multiplicity) { return std::ceil(multiplicity - 1e-12); }
 
 double multiplied_points(std::size_t c_points, double multiplicity) {
-  return copies(multiplicity) * static_cast<double>(c_points - 1) + 2;  // + 1, and + 1 for a partial copy's cut
+  return multiplicity * static_cast<double>(c_points - 1) + 1;
 }
 
 Polyline multiply(const Polyline& c, const MultiplyOptions& opt, Progress& progress) {
@@ -49,7 +49,6 @@ Polyline multiply(const Polyline& c, const MultiplyOptions& opt, Progress& progr
     throw Error("the curve to multiply must run from (0,0) to (1,0)");
   const double m = opt.multiplicity;
   const double n_copies = copies(m);
-  check_budget(multiplied_points(pts.size(), m), opt.budget, "multiplicity " + number_text(m));
   const double length = c.length();
   if (!(length > 0)) throw Error("the curve to multiply has no length");
   const std::vector<double> t = parameter_of(c);
@@ -90,21 +89,31 @@ Polyline multiply(const Polyline& c, const MultiplyOptions& opt, Progress& progr
   }
   // Back onto (0,0)–(1,0): by 1/m for whole m (exactly), by the similarity taking the end to (1,0) otherwise.
   const Vec2 end = tail.empty() ? Vec2{m, 0} : tail.back();
-  if (!(norm(end) > 1e-12 * m))
-    throw Error("the multiplied curve ends where it starts: it cannot be scaled back to (1,0)");
+  // Scaling back an end that lies almost where the curve starts would blow the curve up by as much.
+  if (!(norm(end) > 1e-6 * m))
+    throw Error(std::string("the multiplied curve ends ") +
+                (norm(end) > 0 ? "within a millionth of its size of" : "at") +
+                " its start: it cannot be scaled back onto (0,0)-(1,0) (try another multiplicity)");
   const Vec2 a = Vec2{1, 0} / end;
 
   // The whole copies, point k of the result from copy (k − 1)/(n − 1): every point has its own place, so
   // threads fill fixed chunks (and first-touch their own pages, which on a fresh array costs more than the
   // arithmetic). The bytes do not depend on the thread count.
   const std::size_t body = 1 + whole_copies * (n - 1), total = body + tail.size();
+  // The exact count, before the result is allocated (the partial copy above is at most C's size).
+  check_budget(static_cast<double>(whole_copies) * static_cast<double>(n - 1) + 1 + static_cast<double>(tail.size()),
+               opt.budget, "multiplicity " + number_text(m));
   Polyline out;
   out.points.resize(total);
   advise_huge_pages(out.points);
   std::vector<double> out_t;
   out_t.reserve(total);
   advise_huge_pages(out_t);
-  out_t.resize(total);
+  // std::vector zero-fills as it grows: in steps, so a stop is seen during a fill of gigabytes too.
+  while (out_t.size() < total) {
+    if (progress.cancelled()) throw Cancelled();
+    out_t.resize(std::min(total, out_t.size() + (std::size_t{1} << 22)));
+  }
   std::vector<std::pair<Similarity2, bool>> maps(whole_copies);
   for (std::size_t i = 0; i < whole_copies; ++i) maps[i] = copy_map(i);
   out.points[0] = {0, 0};

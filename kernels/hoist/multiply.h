@@ -21,8 +21,11 @@ struct MultiplyOptions {
   void validate() const;
 };
 
-// The number of copies (⌈m⌉, a last partial copy counted) and the points the result will have.
+// The number of copies (⌈m⌉, a last partial copy counted).
 double copies(double multiplicity);
+// The points the result will have: exactly for whole m; for a non-integer m about that many (the partial
+// copy's share depends on where C's points lie along it). multiply() checks its exact count against the
+// budget before allocating.
 double multiplied_points(std::size_t c_points, double multiplicity);
 
 // C multiplied: one path. Point field `t` (where along the limit curve a point lies, in [0, 1]) is C's own

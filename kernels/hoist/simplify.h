@@ -1,7 +1,8 @@
 // Fewer points within a tolerance: seed 000 §3.2 rebuilt its final curves with a smaller number of points in
 // an illustration program; selfsim does it itself with the Ramer–Douglas–Peucker rule: a path keeps its ends,
 // and a run of points between two kept ones is replaced by the chord when every point of the run lies within
-// `tolerance` of it, otherwise the farthest point is kept and both halves are looked at again.
+// `tolerance` of it, otherwise the farthest point is kept (the middle one where that lies near an end of the
+// run: O(n log n) work whatever the curve) and both halves are looked at again.
 #pragma once
 
 #include "kernels/geom/polyline.h"

@@ -61,6 +61,7 @@ struct Sampler {
       refine(m, pm, b, pb, depth + 1);
       return;
     }
+    if (pb == points.back()) return;  // a degenerate span (repeated control points): nothing new
     if (static_cast<double>(points.size()) + 1 > budget.left())
       check_budget(static_cast<double>(points.size()) + 1, budget,
                    "sampling the spline at flatness " + number_text(flatness));
@@ -77,8 +78,14 @@ void SplineOptions::validate() const {
                 std::to_string(points.size()));
   for (std::size_t i = 0; i < points.size(); ++i)
     if (!is_finite(points[i])) throw Error("option 'points': point " + std::to_string(i + 1) + " is not finite");
-  if (norm(points.back() - points.front()) == 0)
-    throw Error("option 'points': the first and last control points coincide (a base curve runs from (0,0) to (1,0))");
+  // Normalising maps the ends a unit apart: ends closer than a billionth of the control polygon's size would
+  // blow the curve up by as much (and equal ends cannot be mapped at all).
+  const Vec2 size = bbox_of<Vec2>(points).size();
+  const double apart = norm(points.back() - points.front());
+  if (!(apart > 0) || (normalize && !(apart > 1e-9 * std::max(size.x, size.y))))
+    throw Error("option 'points': the first and last control points " +
+                std::string(points.back() == points.front() ? "coincide" : "almost coincide") +
+                " (a base curve runs from (0,0) to (1,0))");
   if (!normalize && (norm(points.front()) > 1e-12 || norm(points.back() - Vec2{1, 0}) > 1e-12))
     throw Error("option 'points' must start at (0,0) and end at (1,0), got (" + number_text(points.front().x) + ", " +
                 number_text(points.front().y) + ") to (" + number_text(points.back().x) + ", " +
@@ -91,6 +98,10 @@ Polyline sample_spline(const SplineOptions& opt, Progress& progress) {
   progress.start("sampling the spline");
   std::vector<Vec2> p = opt.points;
   if (opt.normalize) {
+    // Brought to unit size first: the similarity's complex division squares the coordinates.
+    double big = 0;
+    for (Vec2 q : p) big = std::max({big, std::abs(q.x), std::abs(q.y)});
+    for (Vec2& q : p) q = (1 / big) * q;
     const Similarity2 to_unit = Similarity2::to_unit(p.front(), p.back());
     for (Vec2& q : p) q = to_unit(q);
   }
@@ -117,7 +128,9 @@ Polyline sample_spline(const SplineOptions& opt, Progress& progress) {
   out.points.back() = {1, 0};
   out.close_path();
 
-  // Unit tangents; a zero derivative (a cusp, where control points repeat) takes the chord's direction.
+  if (!out.finite()) throw Error("the spline's points overflow: its control points are too large (scale them down)");
+  // Unit tangents; a zero derivative (a cusp, where control points repeat) takes the direction between the
+  // neighbouring samples, which are distinct (repeats are not sampled).
   std::vector<double> tangent_values, t_values;
   tangent_values.reserve(2 * tangents.size());
   const std::size_t n = out.points.size();
@@ -129,7 +142,9 @@ Polyline sample_spline(const SplineOptions& opt, Progress& progress) {
     tangent_values.push_back(d.y);
   }
   const double length = out.length();
-  if (!(length > 0) || !std::isfinite(length)) throw Error("the spline has no length (its control points coincide)");
+  if (!std::isfinite(length))
+    throw Error("the spline's length overflows: its control points are too large (scale them down)");
+  if (!(length > 0)) throw Error("the spline has no length");
   double s = 0;
   t_values.push_back(0);
   for (std::size_t i = 1; i < n; ++i) {
@@ -139,7 +154,6 @@ Polyline sample_spline(const SplineOptions& opt, Progress& progress) {
   t_values.back() = 1;
   out.point_fields.set(real_field("tangent", std::move(tangent_values), 2));
   out.point_fields.set(real_field("t", std::move(t_values)));
-  if (!out.finite()) throw Error("the spline has non-finite points");
   return out;
 }
 

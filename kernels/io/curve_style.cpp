@@ -22,8 +22,14 @@ const Field* style_field(const Polyline& c, const char* name, int components) {
 
 Rgb rgb_at(const Field& f, std::size_t i) { return {f.at(i, 0), f.at(i, 1), f.at(i, 2)}; }
 
-bool unit_rgb(const Rgb& c) {
-  return std::all_of(c.begin(), c.end(), [](double v) { return v >= 0 && v <= 1; });
+// RGB in [0, 1], or (any component negative) no colour at all.
+bool colour_or_none(const Rgb& c) {
+  return std::all_of(c.begin(), c.end(), [](double v) { return v >= 0 && v <= 1; }) ||
+         std::any_of(c.begin(), c.end(), [](double v) { return v < 0; });
+}
+
+std::string colour_text(const Rgb& c) {
+  return std::any_of(c.begin(), c.end(), [](double v) { return v < 0; }) ? "none" : colour_hex(c);
 }
 
 template <class T>
@@ -76,13 +82,12 @@ CurveStyles::CurveStyles(const Polyline& c, const SaveOptions& opt)
                     " must be a whole number from 1 (a group's member number) for a palette");
     }
     const std::string where = " of path " + std::to_string(i + 1);
-    if (color_ && !stroke_given_ && !unit_rgb(rgb_at(*color_, i)))
-      throw Error("cell field 'color'" + where + " must hold red, green, blue in [0, 1]");
+    if (color_ && !stroke_given_ && !colour_or_none(rgb_at(*color_, i)))
+      throw Error("cell field 'color'" + where + " must hold red, green, blue in [0, 1], or negative values for none");
     if (width_ && !width_given_ && !(width_->at(i) > 0 && width_->at(i) < 1e6))
       throw Error("cell field 'width'" + where + " must be a positive stroke width");
     if (fill_ && !fill_given_) {
-      const Rgb f = rgb_at(*fill_, i);
-      if (!unit_rgb(f) && std::none_of(f.begin(), f.end(), [](double v) { return v < 0; }))
+      if (!colour_or_none(rgb_at(*fill_, i)))
         throw Error("cell field 'fill'" + where + " must hold red, green, blue in [0, 1], or negative values for none");
     }
   }
@@ -96,13 +101,12 @@ PathStyle CurveStyles::at(std::size_t path) const {
   if (stroke_given_ || !color_)
     s.stroke = cycled(opt_.stroke, member);
   else
-    s.stroke = colour_hex(rgb_at(*color_, path));
+    s.stroke = colour_text(rgb_at(*color_, path));
   s.width = width_given_ || !width_ ? cycled(opt_.stroke_width, member) : width_->at(path);
   if (fill_given_ || !fill_) {
     s.fill = opt_.fill.empty() ? "none" : cycled(opt_.fill, member);
   } else {
-    const Rgb f = rgb_at(*fill_, path);
-    s.fill = unit_rgb(f) ? colour_hex(f) : "none";
+    s.fill = colour_text(rgb_at(*fill_, path));
   }
   return s;
 }

@@ -94,9 +94,13 @@ void write_eps(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
     }
     const double width = style.width * unit;
     if (!std::isfinite(width)) throw Error(drawing_overflow);
-    put_colour(s, style.stroke);
-    put(s, width);
-    s += " setlinewidth\nstroke\n";
+    if (style.stroke == "none") {
+      s += "newpath\n";  // filled only (or nothing): the path is dropped unstroked
+    } else {
+      put_colour(s, style.stroke);
+      put(s, width);
+      s += " setlinewidth\nstroke\n";
+    }
     i = j;
   }
   s += "restore\nshowpage\n%%EOF\n";

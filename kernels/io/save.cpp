@@ -38,8 +38,8 @@ void SaveOptions::validate() const {
   if (stroke.empty() || stroke_width.empty())
     throw Error("options 'stroke' and 'stroke_width' need at least one value");
   for (const std::string& c : stroke)
-    if (!is_colour(c))
-      throw Error("option 'stroke' must be a CSS colour name, #rgb or #rrggbb, got '" + shown(c) + "'");
+    if (c != "none" && !is_colour(c))
+      throw Error("option 'stroke' must be a CSS colour name, #rgb, #rrggbb or 'none', got '" + shown(c) + "'");
   for (const std::string& c : fill)
     if (c != "none" && !is_colour(c))
       throw Error("option 'fill' must be a CSS colour name, #rgb, #rrggbb or 'none', got '" + shown(c) + "'");
@@ -47,7 +47,8 @@ void SaveOptions::validate() const {
     if (!(stroke_width[i] > 0 && stroke_width[i] < 1e6))
       throw Error("option 'stroke_width'" + (stroke_width.size() > 1 ? " entry " + std::to_string(i + 1) : "") +
                   " must be a positive number below 1000000, got " + number_text(stroke_width[i]));
-  if (size_unit.empty() && !(size >= 16 && size <= 100000)) throw Error("option 'size' must be in [16, 100000] pixels");
+  if (size_unit.empty() && !(size >= 16 && size <= 100000))
+    throw Error("option 'size' must be in [16, 100000] pixels, got " + number_text(size));
   if (size_unit != "" && size_unit != "mm" && size_unit != "cm" && size_unit != "in")
     throw Error("option 'size' takes the units mm, cm or in, got '" + shown(size_unit) + "'");
   if (!size_unit.empty() && !(size > 0 && size <= 100000))

@@ -48,3 +48,8 @@ assert(s:points() < it:points() / 4 and s:point(s:points())[1] == it:point(it:po
 
 save(it, "hoisted.eps")
 save(it, "hoisted.vtp")
+
+-- stroke = "none": a filled outline without a line, in both vector formats.
+local closed = concat(it, { { 0, 0 } })
+save(closed, "filled.svg", { stroke = "none", fill = "gold" })
+save(group { { closed, stroke = "none", fill = "gold" } }, "filled.eps")

@@ -215,3 +215,54 @@ TEST(Multiply, Errors) {
   deep.budget.limit = 1e9;
   EXPECT_THROW(iterate(spline(wave), deep, no_progress()), BudgetError);
 }
+
+TEST(Spline, HugeControlPointsNormaliseToTheSameCurve) {
+  const std::vector<Vec2> arc{{1, 0}, {0, 1}, {-1, 0}};
+  std::vector<Vec2> huge;
+  for (Vec2 p : arc) huge.push_back(1e200 * p);
+  const Polyline a = sample_spline({.points = arc, .normalize = true}, no_progress());
+  const Polyline b = sample_spline({.points = huge, .normalize = true}, no_progress());
+  ASSERT_EQ(a.points.size(), b.points.size());
+  for (std::size_t i = 0; i < a.points.size(); ++i) EXPECT_LT(norm(a.points[i] - b.points[i]), 1e-12);
+  EXPECT_LT(a.bbox().min.y, -0.3);  // the arch, not a flat line
+  // Ends a billionth of the polygon's size apart would blow the curve up: refused.
+  EXPECT_THROW(sample_spline({.points = {{0, 0}, {0.5, 1}, {1e-12, 0}}, .normalize = true}, no_progress()), Error);
+}
+
+TEST(Spline, RepeatedControlPointsGiveDistinctSamplesAndUnitTangents) {
+  for (SplineKind kind : {SplineKind::BSpline, SplineKind::CatmullRom}) {
+    const Polyline p = spline({{0, 0}, {0, 0}, {0, 0}, {0.5, 0.5}, {1, 0}, {1, 0}}, kind);
+    const Field* tangent = p.point_fields.find("tangent");
+    for (std::size_t i = 0; i < p.points.size(); ++i) {
+      if (i > 0) EXPECT_NE(p.points[i], p.points[i - 1]) << i;
+      EXPECT_NEAR(std::hypot(tangent->at(i, 0), tangent->at(i, 1)), 1, 1e-12) << i;
+    }
+    EXPECT_NO_THROW(p.point_fields.check(p.points.size(), "point"));
+  }
+}
+
+TEST(Hoist, APolylineIsFramedSegmentBySegment) {
+  // Without a tangent field, each segment's own direction is the frame: the middle segment runs backwards,
+  // so a point above the reference segment's middle lands below it.
+  const BaseCurve zigzag(Polyline::single({{0, 0}, {1, 0}, {0, 0}, {1, 0}}));
+  const Polyline h = hoist_onto(Polyline::single({{0.5, 0.1}}), zigzag, Boundary::Clamp, no_progress());
+  EXPECT_LT(norm(h.points[0] - Vec2{0.5, -0.1}), 1e-12);
+  // A repeated vertex changes nothing.
+  const BaseCurve tent(Polyline::single({{0, 0}, {0.5, 0.5}, {1, 0}}));
+  const BaseCurve doubled(Polyline::single({{0, 0}, {0.5, 0.5}, {0.5, 0.5}, {1, 0}}));
+  const Polyline q = Polyline::single({{0.25, 0.1}});
+  EXPECT_EQ(hoist_onto(q, tent, Boundary::Clamp, no_progress()).points[0],
+            hoist_onto(q, doubled, Boundary::Clamp, no_progress()).points[0]);
+}
+
+TEST(Multiply, FractionalMultiplicityIsCheckedByItsExactCount) {
+  // 2.5 tents: 5 points whole, then the cut apex: 6 points, which a budget of 6 admits.
+  MultiplyOptions opt{.multiplicity = 2.5};
+  opt.budget.limit = 6;
+  EXPECT_EQ(multiply(tent(), opt, no_progress()).points.size(), 6u);
+  opt.budget.limit = 5;
+  EXPECT_THROW(multiply(tent(), opt, no_progress()), BudgetError);
+  // An end that lands almost on the start is refused rather than scaled up a billion times.
+  const Polyline hook = Polyline::single({{0, 0}, {-1, 0}, {-1, -1}, {1, -1}, {1, 0}});
+  EXPECT_THROW(multiply(hook, {.multiplicity = 1.2000000001}, no_progress()), Error);
+}

@@ -55,3 +55,10 @@ TEST(Simplify, StraightRunsBecomeOneSegmentAndClosedPathsStayClosed) {
   EXPECT_THROW(hoist::simplify(c, 0, no_progress()), Error);
   EXPECT_THROW(hoist::simplify(c, NAN, no_progress()), Error);
 }
+
+TEST(Simplify, AClosedPathKeepsATriangle) {
+  const Polyline triangle = Polyline::single({{0, 0}, {1, 0}, {1, 1}, {0, 0}});
+  const Polyline s = hoist::simplify(triangle, 10, no_progress());
+  EXPECT_EQ(s.points.size(), 4u);
+  EXPECT_EQ(s.points.front(), s.points.back());
+}

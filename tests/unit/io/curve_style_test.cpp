@@ -70,7 +70,8 @@ TEST(CurveStyle, OutOfRangeFieldsAreRefused) {
     CurveStyles s(c, {});
     FAIL() << "expected an error";
   } catch (const Error& e) {
-    EXPECT_STREQ(e.what(), "cell field 'color' of path 2 must hold red, green, blue in [0, 1]");
+    EXPECT_STREQ(e.what(),
+                 "cell field 'color' of path 2 must hold red, green, blue in [0, 1], or negative values for none");
   }
   c = styled();
   c.cell_fields.set(real_field("width", {1, 0, 3}));
