@@ -138,7 +138,7 @@ int hoist_iterate(lua_State* L) {
       opt.validate();
       opt.transforms = read_segments(L, o, opt.multiplicity);
     } else {
-      o.push("segments");  // read later, once the multiplicity is there
+      o.push("segments");  // marked read: finish() names the missing multiplicity instead
       lua_pop(L, 1);
     }
     o.finish();
