@@ -83,6 +83,12 @@ Grammar read_grammar(lua_State* L, int index) {
 
 Held<Grammar> self(lua_State* L, const char* method) { return check_self<Grammar>(L, grammar_type, method); }
 
+}  // namespace
+
+Held<Grammar> test_grammar(lua_State* L, int index) { return test_value<Grammar>(L, index, grammar_type); }
+
+namespace {
+
 // The level argument of g:string(n) / g:count(n).
 // A whole float (3.0, a level computed as n / 2) is accepted as the integer it is.
 int level_argument(lua_State* L, int index) {

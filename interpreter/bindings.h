@@ -3,8 +3,13 @@
 
 #include <lua.hpp>
 
+#include "interpreter/lua_support.h"
 #include "kernels/geom/vec2.h"
 #include "kernels/geom/vec3.h"
+
+namespace selfsim::lsystem {
+struct Grammar;
+}
 
 namespace selfsim::interp {
 
@@ -16,7 +21,10 @@ void open_io(lua_State* L);          // bind_io.cpp: save(), param()
 void open_load(lua_State* L);        // bind_load.cpp: load()
 void open_group(lua_State* L);       // bind_group.cpp: group{}, concat()
 void open_hoist(lua_State* L);       // bind_hoist.cpp: bspline{}, catmull_rom{}, hoist.*, simplify()
+void open_develop(lua_State* L);     // bind_develop.cpp: develop()
 
+// bind_lsystem.cpp: the grammar at index, or null (develop() takes one as its source).
+Held<lsystem::Grammar> test_grammar(lua_State* L, int index);
 // bind_group.cpp: pushes group{...} of the list at index (save({ a, b }, ...) uses it too).
 void push_group(lua_State* L, int index);
 // bind_group.cpp: c:reverse() for Curve (V = Vec2) and Curve3 (Vec3).
@@ -32,6 +40,7 @@ inline void open_all(lua_State* L) {
   open_load(L);
   open_group(L);
   open_hoist(L);
+  open_develop(L);
 }
 
 }  // namespace selfsim::interp

@@ -28,7 +28,8 @@ for case in sorted(p for p in golden.iterdir() if p.is_dir()):
             failures.append(f"{vtp}: no expected count in {listing}")
         elif n != counts[vtp.name]:
             failures.append(f"{vtp}: {n} points, expected {counts[vtp.name]}")
-        if poly.GetPointData().GetArray("arclength") is None:
+        # Curves carry their arclength; surfaces (polygons) do not.
+        if poly.GetNumberOfPolys() == 0 and poly.GetPointData().GetArray("arclength") is None:
             failures.append(f"{vtp}: no point field 'arclength'")
         # Every kernel records what made the points: an L-system or substitution level, a hoisting generation.
         if all(poly.GetPointData().GetArray(f) is None for f in ("level", "generation")):

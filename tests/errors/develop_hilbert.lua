@@ -1,0 +1,2 @@
+local curves = require "selfsim.curves"
+local s = develop(curves.hilbert(), { levels = 3 })

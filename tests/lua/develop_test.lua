@@ -1,0 +1,27 @@
+-- develop(): the control mesh of a level stack (seed 002 §2, §3.2) from a grammar or from a list of curves.
+local curves = require "selfsim.curves"
+
+local d = develop(curves.dragon(), { levels = 5 })
+-- Points: 2^l + 1 per level; faces: 3 per tile, one tile per segment of levels 0..4.
+assert(d:points() == 2 + 3 + 5 + 9 + 17 + 33 and d:faces() == 3 * 31, tostring(d))
+assert(table.concat(d:fields().points, " ") == "level")
+assert(table.concat(d:fields().cells, " ") == "level tile")
+local box = d:bbox()
+assert(box.max[3] == 0 and box.min[3] < -1, box.min[3]) -- level 0 on top, finer levels below
+
+-- The same stack given as curves; a substitution makes the same levels as the L-system.
+local tent = polyline { { 0, 0 }, { 0.5, 0.5 }, { 1, 0 } }
+local stack = {}
+for l = 0, 5 do
+  stack[#stack + 1] = substitute { path = { { 0, 0 }, { 1, 0 } }, generator = tent, levels = l,
+                                   transforms = { "identity", "half_turn" } }
+end
+local s = develop(stack, { height = 2 })
+assert(s:points() == d:points() and s:faces() == d:faces())
+assert(s:bbox().min[3] < 2 * box.min[3] + 1e-9 and s:bbox().min[3] > 2 * box.min[3] - 1e-9)
+
+-- A closed curve's stack is an annulus: every level's end point once.
+local k = develop(curves.koch_snowflake(), { levels = 3 })
+assert(k:points() == 3 + 12 + 48 + 192, tostring(k))
+save(d, "dragon_control.vtp")
+save(k, "snowflake_control.obj")
