@@ -1,11 +1,11 @@
-// develop(source, { levels, height }) -> Mesh: seed 002's developing surface, so far its control mesh
-// (route 1 before Loop subdivision). A thin adapter over kernels/develop.
+// develop(source, { levels, height, smooth }) -> Mesh: seed 002's developing surface by route 1, the control
+// mesh smoothed by Loop subdivision. A thin adapter over kernels/develop.
 #include "interpreter/bindings.h"
 #include "interpreter/curve_value.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
 #include "interpreter/run_context.h"
-#include "kernels/develop/control_mesh.h"
+#include "kernels/develop/develop.h"
 #include "kernels/lsystem/grammar.h"
 #include "kernels/lsystem/production_count.h"
 #include "kernels/lsystem/turtle2d.h"
@@ -52,8 +52,9 @@ int develop(lua_State* L) {
       throw Error("argument 1 must be a grammar (curves.dragon()) or a list of curves, one per level, got " +
                   describe(L, 1));
     }
-    develop::ControlMeshOptions opt;
+    develop::DevelopOptions opt;
     opt.height = o.number("height", opt.height);
+    opt.smooth = static_cast<int>(o.integer("smooth", 0, 0, 12));
     o.finish();
 
     std::vector<Held<Polyline>> levels;
@@ -81,7 +82,10 @@ int develop(lua_State* L) {
       if (l + 1 < levels.size()) faces += static_cast<double>(levels[l]->segments() + levels[l + 1]->segments());
     }
     check_run_budget(L, (g ? 2 : 1) * points + faces, "develop");
-    push_geometry(L, develop::control_mesh(stack, opt, RunContext::of(L)));
+    push_geometry(L, with_budget(L, [&](const PointBudget& b) {
+                    opt.budget = b;
+                    return develop::develop_surface(stack, opt, RunContext::of(L));
+                  }));
     return 1;
   });
 }

@@ -30,16 +30,6 @@ int curve_length(lua_State* L) {
   lua_pushnumber(L, c->length());
   return 1;
 }
-// c:point(i): the i-th point (1-based) as {x, y} or {x, y, z}, for checks in recipes; no bulk export.
-template <class T>
-int curve_point(lua_State* L) {
-  const Held<T> c = geometry_self<T>(L, "point");
-  const lua_Integer i = luaL_checkinteger(L, 2);
-  if (i < 1 || i > static_cast<lua_Integer>(c->points.size()))
-    return luaL_error(L, "point: index %I out of range [1, %I]", i, static_cast<lua_Integer>(c->points.size()));
-  push_point(L, c->points[static_cast<std::size_t>(i - 1)]);
-  return 1;
-}
 // c:level(): the construction level a kernel recorded (its uniform `level` field), or nil.
 int curve_level(lua_State* L) {
   const Held<Polyline> c = geometry_self<Polyline>(L, "level");
@@ -104,13 +94,11 @@ void open_curve(lua_State* L) {
                                   {"paths", curve_paths<Polyline>},
                                   {"length", curve_length<Polyline>},
                                   {"level", curve_level},
-                                  {"point", curve_point<Polyline>},
                                   {"transform", curve_transform},
                                   {"reverse", curve_reverse<Vec2>}});
   register_geometry<Polyline3>(L, {{"segments", curve_segments<Polyline3>},
                                    {"paths", curve_paths<Polyline3>},
                                    {"length", curve_length<Polyline3>},
-                                   {"point", curve_point<Polyline3>},
                                    {"reverse", curve_reverse<Vec3>}});
   lua_register(L, "polyline", [](lua_State* S) { return make_polyline(S, "polyline", false); });
   lua_register(L, "polygon", [](lua_State* S) { return make_polyline(S, "polygon", true); });

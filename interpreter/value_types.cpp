@@ -41,6 +41,17 @@ std::string summary(const Mesh& m) {
   return "Mesh(" + std::to_string(m.points.size()) + " points, " + std::to_string(m.faces()) + " faces)";
 }
 
+// v:point(i): the i-th point (1-based) as {x, y} or {x, y, z}, for checks in recipes; no bulk export.
+template <class T>
+int value_point(lua_State* L) {
+  const Held<T> c = geometry_self<T>(L, "point");
+  const lua_Integer i = luaL_checkinteger(L, 2);
+  if (i < 1 || i > static_cast<lua_Integer>(c->points.size()))
+    return luaL_error(L, "point: index %I out of range [1, %I]", i, static_cast<lua_Integer>(c->points.size()));
+  push_point(L, c->points[static_cast<std::size_t>(i - 1)]);
+  return 1;
+}
+
 template <class T>
 int value_points(lua_State* L) {
   const Held<T> v = geometry_self<T>(L, "points");
@@ -109,7 +120,8 @@ void push_geometry(lua_State* L, T&& value) {
 
 template <class T>
 void register_geometry(lua_State* L, const std::vector<luaL_Reg>& own) {
-  std::vector<luaL_Reg> methods{{"points", value_points<T>}, {"bbox", value_bbox<T>}, {"fields", value_fields<T>}};
+  std::vector<luaL_Reg> methods{
+      {"points", value_points<T>}, {"point", value_point<T>}, {"bbox", value_bbox<T>}, {"fields", value_fields<T>}};
   methods.insert(methods.end(), own.begin(), own.end());
   methods.push_back({nullptr, nullptr});
   register_type<T>(L, ValueType<T>::name, methods.data(), value_tostring<T>);

@@ -25,3 +25,10 @@ local k = develop(curves.koch_snowflake(), { levels = 3 })
 assert(k:points() == 3 + 12 + 48 + 192, tostring(k))
 save(d, "dragon_control.vtp")
 save(k, "snowflake_control.obj")
+
+-- Loop subdivision: four triangles for one per step, the topology (a disk) and the stack's top corners kept.
+local smooth = develop(curves.dragon(), { levels = 5, smooth = 2 })
+assert(smooth:faces() == 16 * d:faces(), smooth:faces())
+assert(smooth:point(1)[1] == 0 and smooth:point(1)[2] == 0 and smooth:point(1)[3] == 0)
+assert(smooth:point(2)[1] == 1 and smooth:point(2)[3] == 0)
+save(smooth, "dragon_smooth.vtp")

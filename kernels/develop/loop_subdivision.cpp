@@ -1,0 +1,211 @@
+#include "kernels/develop/loop_subdivision.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <tuple>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+#include "kernels/geom/check.h"
+#include "kernels/geom/error.h"
+#include "kernels/geom/mesh_check.h"
+
+namespace selfsim::develop {
+
+namespace {
+
+constexpr std::uint32_t none = 0xffffffffu;
+
+// The undirected edges of a mesh, each with the points opposite it in its one or two triangles, and for
+// every triangle the index of its edges ab, bc, ca. Built by sorting, so the numbering is deterministic.
+struct Edges {
+  std::vector<std::uint32_t> a, b, c, d;  // ends a < b; opposite points c (first face), d (second or none)
+  std::vector<std::array<std::uint32_t, 3>> of_face;
+
+  explicit Edges(const Mesh& m) {
+    struct Side {
+      std::uint32_t lo, hi, face, corner;  // corner: which edge of the face (0: v0v1, 1: v1v2, 2: v2v0)
+    };
+    std::vector<Side> sides;
+    sides.reserve(3 * m.faces());
+    for (std::uint32_t f = 0; f < m.faces(); ++f)
+      for (std::uint32_t k = 0; k < 3; ++k) {
+        const std::uint32_t u = m.triangles[f][k], v = m.triangles[f][(k + 1) % 3];
+        sides.push_back({std::min(u, v), std::max(u, v), f, k});
+      }
+    std::sort(sides.begin(), sides.end(),
+              [](const Side& x, const Side& y) { return std::tie(x.lo, x.hi, x.face) < std::tie(y.lo, y.hi, y.face); });
+    of_face.resize(m.faces());
+    for (std::size_t i = 0; i < sides.size();) {
+      std::size_t j = i + 1;
+      while (j < sides.size() && sides[j].lo == sides[i].lo && sides[j].hi == sides[i].hi) ++j;
+      const auto e = static_cast<std::uint32_t>(a.size());
+      a.push_back(sides[i].lo);
+      b.push_back(sides[i].hi);
+      auto opposite = [&](const Side& s) { return m.triangles[s.face][(s.corner + 2) % 3]; };
+      c.push_back(opposite(sides[i]));
+      d.push_back(j - i == 2 ? opposite(sides[i + 1]) : none);
+      for (std::size_t k = i; k < j; ++k) of_face[sides[k].face][sides[k].corner] = e;
+      i = j;
+    }
+  }
+  std::size_t size() const { return a.size(); }
+};
+
+// One round: the weights of every new point as (source point, weight) pairs, applied to positions and to
+// every point field alike.
+struct Stencils {
+  std::vector<std::size_t> begin{0};
+  std::vector<std::uint32_t> source;
+  std::vector<double> weight;
+
+  void add(std::uint32_t s, double w) {
+    source.push_back(s);
+    weight.push_back(w);
+  }
+  void close() { begin.push_back(source.size()); }
+};
+
+Stencils stencils(const Mesh& m, const Edges& e, const std::vector<std::uint32_t>& corners) {
+  const std::size_t n = m.points.size();
+  std::vector<char> corner(n, 0);
+  for (std::uint32_t v : corners)
+    if (v < n) corner[v] = 1;
+  std::vector<std::vector<std::uint32_t>> neighbours(n), boundary(n);
+  std::vector<std::uint32_t> faces_at(n, 0);
+  for (const Triangle& t : m.triangles)
+    for (std::uint32_t v : t) ++faces_at[v];
+  for (std::size_t i = 0; i < e.size(); ++i) {
+    neighbours[e.a[i]].push_back(e.b[i]);
+    neighbours[e.b[i]].push_back(e.a[i]);
+    if (e.d[i] == none) {
+      boundary[e.a[i]].push_back(e.b[i]);
+      boundary[e.b[i]].push_back(e.a[i]);
+    }
+  }
+  Stencils s;
+  for (std::uint32_t v = 0; v < n; ++v) {
+    if (!boundary[v].empty() && (faces_at[v] == 1 || corner[v])) {
+      s.add(v, 1);  // a corner stays
+    } else if (!boundary[v].empty()) {
+      s.add(v, 0.75);
+      for (std::uint32_t u : boundary[v]) s.add(u, 0.125);
+    } else if (!neighbours[v].empty()) {
+      const double beta = loop_beta(neighbours[v].size());
+      s.add(v, 1 - static_cast<double>(neighbours[v].size()) * beta);
+      for (std::uint32_t u : neighbours[v]) s.add(u, beta);
+    } else {
+      s.add(v, 1);  // a point no triangle uses
+    }
+    s.close();
+  }
+  for (std::size_t i = 0; i < e.size(); ++i) {
+    if (e.d[i] == none) {
+      s.add(e.a[i], 0.5);
+      s.add(e.b[i], 0.5);
+    } else {
+      s.add(e.a[i], 0.375);
+      s.add(e.b[i], 0.375);
+      s.add(e.c[i], 0.125);
+      s.add(e.d[i], 0.125);
+    }
+    s.close();
+  }
+  return s;
+}
+
+Mesh one_round(const Mesh& m, const std::vector<std::uint32_t>& corners, Progress& progress) {
+  const Edges e(m);
+  const Stencils s = stencils(m, e, corners);
+  const std::size_t points = m.points.size() + e.size();
+  Mesh out;
+  out.points.resize(points);
+  for (std::size_t p = 0; p < points; ++p) {
+    if ((p & 0xffff) == 0 && progress.cancelled()) throw Cancelled();
+    Vec3 sum{};
+    for (std::size_t k = s.begin[p]; k < s.begin[p + 1]; ++k) sum = sum + s.weight[k] * m.points[s.source[k]];
+    out.points[p] = sum;
+  }
+  for (const Field& f : m.point_fields.list) {
+    std::vector<double> values(points * static_cast<std::size_t>(f.components));
+    for (std::size_t p = 0; p < points; ++p)
+      for (int c = 0; c < f.components; ++c) {
+        double sum = 0;
+        for (std::size_t k = s.begin[p]; k < s.begin[p + 1]; ++k) sum += s.weight[k] * f.at(s.source[k], c);
+        values[p * static_cast<std::size_t>(f.components) + static_cast<std::size_t>(c)] = sum;
+      }
+    out.point_fields.set(real_field(f.name, std::move(values), f.components));
+  }
+  // Each triangle v0 v1 v2 with edge points e01 e12 e20 becomes (v0 e01 e20), (v1 e12 e01), (v2 e20 e12),
+  // (e01 e12 e20): the same orientation.
+  const auto base = static_cast<std::uint32_t>(m.points.size());
+  out.triangles.reserve(4 * m.faces());
+  for (std::size_t f = 0; f < m.faces(); ++f) {
+    const Triangle& t = m.triangles[f];
+    const std::uint32_t e01 = base + e.of_face[f][0], e12 = base + e.of_face[f][1], e20 = base + e.of_face[f][2];
+    out.triangles.push_back({t[0], e01, e20});
+    out.triangles.push_back({t[1], e12, e01});
+    out.triangles.push_back({t[2], e20, e12});
+    out.triangles.push_back({e01, e12, e20});
+  }
+  for (const Field& f : m.face_fields.list) {
+    Field g = f;
+    if (!f.uniform)
+      std::visit(
+          [&](auto& v) {
+            const auto k = static_cast<std::size_t>(f.components);
+            std::remove_cvref_t<decltype(v)> children;
+            children.reserve(4 * v.size());
+            for (std::size_t i = 0; i < v.size() / k; ++i)
+              for (int child = 0; child < 4; ++child)
+                children.insert(children.end(), v.begin() + static_cast<std::ptrdiff_t>(i * k),
+                                v.begin() + static_cast<std::ptrdiff_t>((i + 1) * k));
+            v = std::move(children);
+          },
+          g.data);
+    out.face_fields.set(std::move(g));
+  }
+  return out;
+}
+
+}  // namespace
+
+void LoopOptions::validate() const { check_range(steps, 0, 12, "option 'smooth'"); }
+
+double loop_beta(std::size_t valence) {
+  const double n = static_cast<double>(valence);
+  const double x = 0.375 + 0.25 * std::cos(2 * std::numbers::pi / n);
+  return (0.625 - x * x) / n;
+}
+
+double loop_size(const Mesh& m, int steps) {
+  const MeshTopology t = mesh_topology(m);
+  double v = static_cast<double>(m.points.size()), e = static_cast<double>(t.edges), f = static_cast<double>(m.faces());
+  for (int i = 0; i < steps; ++i) {
+    v += e;
+    e = 2 * e + 3 * f;
+    f *= 4;
+  }
+  return v + f;
+}
+
+Mesh loop_subdivide(const Mesh& m, const LoopOptions& opt, Progress& progress) {
+  opt.validate();
+  m.validate();
+  const MeshTopology t = mesh_topology(m);
+  if (!t.manifold()) throw Error("Loop subdivision needs a manifold mesh: " + t.first_problem);
+  check_budget(loop_size(m, opt.steps), opt.budget, "smooth = " + std::to_string(opt.steps));
+  progress.start("Loop subdivision");
+  Mesh out = m;
+  for (int i = 0; i < opt.steps; ++i) {
+    ProgressStage stage(progress, static_cast<double>(i) / opt.steps, static_cast<double>(i + 1) / opt.steps);
+    out = one_round(out, opt.corners, stage);
+    progress.fraction(static_cast<double>(i + 1) / opt.steps);
+  }
+  return out;
+}
+
+}  // namespace selfsim::develop
