@@ -55,6 +55,8 @@ int develop(lua_State* L) {
     develop::DevelopOptions opt;
     opt.height = o.number("height", opt.height);
     opt.smooth = static_cast<int>(o.integer("smooth", 0, 0, 12));
+    opt.thickness = o.number("thickness", 0);
+    opt.thickness_rate = o.number("thickness_rate", 0);
     o.finish();
 
     std::vector<Held<Polyline>> levels;

@@ -1,6 +1,10 @@
 // Developing fractal curves (seed 002): the level stack's control mesh (control_mesh.h), smoothed by Loop
 // subdivision (loop_subdivision.h) with the stack's four corners kept (the ends of its first and last levels:
-// a closed stack, an annulus, has none), so the smooth surface still spans the coarsest and finest curves.
+// a closed stack, an annulus, has none), so the smooth surface still spans the coarsest and finest curves;
+// then, given a thickness, thickened into a closed solid (thicken.h). The thickness is a point field set on
+// the control mesh, level by level, and subdivided with the same weights as the positions (§3.2): by
+// default it shrinks as the curve's segments do (the self-similar, "correct" thickness of §3.1.2); a
+// `thickness_rate` shrinks it more slowly, as a print needs.
 #pragma once
 
 #include <span>
@@ -11,9 +15,11 @@
 namespace selfsim::develop {
 
 struct DevelopOptions {
-  double height = 1;   // gap between levels l and l+1, in segment lengths of level l
-  int smooth = 0;      // rounds of Loop subdivision, in [0, 12]
-  PointBudget budget;  // refuse (before subdividing) a result predicted not to fit
+  double height = 1;          // gap between levels l and l+1, in segment lengths of level l
+  int smooth = 0;             // rounds of Loop subdivision, in [0, 12]
+  double thickness = 0;       // thickness at level 0, in the curve's units; 0 for the open surface itself
+  double thickness_rate = 0;  // factor per level, in (0, 1]; 0 for the curve's own segment ratio
+  PointBudget budget;         // refuse (before subdividing) a result predicted not to fit
 
   void validate() const;
 };

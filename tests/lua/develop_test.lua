@@ -32,3 +32,9 @@ assert(smooth:faces() == 16 * d:faces(), smooth:faces())
 assert(smooth:point(1)[1] == 0 and smooth:point(1)[2] == 0 and smooth:point(1)[3] == 0)
 assert(smooth:point(2)[1] == 1 and smooth:point(2)[3] == 0)
 save(smooth, "dragon_smooth.vtp")
+
+-- A thickness makes a closed solid: both sheets, and a rim along the boundary.
+local solid = develop(curves.dragon(), { levels = 5, smooth = 1, thickness = 0.05, thickness_rate = 0.8 })
+assert(solid:points() % 2 == 0, tostring(solid))
+assert(table.concat(solid:fields().points, " ") == "level thickness")
+save(solid, "dragon_solid.stl")

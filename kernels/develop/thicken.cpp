@@ -1,0 +1,130 @@
+#include "kernels/develop/thicken.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "kernels/geom/error.h"
+#include "kernels/geom/mesh_check.h"
+
+namespace selfsim::develop {
+
+namespace {
+
+// The directed boundary edges u → v (as the faces traverse them) of a manifold mesh.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> boundary_edges(const Mesh& m) {
+  std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t>> sides;  // lo, hi, u, v
+  sides.reserve(3 * m.faces());
+  for (const Triangle& t : m.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t u = t[k], v = t[(k + 1) % 3];
+      sides.emplace_back(std::min(u, v), std::max(u, v), u, v);
+    }
+  std::sort(sides.begin(), sides.end());
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
+  for (std::size_t i = 0; i < sides.size();) {
+    std::size_t j = i + 1;
+    while (j < sides.size() && std::get<0>(sides[j]) == std::get<0>(sides[i]) &&
+           std::get<1>(sides[j]) == std::get<1>(sides[i]))
+      ++j;
+    if (j - i == 1) out.emplace_back(std::get<2>(sides[i]), std::get<3>(sides[i]));
+    i = j;
+  }
+  return out;
+}
+
+// Every field of f (on `count` elements) for the new elements, each taken from element source[k].
+Fields picked(const Fields& f, const std::vector<std::uint32_t>& source) {
+  Fields out;
+  for (const Field& field : f.list) {
+    if (field.uniform) {
+      out.set(field);
+      continue;
+    }
+    Field g{field.name, field.components, field.data, false};
+    std::visit(
+        [&](auto& v) {
+          const auto k = static_cast<std::size_t>(field.components);
+          std::remove_cvref_t<decltype(v)> values;
+          values.reserve(source.size() * k);
+          for (std::uint32_t s : source)
+            values.insert(values.end(), v.begin() + static_cast<std::ptrdiff_t>(s * k),
+                          v.begin() + static_cast<std::ptrdiff_t>((s + 1) * k));
+          v = std::move(values);
+        },
+        g.data);
+    out.set(std::move(g));
+  }
+  return out;
+}
+
+}  // namespace
+
+Mesh thicken(const Mesh& m, Progress& progress) {
+  const MeshTopology topology = mesh_topology(m);
+  if (!topology.manifold()) throw Error("thickening needs a manifold surface: " + topology.first_problem);
+  const Field* thickness = m.point_fields.find("thickness");
+  if (thickness == nullptr || thickness->components != 1) throw Error("thickening needs a point field 'thickness'");
+  const std::size_t n = m.points.size();
+  progress.start("thickening");
+
+  std::vector<Vec3> normal(n, Vec3{});
+  for (const Triangle& t : m.triangles) {
+    const Vec3 a = area_normal(m, t);
+    for (std::uint32_t v : t) normal[v] += a;
+  }
+  Mesh out;
+  out.points.resize(2 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = thickness->at(i);
+    if (!(t > 0 && std::isfinite(t)))
+      throw Error("the thickness at point " + std::to_string(i + 1) + " is not a positive number");
+    const double length = norm(normal[i]);
+    if (!(length > 0 && std::isfinite(length)))
+      throw Error("point " + std::to_string(i + 1) +
+                  " has no normal (its triangles cancel out): it cannot be thickened");
+    const Vec3 offset = (0.5 * t / length) * normal[i];
+    out.points[i] = m.points[i] + offset;
+    out.points[n + i] = m.points[i] - offset;
+  }
+  if (progress.cancelled()) throw Cancelled();
+
+  const auto shift = static_cast<std::uint32_t>(n);
+  const auto rim = boundary_edges(m);
+  out.triangles.reserve(2 * m.faces() + 2 * rim.size());
+  std::vector<std::uint32_t> face_source;
+  face_source.reserve(out.triangles.capacity());
+  for (std::uint32_t f = 0; f < m.faces(); ++f) {
+    out.triangles.push_back(m.triangles[f]);
+    face_source.push_back(f);
+  }
+  for (std::uint32_t f = 0; f < m.faces(); ++f) {
+    const Triangle& t = m.triangles[f];
+    out.triangles.push_back({t[0] + shift, t[2] + shift, t[1] + shift});  // the bottom sheet faces the other way
+    face_source.push_back(f);
+  }
+  // The face each boundary edge belongs to, for the rim's fields.
+  std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>> edge_face;  // u, v, face
+  for (std::uint32_t f = 0; f < m.faces(); ++f)
+    for (int k = 0; k < 3; ++k) edge_face.emplace_back(m.triangles[f][k], m.triangles[f][(k + 1) % 3], f);
+  std::sort(edge_face.begin(), edge_face.end());
+  for (const auto& [u, v] : rim) {
+    // The top sheet runs u → v along this edge, the bottom v' → u': the rim runs v → u on top and u' → v'
+    // below, so every edge is shared by two faces in opposite directions.
+    const auto it = std::lower_bound(edge_face.begin(), edge_face.end(), std::tuple{u, v, 0u});
+    out.triangles.push_back({v, u, u + shift});
+    out.triangles.push_back({v, u + shift, v + shift});
+    face_source.push_back(std::get<2>(*it));
+    face_source.push_back(std::get<2>(*it));
+  }
+  std::vector<std::uint32_t> point_source(2 * n);
+  for (std::uint32_t i = 0; i < n; ++i) point_source[i] = point_source[n + i] = i;
+  out.point_fields = picked(m.point_fields, point_source);
+  out.face_fields = picked(m.face_fields, face_source);
+  if (!out.finite()) throw Error("thickening gave non-finite points (the thickness is too large)");
+  return out;
+}
+
+}  // namespace selfsim::develop

@@ -1,0 +1,2 @@
+local curves = require "selfsim.curves"
+local s = develop(curves.dragon(), { levels = 3, thickness = 0.1, thickness_rate = 1.5 })
