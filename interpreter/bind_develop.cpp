@@ -57,6 +57,9 @@ int develop(lua_State* L) {
     opt.smooth = static_cast<int>(o.integer("smooth", 0, 0, 12));
     opt.thickness = o.number("thickness", 0);
     opt.thickness_rate = o.number("thickness_rate", 0);
+    opt.corner_shift = o.number("corner_shift", 0);
+    opt.size = o.number("size", 0);
+    opt.size_level = static_cast<int>(o.integer("size_level", -1, -1, lsystem::max_level));
     o.finish();
 
     std::vector<Held<Polyline>> levels;

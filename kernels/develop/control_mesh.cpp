@@ -5,6 +5,7 @@
 #include <string>
 
 #include "kernels/develop/level_stack.h"
+#include "kernels/geom/check.h"
 #include "kernels/geom/error.h"
 
 namespace selfsim::develop {
@@ -32,12 +33,21 @@ Mesh control_mesh(std::span<const Polyline* const> levels, const ControlMeshOpti
   m.points.reserve(vertices);
   std::vector<std::int32_t> point_level, face_level, tile;
   point_level.reserve(vertices);
-  for (std::size_t l = 0; l < levels.size(); ++l)
+  check_between(opt.corner_shift, 0, 0.5, "option 'corner_shift'");
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    const auto pts = levels[l]->path(0);
     for (std::size_t i = 0; i < count[l]; ++i) {
-      const Vec2 p = levels[l]->points[i];
+      Vec2 p = pts[i];
+      // A small Laplacian step: the ends of an open level stay, a closed level's every point moves.
+      const bool inner = closed || (i > 0 && i + 1 < pts.size());
+      if (opt.corner_shift > 0 && inner) {
+        const Vec2 before = pts[i > 0 ? i - 1 : count[l] - 1], after = pts[i + 1];
+        p = p + opt.corner_shift * (0.5 * (before + after) - p);
+      }
       m.points.push_back({p.x, p.y, z[l]});
       point_level.push_back(static_cast<std::int32_t>(l));
     }
+  }
   m.triangles.reserve(faces);
   face_level.reserve(faces);
   tile.reserve(faces);

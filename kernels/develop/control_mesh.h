@@ -15,7 +15,9 @@
 namespace selfsim::develop {
 
 struct ControlMeshOptions {
-  double height = 1;  // gap between levels l and l+1, in segment lengths of level l (level_stack.h)
+  double height = 1;        // gap between levels l and l+1, in segment lengths of level l (level_stack.h)
+  double corner_shift = 0;  // in [0, 0.5]: each level's inner points moved this fraction of the way to the
+                            // midpoint of their neighbours (§3.2's inward shift against self-intersections)
 };
 
 // The control mesh of levels 0..L (at least two), which must refine segment by segment (level_stack.h).

@@ -1,6 +1,8 @@
 #include "kernels/develop/develop.h"
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "kernels/develop/level_stack.h"
 #include "kernels/develop/thicken.h"
@@ -8,42 +10,79 @@
 
 namespace selfsim::develop {
 
+namespace {
+
+// The thickness field of the control mesh: level l's thickness is t·rate^l, or t·(segment length of level l
+// / of level 0) for the self-similar thickness.
+void set_thickness(Mesh& m, std::span<const Polyline* const> levels, const DevelopOptions& opt) {
+  std::vector<double> per_level;
+  const double first = levels.front()->length() / static_cast<double>(levels.front()->segments());
+  for (std::size_t l = 0; l < levels.size(); ++l)
+    per_level.push_back(opt.thickness_rate > 0
+                            ? opt.thickness * std::pow(opt.thickness_rate, static_cast<double>(l))
+                            : opt.thickness * levels[l]->length() / static_cast<double>(levels[l]->segments()) / first);
+  const Field* level = m.point_fields.find("level");
+  std::vector<double> t(m.points.size());
+  for (std::size_t i = 0; i < t.size(); ++i) t[i] = per_level[static_cast<std::size_t>(level->at(i))];
+  m.point_fields.set(real_field("thickness", std::move(t)));
+}
+
+// m scaled about the origin so its largest side, or level size_level's, is opt.size (thicknesses too).
+Mesh scaled(Mesh m, std::span<const Polyline* const> levels, const DevelopOptions& opt) {
+  if (opt.size == 0) return m;
+  double side = 0;
+  if (opt.size_level >= 0) {
+    const Vec2 s = levels[static_cast<std::size_t>(opt.size_level)]->bbox().size();
+    side = std::max(s.x, s.y);
+  } else {
+    const Vec3 s = m.bbox().size();
+    side = std::max({s.x, s.y, s.z});
+  }
+  if (!(side > 0)) throw Error("the surface has no extent to scale to option 'size'");
+  const double k = opt.size / side;
+  for (Vec3& p : m.points) p = k * p;
+  if (const Field* t = m.point_fields.find("thickness")) {
+    std::vector<double> v(t->reals().begin(), t->reals().end());
+    for (double& x : v) x *= k;
+    m.point_fields.set(real_field("thickness", std::move(v)));
+  }
+  if (!m.finite()) throw Error("scaling to option 'size' overflows");
+  return m;
+}
+
+}  // namespace
+
 void DevelopOptions::validate() const {
   check_range(smooth, 0, 12, "option 'smooth'");
   check_between(thickness, 0, 1e6, "option 'thickness'");
   if (thickness_rate != 0) check_between(thickness_rate, 1e-6, 1, "option 'thickness_rate'");
+  check_between(size, 0, 1e9, "option 'size'");
 }
 
 Mesh develop_surface(std::span<const Polyline* const> levels, const DevelopOptions& opt, Progress& progress) {
   opt.validate();
+  if (opt.size_level >= static_cast<int>(levels.size()))
+    throw Error("option 'size_level' must be a level of the stack, 0 to " + std::to_string(levels.size() - 1) +
+                ", got " + std::to_string(opt.size_level));
   ProgressStage build(progress, 0, opt.smooth > 0 ? 0.1 : 1);
-  Mesh m = control_mesh(levels, {opt.height}, build);
+  Mesh m = control_mesh(levels, {opt.height, opt.corner_shift}, build);
+  if (opt.thickness > 0) set_thickness(m, levels, opt);
+  if (opt.smooth > 0) {
+    LoopOptions loop{opt.smooth, {}, opt.budget};
+    if (!closed_levels(levels)) {
+      // Points are numbered level by level: level 0's two ends first, the finest level's ends last.
+      const auto first_end = static_cast<std::uint32_t>(levels.front()->points.size() - 1);
+      const auto last_start = static_cast<std::uint32_t>(m.points.size() - levels.back()->points.size());
+      loop.corners = {0, first_end, last_start, static_cast<std::uint32_t>(m.points.size() - 1)};
+    }
+    ProgressStage smooth(progress, 0.1, opt.thickness > 0 ? 0.9 : 1);
+    m = loop_subdivide(m, loop, smooth);
+  }
   if (opt.thickness > 0) {
-    // Level l's thickness: thickness · rate^l, or thickness · (segment length of level l / of level 0).
-    std::vector<double> per_level;
-    const double first = levels.front()->length() / static_cast<double>(levels.front()->segments());
-    for (std::size_t l = 0; l < levels.size(); ++l)
-      per_level.push_back(opt.thickness_rate > 0 ? opt.thickness * std::pow(opt.thickness_rate, static_cast<double>(l))
-                                                 : opt.thickness * levels[l]->length() /
-                                                       static_cast<double>(levels[l]->segments()) / first);
-    const Field* level = m.point_fields.find("level");
-    std::vector<double> t(m.points.size());
-    for (std::size_t i = 0; i < t.size(); ++i) t[i] = per_level[static_cast<std::size_t>(level->at(i))];
-    m.point_fields.set(real_field("thickness", std::move(t)));
+    ProgressStage solid(progress, 0.9, 1);
+    m = thicken(m, solid);
   }
-  if (opt.smooth == 0) return opt.thickness > 0 ? thicken(m, progress) : m;
-  LoopOptions loop{opt.smooth, {}, opt.budget};
-  if (!closed_levels(levels)) {
-    // Points are numbered level by level: level 0's two ends first, the finest level's ends last.
-    const auto first_end = static_cast<std::uint32_t>(levels.front()->points.size() - 1);
-    const auto last_start = static_cast<std::uint32_t>(m.points.size() - levels.back()->points.size());
-    loop.corners = {0, first_end, last_start, static_cast<std::uint32_t>(m.points.size() - 1)};
-  }
-  ProgressStage smooth(progress, 0.1, opt.thickness > 0 ? 0.9 : 1);
-  Mesh s = loop_subdivide(m, loop, smooth);
-  if (opt.thickness == 0) return s;
-  ProgressStage solid(progress, 0.9, 1);
-  return thicken(s, solid);
+  return scaled(std::move(m), levels, opt);
 }
 
 }  // namespace selfsim::develop

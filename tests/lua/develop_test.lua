@@ -38,3 +38,12 @@ local solid = develop(curves.dragon(), { levels = 5, smooth = 1, thickness = 0.0
 assert(solid:points() % 2 == 0, tostring(solid))
 assert(table.concat(solid:fields().points, " ") == "level thickness")
 save(solid, "dragon_solid.stl")
+
+-- size scales the whole object (its thickness too): here its largest side becomes 100 (millimetres, say).
+local sized = develop(curves.dragon(), { levels = 4, smooth = 1, thickness = 0.05, size = 100 })
+local sb = sized:bbox()
+local side = math.max(sb.max[1] - sb.min[1], sb.max[2] - sb.min[2], sb.max[3] - sb.min[3])
+assert(math.abs(side - 100) < 1e-9, side)
+-- size_level: level 0, the unit segment, becomes 80 long.
+local by_level = develop(curves.dragon(), { levels = 4, size = 80, size_level = 0 })
+assert(math.abs(by_level:point(2)[1] - 80) < 1e-9, by_level:point(2)[1])

@@ -103,3 +103,15 @@ TEST(ControlMesh, ClosedLevelsMakeAnAnnulus) {
   EXPECT_EQ(t.boundary_loops, 2u);
   EXPECT_EQ(t.euler(), 0);  // an annulus
 }
+
+TEST(ControlMesh, CornerShiftMovesInnerPointsTowardsTheirNeighbours) {
+  const auto levels = levels_of(table1::dragon(), 3);
+  const Mesh plain = control_mesh(pointers(levels), {}, no_progress());
+  const Mesh shifted = control_mesh(pointers(levels), {.corner_shift = 0.2}, no_progress());
+  // Level 1 is points 2, 3, 4: its ends stay, its middle moves a fifth of the way to their midpoint.
+  EXPECT_EQ(shifted.points[2], plain.points[2]);
+  EXPECT_EQ(shifted.points[4], plain.points[4]);
+  const Vec3 mid = 0.5 * (plain.points[2] + plain.points[4]);
+  EXPECT_LT(norm(shifted.points[3] - (plain.points[3] + 0.2 * (mid - plain.points[3]))), 1e-15);
+  EXPECT_THROW(control_mesh(pointers(levels), {.corner_shift = 0.7}, no_progress()), Error);
+}
