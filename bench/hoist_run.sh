@@ -11,14 +11,7 @@ runs=${2:-9}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 selfsim=$(realpath "$build/selfsim")
-wall() {
-  local t0 t1
-  t0=$(date +%s%N)
-  "$@" >/dev/null
-  t1=$(date +%s%N)
-  echo "scale=4; ($t1 - $t0) / 1000000000" | bc
-}
-median() { sort -n | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+. bench/wall_time.sh
 for flags in "" "--threads 1"; do
   "$selfsim" run bench/recipes/hoist_million.lua -o "$tmp/out" -q $flags  # the first run loads the program
   times=$(for _ in $(seq "$runs"); do wall "$selfsim" run bench/recipes/hoist_million.lua -o "$tmp/out" -q $flags; done)

@@ -26,17 +26,7 @@ assert(c:segments() == 12582912)
 LUA
 selfsim=$(realpath "$build/selfsim")
 
-# Wall seconds of one command, from a fresh process start to its exit.
-wall() {
-  local t0 t1
-  t0=$(date +%s%N)
-  "$@" >/dev/null
-  t1=$(date +%s%N)
-  echo "scale=4; ($t1 - $t0) / 1000000000" | bc
-}
-run_selfsim() { wall "$selfsim" run "$tmp/koch.lua" -o "$tmp/out" -q ${SELFSIM_FLAGS:-}; }
-run_node() { (cd "$tmp" && wall node koch.mjs); }
-median() { sort -n | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+. bench/wall_time.sh
 
 run_selfsim >/dev/null; run_node >/dev/null  # first runs load the programs from disk
 s_b2b=$(for _ in $(seq "$runs"); do run_selfsim; done | median)

@@ -14,18 +14,22 @@ namespace selfsim::interp {
 
 namespace {
 
-// Levels 0..top of a grammar. The whole surface is predicted from the production matrix first (every level's
-// points, held while the mesh is built, the mesh's points, and a triangle per coarse and per fine segment),
-// so a stack too big is refused before any level is drawn.
-std::vector<Held<Polyline>> grammar_levels(lua_State* L, const lsystem::Grammar& g, int top) {
-  double points = 0, faces = 0, previous = 0;
+// Levels 0..top of a grammar. The whole result is predicted from the production matrix first (every level's
+// points, held while the surface is built, and the surface itself: develop.h), so a stack too big, or
+// smoothed too often, is refused before any level is drawn.
+std::vector<Held<Polyline>> grammar_levels(lua_State* L, const lsystem::Grammar& g, int top,
+                                           const develop::DevelopOptions& opt) {
+  double points = 0;
+  std::vector<double> segments;
   for (int l = 0; l <= top; ++l) {
     const lsystem::LevelCounts counts = lsystem::predict_counts(g, l, RunContext::of(L));
     points += counts.max_points();
-    if (l > 0) faces += previous + counts.segments;
-    previous = counts.segments;
+    segments.push_back(counts.segments);
   }
-  check_run_budget(L, 2 * points + faces, "levels = " + std::to_string(top));
+  // Open or closed is not known before drawing: the larger (open) count.
+  check_run_budget(
+      L, points + develop::developed_size(segments, false, opt),
+      "levels = " + std::to_string(top) + (opt.smooth > 0 ? ", smooth = " + std::to_string(opt.smooth) : ""));
   std::vector<Held<Polyline>> levels;
   double held = 0;
   for (int l = 0; l <= top; ++l) {
@@ -42,6 +46,9 @@ std::vector<Held<Polyline>> grammar_levels(lua_State* L, const lsystem::Grammar&
 
 int develop(lua_State* L) {
   return call_kernel(L, "develop", [&] {
+    if (lua_gettop(L) > 2)
+      throw Error("takes a source and a table of options, develop(source, { ... }), got " +
+                  std::to_string(lua_gettop(L)) + " arguments");
     Options o(L, 2);
     const Held<lsystem::Grammar> g = test_grammar(L, 1);
     int top = 0;
@@ -51,6 +58,8 @@ int develop(lua_State* L) {
     } else if (lua_type(L, 1) != LUA_TTABLE) {
       throw Error("argument 1 must be a grammar (curves.dragon()) or a list of curves, one per level, got " +
                   describe(L, 1));
+    } else if (o.has("levels")) {
+      throw Error("option 'levels' is for a grammar: a list of curves is the stack itself, level 0 first");
     }
     develop::DevelopOptions opt;
     opt.height = o.number("height", opt.height);
@@ -64,7 +73,7 @@ int develop(lua_State* L) {
 
     std::vector<Held<Polyline>> levels;
     if (g) {
-      levels = grammar_levels(L, *g, top);
+      levels = grammar_levels(L, *g, top, opt);
     } else {
       const lua_Integer n = list_length(L, 1, "argument 1 (the levels)");
       for (lua_Integer i = 1; i <= n; ++i) {
@@ -72,21 +81,14 @@ int develop(lua_State* L) {
         Held<Polyline> c = test_curve(L, -1);
         if (!c)
           throw Error("entry " + std::to_string(i) + " of the levels (level " + std::to_string(i - 1) +
-                      ") must be a curve, got " + describe(L, -1));
+                      ") must be a 2D curve, got " + describe(L, -1));
         levels.push_back(std::move(c));
         lua_pop(L, 1);
       }
     }
-    // The mesh has every level's points and, per tile, as many triangles as the tile's coarse and fine
-    // segments together; the levels made here are held while it is built.
+    // develop_surface checks the result's predicted size against the budget before building it.
     std::vector<const Polyline*> stack;
-    double points = 0, faces = 0;
-    for (std::size_t l = 0; l < levels.size(); ++l) {
-      stack.push_back(levels[l].get());
-      points += static_cast<double>(levels[l]->points.size());
-      if (l + 1 < levels.size()) faces += static_cast<double>(levels[l]->segments() + levels[l + 1]->segments());
-    }
-    check_run_budget(L, (g ? 2 : 1) * points + faces, "develop");
+    for (const auto& c : levels) stack.push_back(c.get());
     push_geometry(L, with_budget(L, [&](const PointBudget& b) {
                     opt.budget = b;
                     return develop::develop_surface(stack, opt, RunContext::of(L));

@@ -3,6 +3,8 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <tuple>
+#include <vector>
 
 #include "interpreter/bindings.h"
 #include "interpreter/lua_support.h"
@@ -80,6 +82,22 @@ void warn_if_far(lua_State* L, const Polyline& c) {
   lua_warning(L, message.c_str(), 0);
 }
 
+// STL keeps no shared points: readers (slicers, selfsim's own) merge coinciding corners, so a mesh with two
+// points at one place (an unsmoothed developing dragon, whose curves revisit their points) reads back as a
+// non-manifold surface. Say so rather than let a slicer find out.
+void warn_if_coinciding(lua_State* L, const Mesh& m) {
+  std::vector<Vec3> sorted = m.points;
+  std::sort(sorted.begin(), sorted.end(),
+            [](Vec3 a, Vec3 b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); });
+  const auto same = std::adjacent_find(sorted.begin(), sorted.end());
+  if (same == sorted.end()) return;
+  const std::string message = recipe_where(L) + "save: the mesh has points that coincide (at " + number_text(same->x) +
+                              ", " + number_text(same->y) + ", " + number_text(same->z) +
+                              "): STL readers merge them and see a non-manifold surface; save as .obj or .ply, or "
+                              "separate them (develop's smooth or corner_shift)";
+  lua_warning(L, message.c_str(), 0);
+}
+
 int save(lua_State* L) {
   return call_kernel(L, "save", [&] {
     RunContext& run = RunContext::of(L);
@@ -94,6 +112,7 @@ int save(lua_State* L) {
     const io::Format& format = io::format_for(name, io::kind_of(v->ref()));
     const io::SaveOptions opt = read_save_options(L, 3, format);
     if (format.extension == ".svg") warn_if_far(L, *std::get<const Polyline*>(v->ref()));
+    if (format.extension == ".stl") warn_if_coinciding(L, *std::get<const Mesh*>(v->ref()));
     const std::string written = io::save(v->ref(), run.config.out_dir, name, opt, run);
     // Said as each file is committed, in order with the recipe's own print output: when a later error fails
     // the run, the files it did write were already reported.

@@ -15,6 +15,9 @@ Mesh control_mesh(std::span<const Polyline* const> levels, const ControlMeshOpti
   const std::vector<double> z = level_heights(levels, opt.height);
   const bool closed = closed_levels(levels);
   const auto b = static_cast<std::size_t>(branching);
+  // A closed level of two segments joins the same two points twice: its tiles would glue the loop shut.
+  if (closed && levels.front()->segments() < 3)
+    throw Error("a closed level needs at least 3 segments, level 0 has " + std::to_string(levels.front()->segments()));
 
   // Vertices of level l start at offset[l]; a closed level's last point is its first.
   std::vector<std::size_t> offset, count;
@@ -59,6 +62,7 @@ Mesh control_mesh(std::span<const Polyline* const> levels, const ControlMeshOpti
     auto coarse = [&](std::size_t j) { return static_cast<std::uint32_t>(offset[l] + j % count[l]); };
     auto fine = [&](std::size_t k) { return static_cast<std::uint32_t>(offset[l + 1] + k % count[l + 1]); };
     for (std::size_t j = 0; j < segments; ++j, ++tiles) {
+      if ((j & 0xffff) == 0xffff && progress.cancelled()) throw Cancelled();
       const std::uint32_t a = coarse(j), e = coarse(j + 1);
       auto add = [&](std::uint32_t p, std::uint32_t q, std::uint32_t r) {
         m.triangles.push_back({p, q, r});

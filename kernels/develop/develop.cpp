@@ -59,8 +59,31 @@ void DevelopOptions::validate() const {
   check_between(size, 0, 1e9, "option 'size'");
 }
 
+double developed_size(std::span<const double> segments, bool closed, const DevelopOptions& opt) {
+  const std::size_t top = segments.size() - 1;
+  double v = 0, f = 0;
+  for (std::size_t l = 0; l <= top; ++l) {
+    v += segments[l] + (closed ? 0 : 1);
+    if (l < top) f += segments[l] + segments[l + 1];
+  }
+  double e = v + f - (closed ? 0 : 1);
+  double boundary = segments[0] + segments[top] + (closed ? 0 : 2 * static_cast<double>(top));
+  for (int k = 0; k < opt.smooth; ++k) {
+    v += e;
+    e = 2 * e + 3 * f;
+    f *= 4;
+    boundary *= 2;
+  }
+  return opt.thickness > 0 ? 2 * v + 2 * f + 2 * boundary : v + f;
+}
+
 Mesh develop_surface(std::span<const Polyline* const> levels, const DevelopOptions& opt, Progress& progress) {
   opt.validate();
+  {
+    std::vector<double> segments;
+    for (const Polyline* c : levels) segments.push_back(static_cast<double>(c->segments()));
+    check_budget(developed_size(segments, closed_levels(levels), opt), opt.budget, "develop");
+  }
   if (opt.size_level >= static_cast<int>(levels.size()))
     throw Error("option 'size_level' must be a level of the stack, 0 to " + std::to_string(levels.size() - 1) +
                 ", got " + std::to_string(opt.size_level));

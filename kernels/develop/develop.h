@@ -27,6 +27,12 @@ struct DevelopOptions {
   void validate() const;
 };
 
+// Points plus triangles of the result, from the levels' segment counts alone, before any work: the control
+// mesh's V points and F triangles with E = V + F − χ edges (χ = 1 for a disk, 0 for an annulus), Loop's
+// V' = V + E, E' = 2E + 3F, F' = 4F, and thickening's two sheets and rim (two triangles a boundary edge).
+double developed_size(std::span<const double> segments, bool closed, const DevelopOptions& opt);
+
+// Checks developed_size against opt.budget before building anything.
 Mesh develop_surface(std::span<const Polyline* const> levels, const DevelopOptions& opt, Progress& progress);
 
 }  // namespace selfsim::develop

@@ -15,6 +15,7 @@ void check_level(const Polyline& c, std::size_t l) {
     throw Error("level " + std::to_string(l) + " must be one path with at least one segment, got " +
                 std::to_string(c.paths()) + " paths");
   if (!c.finite()) throw Error("level " + std::to_string(l) + " has non-finite points");
+  if (!(c.length() > 0)) throw Error("level " + std::to_string(l) + " has no length (all its points coincide)");
 }
 
 }  // namespace

@@ -5,23 +5,17 @@
 // Each run of paths of one style is one PostScript path: filled with the even-odd rule where a fill is
 // given, then stroked.
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 
 #include "kernels/geom/error.h"
 #include "kernels/io/colour.h"
 #include "kernels/io/curve_style.h"
+#include "kernels/io/put_number.h"
 #include "kernels/io/writers.h"
 
 namespace selfsim::io {
 
 namespace {
-
-void put(std::string& s, double v, int digits = 9) {
-  char buf[32];
-  auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, digits);
-  s.append(buf, r.ptr);
-}
 
 // Points (1/72 inch) per unit of the size option.
 double points_per_unit(const std::string& unit) {
@@ -34,7 +28,7 @@ double points_per_unit(const std::string& unit) {
 void put_colour(std::string& s, const std::string& colour) {
   const Rgb c = *colour_rgb(colour);  // styles hold only colours SaveOptions or the fields checked
   for (double v : c) {
-    put(s, std::round(v * 255) / 255, 4);
+    put_number(s, std::round(v * 255) / 255, 4);
     s += ' ';
   }
   s += "setrgbcolor\n";
@@ -56,9 +50,9 @@ void write_eps(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
   };
   s += "%!PS-Adobe-3.0 EPSF-3.0\n%%BoundingBox: 0 0 " + std::to_string(static_cast<long long>(std::ceil(w))) + " " +
        std::to_string(static_cast<long long>(std::ceil(h))) + "\n%%HiResBoundingBox: 0 0 ";
-  put(s, w);
+  put_number(s, w);
   s += ' ';
-  put(s, h);
+  put_number(s, h);
   s += "\n%%Creator: selfsim\n%%LanguageLevel: 2\n%%Pages: 1\n%%EndComments\n"
        "save\n/m { moveto } bind def\n/l { lineto } bind def\n1 setlinejoin 1 setlinecap\n";
   std::size_t written = 0;
@@ -76,9 +70,9 @@ void write_eps(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
       const char* op = " m\n";
       for (Vec2 p : path) {
         const Vec2 q = frame.scale * (p - frame.lo);
-        put(s, q.x, 8);
+        put_number(s, q.x, 8);
         s += ' ';
-        put(s, q.y, 8);
+        put_number(s, q.y, 8);
         s += op;
         op = " l\n";
         if (++written % (1u << 20) == 0)
@@ -98,7 +92,7 @@ void write_eps(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
       s += "newpath\n";  // filled only (or nothing): the path is dropped unstroked
     } else {
       put_colour(s, style.stroke);
-      put(s, width);
+      put_number(s, width);
       s += " setlinewidth\nstroke\n";
     }
     i = j;

@@ -4,25 +4,16 @@
 // any size reads the same. (vector-effect: non-scaling-stroke would say this too, but librsvg and some
 // other renderers ignore it.)
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 
 #include "kernels/geom/error.h"
 #include "kernels/io/curve_style.h"
+#include "kernels/io/put_number.h"
 #include "kernels/io/writers.h"
 
 namespace selfsim::io {
 
-namespace {
-
-// Nine significant digits: well below a pixel at any sensible zoom, and far smaller files than 17.
-void put(std::string& s, double v, int digits = 9) {
-  char buf[32];
-  auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, digits);
-  s.append(buf, r.ptr);
-}
-
-}  // namespace
+namespace {}  // namespace
 
 void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress) {
   const Polyline& c = *std::get<const Polyline*>(v);  // the registry sends only 2D curves here
@@ -39,12 +30,12 @@ void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
   };
   // Width and height in the size's unit (pixels, or mm/cm/in for plotters); the stroke width is in that unit too.
   s += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"";
-  put(s, extent.x * px);
+  put_number(s, extent.x * px);
   s += opt.size_unit + "\" height=\"";
-  put(s, extent.y * px);
+  put_number(s, extent.y * px);
   s += opt.size_unit + "\" viewBox=\"";
   for (double v : {lo.x, -(lo.y + extent.y), extent.x, extent.y}) {
-    put(s, v, digits);
+    put_number(s, v, digits);
     s += ' ';
   }
   s.back() = '"';
@@ -59,7 +50,7 @@ void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
       style = next;
       s += "<path fill=\"" + style.fill + "\" stroke=\"" + style.stroke + "\" stroke-width=\"";
       if (!std::isfinite(style.width / px)) throw Error(drawing_overflow);
-      put(s, style.width / px);
+      put_number(s, style.width / px);
       s += "\" d=\"";
     }
     char cmd = 'M';
@@ -73,9 +64,9 @@ void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
       if (++written % (1u << 20) == 0)
         progress.step(0.9 * static_cast<double>(written) / static_cast<double>(c.points.size()));
       s += cmd;
-      put(s, p.x, digits);
+      put_number(s, p.x, digits);
       s += ' ';
-      put(s, p.y, digits);
+      put_number(s, p.y, digits);
       cmd = cmd == 'M' ? 'L' : ' ';
       if (s.size() > (1u << 20)) flush();
     }

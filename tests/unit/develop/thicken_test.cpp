@@ -90,3 +90,21 @@ TEST(Thicken, Errors) {
   EXPECT_THROW(developed(table1::dragon(), 3, {.thickness = -1}), Error);
   EXPECT_THROW(developed(table1::dragon(), 3, {.thickness = 0.1, .thickness_rate = 2}), Error);
 }
+
+TEST(Develop, SizeIsPredictedExactlyBeforeAnyWork) {
+  for (auto [g, closed] : {std::pair{table1::dragon(), false}, std::pair{table1::koch_snowflake(), true}})
+    for (DevelopOptions opt :
+         {DevelopOptions{}, DevelopOptions{.smooth = 2}, DevelopOptions{.smooth = 1, .thickness = 0.05}}) {
+      std::vector<Polyline> levels;
+      for (int l = 0; l <= 3; ++l) levels.push_back(lsystem::turtle2d(g, {.level = l}, no_progress()));
+      std::vector<const Polyline*> p;
+      std::vector<double> segments;
+      for (const Polyline& c : levels) {
+        p.push_back(&c);
+        segments.push_back(static_cast<double>(c.segments()));
+      }
+      const Mesh m = develop_surface(p, opt, no_progress());
+      EXPECT_EQ(developed_size(segments, closed, opt), static_cast<double>(m.points.size() + m.faces()))
+          << closed << " " << opt.smooth << " " << opt.thickness;
+    }
+}

@@ -11,7 +11,9 @@
 using namespace selfsim;
 using io::CurveStyles;
 using io::PathStyle;
+using io_fixtures::count;
 using io_fixtures::TempDir;
+using io_fixtures::text_of;
 using io_fixtures::two_paths;
 
 namespace {
@@ -27,17 +29,6 @@ Polyline styled() {
   c.cell_fields.set(real_field("width", {1, 3, 3}));
   c.cell_fields.set(real_field("fill", {-1, -1, -1, 1, 0.8, 0, 1, 0.8, 0}, 3));
   return c;
-}
-
-std::string text_of(const std::filesystem::path& f) {
-  std::ifstream in(f);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
-std::size_t count(const std::string& text, const std::string& word) {
-  std::size_t n = 0;
-  for (std::size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) ++n;
-  return n;
 }
 
 }  // namespace

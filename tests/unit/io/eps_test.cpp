@@ -8,20 +8,11 @@
 #include "kernels/io/save.h"
 
 using namespace selfsim;
+using io_fixtures::count;
 using io_fixtures::TempDir;
+using io_fixtures::text_of;
 
 namespace {
-
-std::string text_of(const std::filesystem::path& f) {
-  std::ifstream in(f);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
-std::size_t count(const std::string& text, const std::string& word) {
-  std::size_t n = 0;
-  for (std::size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) ++n;
-  return n;
-}
 
 // An open path of three points (member 1, red) and a closed square (member 2, filled gold).
 Polyline styled() {

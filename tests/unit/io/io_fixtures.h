@@ -5,6 +5,8 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "kernels/geom/polyline.h"
@@ -53,6 +55,19 @@ inline selfsim::Polyline two_paths() {
   c.path_ends = {3, 5};
   c.point_fields.set(selfsim::uniform_int("level", 7));
   return c;
+}
+
+// The whole text of a file.
+inline std::string text_of(const std::filesystem::path& f) {
+  std::ifstream in(f);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// How many times `word` occurs in `text`.
+inline std::size_t count(const std::string& text, const std::string& word) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) ++n;
+  return n;
 }
 
 // two_paths() as a value that lives for the whole test program (save() takes values by address).
