@@ -181,9 +181,9 @@ double loop_beta(std::size_t valence) {
   return (0.625 - x * x) / n;
 }
 
-double loop_size(const Mesh& m, int steps) {
-  const MeshTopology t = mesh_topology(m);
-  double v = static_cast<double>(m.points.size()), e = static_cast<double>(t.edges), f = static_cast<double>(m.faces());
+namespace {
+
+double size_after(double v, double e, double f, int steps) {
   for (int i = 0; i < steps; ++i) {
     v += e;
     e = 2 * e + 3 * f;
@@ -192,12 +192,21 @@ double loop_size(const Mesh& m, int steps) {
   return v + f;
 }
 
+}  // namespace
+
+double loop_size(const Mesh& m, int steps) {
+  return size_after(static_cast<double>(m.points.size()), static_cast<double>(mesh_topology(m).edges),
+                    static_cast<double>(m.faces()), steps);
+}
+
 Mesh loop_subdivide(const Mesh& m, const LoopOptions& opt, Progress& progress) {
   opt.validate();
   m.validate();
   const MeshTopology t = mesh_topology(m);
   if (!t.manifold()) throw Error("Loop subdivision needs a manifold mesh: " + t.first_problem);
-  check_budget(loop_size(m, opt.steps), opt.budget, "smooth = " + std::to_string(opt.steps));
+  check_budget(size_after(static_cast<double>(m.points.size()), static_cast<double>(t.edges),
+                          static_cast<double>(m.faces()), opt.steps),
+               opt.budget, "smooth = " + std::to_string(opt.steps));
   progress.start("Loop subdivision");
   Mesh out = m;
   for (int i = 0; i < opt.steps; ++i) {

@@ -13,23 +13,31 @@ namespace selfsim::develop {
 
 namespace {
 
-// The directed boundary edges u → v (as the faces traverse them) of a manifold mesh.
-std::vector<std::pair<std::uint32_t, std::uint32_t>> boundary_edges(const Mesh& m) {
-  std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t>> sides;  // lo, hi, u, v
+// The directed boundary edges u → v (as their face traverses them) of a manifold mesh, with that face.
+struct RimEdge {
+  std::uint32_t u, v, face;
+};
+
+std::vector<RimEdge> boundary_edges(const Mesh& m) {
+  struct Side {
+    std::uint32_t lo, hi;
+    RimEdge edge;
+  };
+  std::vector<Side> sides;
   sides.reserve(3 * m.faces());
-  for (const Triangle& t : m.triangles)
+  for (std::uint32_t f = 0; f < m.faces(); ++f)
     for (int k = 0; k < 3; ++k) {
-      const std::uint32_t u = t[k], v = t[(k + 1) % 3];
-      sides.emplace_back(std::min(u, v), std::max(u, v), u, v);
+      const std::uint32_t u = m.triangles[f][k], v = m.triangles[f][(k + 1) % 3];
+      sides.push_back({std::min(u, v), std::max(u, v), {u, v, f}});
     }
-  std::sort(sides.begin(), sides.end());
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
+  std::sort(sides.begin(), sides.end(), [](const Side& a, const Side& b) {
+    return std::tie(a.lo, a.hi, a.edge.face) < std::tie(b.lo, b.hi, b.edge.face);
+  });
+  std::vector<RimEdge> out;
   for (std::size_t i = 0; i < sides.size();) {
     std::size_t j = i + 1;
-    while (j < sides.size() && std::get<0>(sides[j]) == std::get<0>(sides[i]) &&
-           std::get<1>(sides[j]) == std::get<1>(sides[i]))
-      ++j;
-    if (j - i == 1) out.emplace_back(std::get<2>(sides[i]), std::get<3>(sides[i]));
+    while (j < sides.size() && sides[j].lo == sides[i].lo && sides[j].hi == sides[i].hi) ++j;
+    if (j - i == 1) out.push_back(sides[i].edge);
     i = j;
   }
   return out;
@@ -105,19 +113,13 @@ Mesh thicken(const Mesh& m, Progress& progress) {
     out.triangles.push_back({t[0] + shift, t[2] + shift, t[1] + shift});  // the bottom sheet faces the other way
     face_source.push_back(f);
   }
-  // The face each boundary edge belongs to, for the rim's fields.
-  std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>> edge_face;  // u, v, face
-  for (std::uint32_t f = 0; f < m.faces(); ++f)
-    for (int k = 0; k < 3; ++k) edge_face.emplace_back(m.triangles[f][k], m.triangles[f][(k + 1) % 3], f);
-  std::sort(edge_face.begin(), edge_face.end());
-  for (const auto& [u, v] : rim) {
+  for (const auto& [u, v, face] : rim) {
     // The top sheet runs u → v along this edge, the bottom v' → u': the rim runs v → u on top and u' → v'
-    // below, so every edge is shared by two faces in opposite directions.
-    const auto it = std::lower_bound(edge_face.begin(), edge_face.end(), std::tuple{u, v, 0u});
+    // below, so every edge is shared by two faces in opposite directions. The rim takes its face's fields.
     out.triangles.push_back({v, u, u + shift});
     out.triangles.push_back({v, u + shift, v + shift});
-    face_source.push_back(std::get<2>(*it));
-    face_source.push_back(std::get<2>(*it));
+    face_source.push_back(face);
+    face_source.push_back(face);
   }
   std::vector<std::uint32_t> point_source(2 * n);
   for (std::uint32_t i = 0; i < n; ++i) point_source[i] = point_source[n + i] = i;
