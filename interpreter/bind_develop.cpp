@@ -1,5 +1,5 @@
-// develop(source, { levels, height, smooth }) -> Mesh: seed 002's developing surface by route 1, the control
-// mesh smoothed by Loop subdivision. A thin adapter over kernels/develop.
+// develop(source, { levels, height, smooth, thickness, ... }) -> Mesh: seed 002's developing surface by route 1,
+// the control mesh smoothed by Loop subdivision and thickened. A thin adapter over kernels/develop.
 #include "interpreter/bindings.h"
 #include "interpreter/curve_value.h"
 #include "interpreter/lua_support.h"
