@@ -73,7 +73,7 @@ io::SaveOptions read_save_options(lua_State* L, int index, const io::Format& f) 
 void warn_if_far(lua_State* L, const Polyline& c) {
   const BBox2 b = c.bbox();
   const double size = std::max(b.size().x, b.size().y);
-  const double far = std::max({std::abs(b.min.x), std::abs(b.min.y), std::abs(b.max.x), std::abs(b.max.y)});
+  const double far = largest_coordinate(b);
   if (!(far > 1e5 * size)) return;
   const std::string message = recipe_where(L) + "save: the curve lies " + number_text(far) +
                               " from the origin but is only " + number_text(size) +

@@ -151,23 +151,10 @@ Mesh one_round(const Mesh& m, const std::vector<std::uint32_t>& corners, Progres
     out.triangles.push_back({t[2], e20, e12});
     out.triangles.push_back({e01, e12, e20});
   }
-  for (const Field& f : m.face_fields.list) {
-    Field g = f;
-    if (!f.uniform)
-      std::visit(
-          [&](auto& v) {
-            const auto k = static_cast<std::size_t>(f.components);
-            std::remove_cvref_t<decltype(v)> children;
-            children.reserve(4 * v.size());
-            for (std::size_t i = 0; i < v.size() / k; ++i)
-              for (int child = 0; child < 4; ++child)
-                children.insert(children.end(), v.begin() + static_cast<std::ptrdiff_t>(i * k),
-                                v.begin() + static_cast<std::ptrdiff_t>((i + 1) * k));
-            v = std::move(children);
-          },
-          g.data);
-    out.face_fields.set(std::move(g));
-  }
+  // The four children of face f are faces 4f .. 4f + 3, each with f's fields.
+  std::vector<std::uint32_t> parent(4 * m.faces());
+  for (std::size_t k = 0; k < parent.size(); ++k) parent[k] = static_cast<std::uint32_t>(k / 4);
+  out.face_fields = picked_fields<std::uint32_t>(m.face_fields, parent);
   return out;
 }
 

@@ -43,31 +43,6 @@ std::vector<RimEdge> boundary_edges(const Mesh& m) {
   return out;
 }
 
-// Every field of f (on `count` elements) for the new elements, each taken from element source[k].
-Fields picked(const Fields& f, const std::vector<std::uint32_t>& source) {
-  Fields out;
-  for (const Field& field : f.list) {
-    if (field.uniform) {
-      out.set(field);
-      continue;
-    }
-    Field g{field.name, field.components, field.data, false};
-    std::visit(
-        [&](auto& v) {
-          const auto k = static_cast<std::size_t>(field.components);
-          std::remove_cvref_t<decltype(v)> values;
-          values.reserve(source.size() * k);
-          for (std::uint32_t s : source)
-            values.insert(values.end(), v.begin() + static_cast<std::ptrdiff_t>(s * k),
-                          v.begin() + static_cast<std::ptrdiff_t>((s + 1) * k));
-          v = std::move(values);
-        },
-        g.data);
-    out.set(std::move(g));
-  }
-  return out;
-}
-
 }  // namespace
 
 Mesh thicken(const Mesh& m, Progress& progress) {
@@ -123,8 +98,8 @@ Mesh thicken(const Mesh& m, Progress& progress) {
   }
   std::vector<std::uint32_t> point_source(2 * n);
   for (std::uint32_t i = 0; i < n; ++i) point_source[i] = point_source[n + i] = i;
-  out.point_fields = picked(m.point_fields, point_source);
-  out.face_fields = picked(m.face_fields, face_source);
+  out.point_fields = picked_fields<std::uint32_t>(m.point_fields, point_source);
+  out.face_fields = picked_fields<std::uint32_t>(m.face_fields, face_source);
   if (!out.finite()) throw Error("thickening gave non-finite points (the thickness is too large)");
   return out;
 }

@@ -1,6 +1,8 @@
 // Axis-aligned bounding box of 2D or 3D points.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <span>
 
@@ -30,6 +32,11 @@ struct BBox {
 
 using BBox2 = BBox<Vec2>;
 using BBox3 = BBox<Vec3>;
+
+// How far from the origin a 2D box reaches along either axis: its largest absolute coordinate.
+inline double largest_coordinate(const BBox2& b) {
+  return std::max(std::max(std::abs(b.min.x), std::abs(b.min.y)), std::max(std::abs(b.max.x), std::abs(b.max.y)));
+}
 
 template <class V>
 BBox<V> bbox_of(std::span<const V> points) {

@@ -10,6 +10,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -59,5 +60,32 @@ struct Fields {
 // type and component count throughout; it stays uniform when every part's tuple is the same single one.
 Fields join_fields(std::span<const Fields* const> parts, std::span<const std::size_t> counts,
                    std::span<const std::size_t> skip, const Fields& defaults);
+
+// The fields of elements picked from others: element k of the result takes the tuples of element source[k]
+// (a simplified curve's kept points, a thickened mesh's two sheets); uniform fields stay as they are.
+template <class Index>
+Fields picked_fields(const Fields& fields, std::span<const Index> source) {
+  Fields out;
+  for (const Field& f : fields.list) {
+    if (f.uniform) {
+      out.list.push_back(f);
+      continue;
+    }
+    Field g{f.name, f.components, {}, false};
+    std::visit(
+        [&](const auto& values) {
+          const auto k = static_cast<std::size_t>(f.components);
+          std::remove_cvref_t<decltype(values)> picked;
+          picked.reserve(source.size() * k);
+          for (Index s : source)
+            picked.insert(picked.end(), values.begin() + static_cast<std::ptrdiff_t>(s * k),
+                          values.begin() + static_cast<std::ptrdiff_t>((s + 1) * k));
+          g.data = std::move(picked);
+        },
+        f.data);
+    out.list.push_back(std::move(g));
+  }
+  return out;
+}
 
 }  // namespace selfsim

@@ -96,25 +96,7 @@ Polyline simplify(const Polyline& c, double tolerance, Progress& progress) {
   }
   out.points.resize(kept.size());
   for (std::size_t k = 0; k < kept.size(); ++k) out.points[k] = c.points[kept[k]];
-  for (const Field& f : c.point_fields.list) {
-    if (f.uniform) {
-      out.point_fields.set(f);
-      continue;
-    }
-    Field g{f.name, f.components, f.data, false};
-    std::visit(
-        [&](auto& v) {
-          const auto& src = v;
-          std::remove_cvref_t<decltype(v)> picked;
-          picked.reserve(kept.size() * static_cast<std::size_t>(f.components));
-          for (std::size_t k : kept)
-            for (int j = 0; j < f.components; ++j)
-              picked.push_back(src[k * static_cast<std::size_t>(f.components) + static_cast<std::size_t>(j)]);
-          v = std::move(picked);
-        },
-        g.data);
-    out.point_fields.set(std::move(g));
-  }
+  out.point_fields = picked_fields<std::size_t>(c.point_fields, kept);
   out.cell_fields = c.cell_fields;
   return out;
 }

@@ -99,8 +99,7 @@ Polyline sample_spline(const SplineOptions& opt, Progress& progress) {
   std::vector<Vec2> p = opt.points;
   if (opt.normalize) {
     // Brought to unit size first: the similarity's complex division squares the coordinates.
-    double big = 0;
-    for (Vec2 q : p) big = std::max({big, std::abs(q.x), std::abs(q.y)});
+    const double big = largest_coordinate(bbox_of<Vec2>(p));
     for (Vec2& q : p) q = (1 / big) * q;
     const Similarity2 to_unit = Similarity2::to_unit(p.front(), p.back());
     for (Vec2& q : p) q = to_unit(q);

@@ -44,18 +44,16 @@ DrawingFrame drawing_frame(const Polyline& c, double size) {
   const Vec2 own = b.size();
   const double big = std::max({own.x, own.y, 1e-300});
   const double margin = 0.02 * big;
-  DrawingFrame f{b.min - Vec2{margin, margin}, own + Vec2{2 * margin, 2 * margin}, 0, big};
+  DrawingFrame f{b.min - Vec2{margin, margin}, own + Vec2{2 * margin, 2 * margin}, 0, big, largest_coordinate(b)};
   f.scale = size / std::max(f.extent.x, f.extent.y);
   for (double v : {f.lo.x, f.lo.y + f.extent.y, f.extent.x * f.scale, f.extent.y * f.scale, 1 / f.scale})
     if (!std::isfinite(v)) throw Error(drawing_overflow);
   return f;
 }
 
-int coordinate_digits(const Polyline& c, const DrawingFrame& f) {
-  const BBox2 b = c.bbox();
-  const double far = std::max({std::abs(b.min.x), std::abs(b.min.y), std::abs(b.max.x), std::abs(b.max.y)});
-  if (!(far > f.diameter)) return 9;
-  return static_cast<int>(std::min(17.0, 9 + std::ceil(std::log10(far / f.diameter))));
+int coordinate_digits(const DrawingFrame& f) {
+  if (!(f.reach > f.diameter)) return 9;
+  return static_cast<int>(std::min(17.0, 9 + std::ceil(std::log10(f.reach / f.diameter))));
 }
 
 CurveStyles::CurveStyles(const Polyline& c, const SaveOptions& opt)

@@ -19,6 +19,7 @@ struct DrawingFrame {
   Vec2 extent;      // the margin box's size, in curve units
   double scale;     // drawing units per curve unit
   double diameter;  // the curve's own larger side (without the margin), in curve units
+  double reach;     // the curve's largest absolute coordinate, in curve units
 };
 
 // The message for a drawing whose size or stroke width overflows.
@@ -30,7 +31,7 @@ DrawingFrame drawing_frame(const Polyline& c, double size);
 
 // Significant digits for coordinates: nine relative to the curve's own extent, so a curve far from the
 // origin (a dragon moved to (1e8, 1e8)) keeps its detail; at most the 17 a double holds.
-int coordinate_digits(const Polyline& c, const DrawingFrame& f);
+int coordinate_digits(const DrawingFrame& f);
 
 struct PathStyle {
   std::string stroke;  // "#rrggbb" or a CSS name

@@ -21,7 +21,7 @@ void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
   const Vec2 lo = frame.lo, extent = frame.extent;
   const double px = frame.scale, big = frame.diameter;
   const CurveStyles styles(c, opt);
-  const int digits = coordinate_digits(c, frame);
+  const int digits = coordinate_digits(frame);
 
   std::string s;  // written out every megabyte or so: memory stays flat whatever the curve
   auto flush = [&] {
