@@ -64,6 +64,7 @@ int develop(lua_State* L) {
     develop::DevelopOptions opt;
     opt.height = o.number("height", opt.height);
     opt.smooth = static_cast<int>(o.integer("smooth", 0, 0, 12));
+    opt.bounded = o.enumeration("stencil", {"loop", "bounded"}, 0) == 1;
     opt.thickness = o.number("thickness", 0);
     opt.thickness_rate = o.number("thickness_rate", 0);
     opt.corner_shift = o.number("corner_shift", 0);

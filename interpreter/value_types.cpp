@@ -84,6 +84,29 @@ const Fields& cell_fields(const Polyline& c) { return c.cell_fields; }
 const Fields& cell_fields(const Polyline3& c) { return c.cell_fields; }
 const Fields& cell_fields(const Mesh& m) { return m.face_fields; }
 
+// v:range(name) -> min, max of a point or cell field's first component (a develop mesh's tile_class runs
+// from 0 to classes - 1), for checks and summaries in recipes.
+template <class T>
+int value_range(lua_State* L) {
+  const Held<T> v = geometry_self<T>(L, "range");
+  const char* name = luaL_checkstring(L, 2);
+  const Field* f = v->point_fields.find(name);
+  if (f == nullptr) f = cell_fields(*v).find(name);
+  if (f == nullptr) return luaL_error(L, "range: the value has no field '%s'", name);
+  if (f->stored() == 0) return luaL_error(L, "range: field '%s' is empty", name);
+  double lo = f->at(0), hi = lo;
+  for (std::size_t i = 1; i < f->stored(); ++i) {
+    lo = std::min(lo, f->at(i));
+    hi = std::max(hi, f->at(i));
+  }
+  for (double x : {lo, hi})
+    if (f->scalar() == Scalar::Int32)
+      lua_pushinteger(L, static_cast<lua_Integer>(x));
+    else
+      lua_pushnumber(L, x);
+  return 2;
+}
+
 // {points = {names}, cells = {names}}: the fields the value carries (files add arclength and path to curves).
 template <class T>
 int value_fields(lua_State* L) {
@@ -120,8 +143,11 @@ void push_geometry(lua_State* L, T&& value) {
 
 template <class T>
 void register_geometry(lua_State* L, const std::vector<luaL_Reg>& own) {
-  std::vector<luaL_Reg> methods{
-      {"points", value_points<T>}, {"point", value_point<T>}, {"bbox", value_bbox<T>}, {"fields", value_fields<T>}};
+  std::vector<luaL_Reg> methods{{"points", value_points<T>},
+                                {"point", value_point<T>},
+                                {"bbox", value_bbox<T>},
+                                {"fields", value_fields<T>},
+                                {"range", value_range<T>}};
   methods.insert(methods.end(), own.begin(), own.end());
   methods.push_back({nullptr, nullptr});
   register_type<T>(L, ValueType<T>::name, methods.data(), value_tostring<T>);

@@ -6,6 +6,7 @@
 
 #include "kernels/develop/level_stack.h"
 #include "kernels/develop/thicken.h"
+#include "kernels/develop/tile_classes.h"
 #include "kernels/geom/check.h"
 
 namespace selfsim::develop {
@@ -25,6 +26,19 @@ void set_thickness(Mesh& m, std::span<const Polyline* const> levels, const Devel
   std::vector<double> t(m.points.size());
   for (std::size_t i = 0; i < t.size(); ++i) t[i] = per_level[static_cast<std::size_t>(level->at(i))];
   m.point_fields.set(real_field("thickness", std::move(t)));
+}
+
+// Where each tile of the control mesh c lies after `steps` rounds of Loop subdivision: its faces stay
+// consecutive (children follow their parent) and its points a, f_s, e keep their indices.
+TileLayout tile_layout(const Mesh& c, int steps) {
+  const Field* tile = c.face_fields.find("tile");
+  const auto tiles = static_cast<std::size_t>(tile->at(c.faces() - 1)) + 1;
+  const std::size_t per = c.faces() / tiles, middle = (per - 1) / 2;
+  TileLayout layout;
+  layout.faces = per << (2 * steps);
+  layout.stride = steps > 0 ? std::size_t{1} << (2 * (steps - 1)) : 1;
+  for (std::size_t t = 0; t < tiles; ++t) layout.reference.push_back(c.triangles[t * per + middle]);
+  return layout;
 }
 
 // m scaled about the origin so its largest side, or level size_level's, is opt.size (thicknesses too).
@@ -89,17 +103,25 @@ Mesh develop_surface(std::span<const Polyline* const> levels, const DevelopOptio
                 ", got " + std::to_string(opt.size_level));
   ProgressStage build(progress, 0, opt.smooth > 0 ? 0.1 : 1);
   Mesh m = control_mesh(levels, {opt.height, opt.corner_shift}, build);
+  const TileLayout layout = tile_layout(m, opt.smooth);
   if (opt.thickness > 0) set_thickness(m, levels, opt);
   if (opt.smooth > 0) {
-    LoopOptions loop{opt.smooth, {}, opt.budget};
+    LoopOptions loop{opt.smooth, {}, opt.budget, opt.bounded};
     if (!closed_levels(levels)) {
       // Points are numbered level by level: level 0's two ends first, the finest level's ends last.
       const auto first_end = static_cast<std::uint32_t>(levels.front()->points.size() - 1);
       const auto last_start = static_cast<std::uint32_t>(m.points.size() - levels.back()->points.size());
       loop.corners = {0, first_end, last_start, static_cast<std::uint32_t>(m.points.size() - 1)};
     }
-    ProgressStage smooth(progress, 0.1, opt.thickness > 0 ? 0.9 : 1);
+    ProgressStage smooth(progress, 0.1, opt.thickness > 0 ? 0.85 : 0.95);
     m = loop_subdivide(m, loop, smooth);
+  }
+  {
+    ProgressStage classes(progress, opt.thickness > 0 ? 0.85 : 0.95, opt.thickness > 0 ? 0.9 : 1);
+    const std::vector<std::int32_t> of_tile = tile_classes(m, layout, classes);
+    std::vector<std::int32_t> of_face(m.faces());
+    for (std::size_t f = 0; f < of_face.size(); ++f) of_face[f] = of_tile[f / layout.faces];
+    m.face_fields.set(int_field("tile_class", std::move(of_face)));
   }
   if (opt.thickness > 0) {
     ProgressStage solid(progress, 0.9, 1);

@@ -18,6 +18,7 @@ struct DevelopOptions {
   double height = 1;          // gap between levels l and l+1, in segment lengths of level l
   double corner_shift = 0;    // inward shift of each level's inner points, in [0, 0.5] (control_mesh.h)
   int smooth = 0;             // rounds of Loop subdivision, in [0, 12]
+  bool bounded = false;       // Loop's bounded-curvature rules (loop_subdivision.h) instead of the classic ones
   double thickness = 0;       // thickness at level 0, in the curve's units; 0 for the open surface itself
   double thickness_rate = 0;  // factor per level, in (0, 1]; 0 for the curve's own segment ratio
   double size = 0;            // scale the result so its largest side is this (thickness too); 0: as built

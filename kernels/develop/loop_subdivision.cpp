@@ -69,7 +69,46 @@ struct Stencils {
   void close() { begin.push_back(source.size()); }
 };
 
-Stencils stencils(const Mesh& m, const Edges& e, const std::vector<std::uint32_t>& corners) {
+// The ring of every interior point of valence ≥ 7, in order around it (empty for other points): what the
+// bounded rules need. A face (v, x, y) says y follows x around v.
+std::vector<std::vector<std::uint32_t>> extraordinary_rings(const Mesh& m,
+                                                            const std::vector<std::vector<std::uint32_t>>& neighbours,
+                                                            const std::vector<std::vector<std::uint32_t>>& boundary) {
+  const std::size_t n = m.points.size();
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> follows(n);
+  for (const Triangle& t : m.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t v = t[k];
+      if (neighbours[v].size() >= 7 && boundary[v].empty()) follows[v].push_back({t[(k + 1) % 3], t[(k + 2) % 3]});
+    }
+  std::vector<std::vector<std::uint32_t>> rings(n);
+  for (std::size_t v = 0; v < n; ++v) {
+    auto& f = follows[v];
+    if (f.empty()) continue;
+    std::sort(f.begin(), f.end());
+    std::uint32_t x = f.front().first;
+    for (std::size_t k = 0; k < f.size(); ++k) {
+      rings[v].push_back(x);
+      x = std::lower_bound(f.begin(), f.end(), std::pair<std::uint32_t, std::uint32_t>{x, 0})->second;
+    }
+  }
+  return rings;
+}
+
+// Adds the bounded rule's weights, times `share`, for the new point on the edge from v to u; masks[n] caches
+// the mask of valence n.
+void add_bounded_edge(Stencils& s, std::uint32_t v, std::uint32_t u, const std::vector<std::uint32_t>& ring,
+                      double share, std::vector<EdgeMask>& masks) {
+  const std::size_t n = ring.size();
+  if (masks.size() <= n) masks.resize(n + 1);
+  if (masks[n].ring.empty()) masks[n] = bounded_edge_mask(n);
+  const EdgeMask& mask = masks[n];
+  const std::size_t i = static_cast<std::size_t>(std::find(ring.begin(), ring.end(), u) - ring.begin());
+  s.add(v, share * mask.centre);
+  for (std::size_t j = 0; j < n; ++j) s.add(ring[j], share * mask.ring[(j + n - i) % n]);
+}
+
+Stencils stencils(const Mesh& m, const Edges& e, const std::vector<std::uint32_t>& corners, bool bounded) {
   const std::size_t n = m.points.size();
   std::vector<char> corner(n, 0);
   for (std::uint32_t v : corners)
@@ -86,6 +125,9 @@ Stencils stencils(const Mesh& m, const Edges& e, const std::vector<std::uint32_t
       boundary[e.b[i]].push_back(e.a[i]);
     }
   }
+  const auto rings =
+      bounded ? extraordinary_rings(m, neighbours, boundary) : std::vector<std::vector<std::uint32_t>>(n);
+  std::vector<EdgeMask> masks;
   Stencils s;
   for (std::uint32_t v = 0; v < n; ++v) {
     if (!boundary[v].empty() && (faces_at[v] == 1 || corner[v])) {
@@ -94,7 +136,7 @@ Stencils stencils(const Mesh& m, const Edges& e, const std::vector<std::uint32_t
       s.add(v, 0.75);
       for (std::uint32_t u : boundary[v]) s.add(u, 0.125);
     } else if (!neighbours[v].empty()) {
-      const double beta = loop_beta(neighbours[v].size());
+      const double beta = rings[v].empty() ? loop_beta(neighbours[v].size()) : bounded_beta(rings[v].size());
       s.add(v, 1 - static_cast<double>(neighbours[v].size()) * beta);
       for (std::uint32_t u : neighbours[v]) s.add(u, beta);
     } else {
@@ -106,6 +148,10 @@ Stencils stencils(const Mesh& m, const Edges& e, const std::vector<std::uint32_t
     if (e.d[i] == none) {
       s.add(e.a[i], 0.5);
       s.add(e.b[i], 0.5);
+    } else if (!rings[e.a[i]].empty() || !rings[e.b[i]].empty()) {
+      const double share = !rings[e.a[i]].empty() && !rings[e.b[i]].empty() ? 0.5 : 1;
+      if (!rings[e.a[i]].empty()) add_bounded_edge(s, e.a[i], e.b[i], rings[e.a[i]], share, masks);
+      if (!rings[e.b[i]].empty()) add_bounded_edge(s, e.b[i], e.a[i], rings[e.b[i]], share, masks);
     } else {
       s.add(e.a[i], 0.375);
       s.add(e.b[i], 0.375);
@@ -117,9 +163,9 @@ Stencils stencils(const Mesh& m, const Edges& e, const std::vector<std::uint32_t
   return s;
 }
 
-Mesh one_round(const Mesh& m, const std::vector<std::uint32_t>& corners, Progress& progress) {
+Mesh one_round(const Mesh& m, const LoopOptions& opt, Progress& progress) {
   const Edges e(m);
-  const Stencils s = stencils(m, e, corners);
+  const Stencils s = stencils(m, e, opt.corners, opt.bounded);
   const std::size_t points = m.points.size() + e.size();
   Mesh out;
   out.points.resize(points);
@@ -170,6 +216,39 @@ double loop_beta(std::size_t valence) {
 
 namespace {
 
+double subdominant(double n) { return 0.375 + 0.25 * std::cos(2 * std::numbers::pi / n); }
+
+}  // namespace
+
+EdgeMask bounded_edge_mask(std::size_t valence) {
+  const std::size_t n = std::max<std::size_t>(valence, 3);
+  EdgeMask mask;
+  mask.ring.assign(n, 0);
+  if (n < 7) {
+    mask.centre = 0.375;
+    mask.ring[0] = 0.375;
+    mask.ring[1] += 0.125;
+    mask.ring[n - 1] += 0.125;
+    return mask;
+  }
+  const double l = subdominant(static_cast<double>(n));
+  const double r = (3 * l - 2) / (2 * l), c3 = l * l * l / (4 - 4 * l);
+  mask.centre = 1 - (2 * l * l + l * (3 * l - 2) * (3 * l - 2) / (2 * (1 - l)));
+  for (std::size_t k = 0; k < n; ++k) {
+    const double x = std::cos(2 * std::numbers::pi * static_cast<double>(k) / static_cast<double>(n));
+    mask.ring[k] = 8 * c3 * (x + 1) * (x - r) * (x - r) / static_cast<double>(n);
+  }
+  return mask;
+}
+
+double bounded_beta(std::size_t valence) {
+  if (valence < 7) return loop_beta(valence);
+  const double l = subdominant(static_cast<double>(valence));
+  return (1 - bounded_edge_mask(valence).centre - l * l) / static_cast<double>(valence);
+}
+
+namespace {
+
 double size_after(double v, double e, double f, int steps) {
   for (int i = 0; i < steps; ++i) {
     v += e;
@@ -198,7 +277,7 @@ Mesh loop_subdivide(const Mesh& m, const LoopOptions& opt, Progress& progress) {
   Mesh out = m;
   for (int i = 0; i < opt.steps; ++i) {
     ProgressStage stage(progress, static_cast<double>(i) / opt.steps, static_cast<double>(i + 1) / opt.steps);
-    out = one_round(out, opt.corners, stage);
+    out = one_round(out, opt, stage);
     progress.fraction(static_cast<double>(i + 1) / opt.steps);
   }
   return out;

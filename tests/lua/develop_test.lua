@@ -5,7 +5,7 @@ local d = develop(curves.dragon(), { levels = 5 })
 -- Points: 2^l + 1 per level; faces: 3 per tile, one tile per segment of levels 0..4.
 assert(d:points() == 2 + 3 + 5 + 9 + 17 + 33 and d:faces() == 3 * 31, tostring(d))
 assert(table.concat(d:fields().points, " ") == "level")
-assert(table.concat(d:fields().cells, " ") == "level tile")
+assert(table.concat(d:fields().cells, " ") == "level tile tile_class")
 local box = d:bbox()
 assert(box.max[3] == 0 and box.min[3] < -1, box.min[3]) -- level 0 on top, finer levels below
 
@@ -47,3 +47,12 @@ assert(math.abs(side - 100) < 1e-9, side)
 -- size_level: level 0, the unit segment, becomes 80 long.
 local by_level = develop(curves.dragon(), { levels = 4, size = 80, size_level = 0 })
 assert(math.abs(by_level:point(2)[1] - 80) < 1e-9, by_level:point(2)[1])
+
+-- Tile similarity classes (§4.2): with the paper's construction the dragon's count is 131 from level 9 on;
+-- unsmoothed tiles are all similar (mirror images included).
+local classes = develop(curves.dragon(), { levels = 9, smooth = 2, corner_shift = 0.1, stencil = "bounded" })
+local lo, hi = classes:range("tile_class")
+assert(lo == 0 and hi == 130, hi)
+assert(select(2, d:range("tile_class")) == 0)
+-- The classic stencil gives other shapes near points of valence 7, hence other classes.
+assert(select(2, develop(curves.dragon(), { levels = 9, smooth = 2, corner_shift = 0.1 }):range("tile_class")) ~= 130)

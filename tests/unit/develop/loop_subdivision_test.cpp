@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "../lsystem/table1.h"
@@ -112,4 +113,71 @@ TEST(Loop, Errors) {
   LoopOptions big{.steps = 8};
   big.budget.limit = 1000;
   EXPECT_THROW(loop_subdivide(octahedron(), big, no_progress()), BudgetError);
+}
+
+TEST(Loop, BoundedMasksArePartitionsOfUnityWithNonNegativeWeights) {
+  for (std::size_t n = 3; n <= 40; ++n) {
+    const EdgeMask mask = bounded_edge_mask(n);
+    ASSERT_EQ(mask.ring.size(), n);
+    double sum = mask.centre;
+    EXPECT_GE(mask.centre, 0) << n;
+    for (double w : mask.ring) {
+      EXPECT_GE(w, -1e-15) << n;
+      sum += w;
+    }
+    EXPECT_NEAR(sum, 1, 1e-14) << n;
+    const double beta = bounded_beta(n);
+    EXPECT_GT(beta, 0) << n;
+    EXPECT_GE(1 - static_cast<double>(n) * beta, 0) << n;
+  }
+}
+
+TEST(Loop, BoundedMaskIsTheRegularRuleAtValenceSixAndClassicBelow) {
+  const EdgeMask six = bounded_edge_mask(6);
+  const std::vector<double> regular{0.375, 0.125, 0, 0, 0, 0.125};
+  EXPECT_NEAR(six.centre, 0.375, 1e-15);
+  for (std::size_t k = 0; k < 6; ++k) EXPECT_NEAR(six.ring[k], regular[k], 1e-15) << k;
+  // The n = 6 formula of the n >= 7 branch gives the same (the mask equation's roots -1, -1/2, -1/2).
+  EXPECT_DOUBLE_EQ(bounded_beta(6), loop_beta(6));
+  EXPECT_DOUBLE_EQ(bounded_beta(5), loop_beta(5));
+}
+
+TEST(Loop, BoundedMaskHasTheEigenvaluesItPromises) {
+  // The ring's Fourier modes k = 1, 2, 3 are scaled by L, L^2 and c3 < L^2 (classic Loop's mode 2 exceeds
+  // L^2 from valence 7 on: unbounded curvature), and the constant mode's second eigenvalue is L^2 too.
+  for (std::size_t n = 7; n <= 30; ++n) {
+    const double pi = std::numbers::pi, l = 0.375 + 0.25 * std::cos(2 * pi / static_cast<double>(n));
+    const EdgeMask mask = bounded_edge_mask(n);
+    auto mode = [&](int k) {
+      double s = 0;
+      for (std::size_t j = 0; j < n; ++j)
+        s += mask.ring[j] * std::cos(2 * pi * k * static_cast<double>(j) / static_cast<double>(n));
+      return s;
+    };
+    EXPECT_NEAR(mode(1), l, 1e-14) << n;
+    EXPECT_NEAR(mode(2), l * l, 1e-14) << n;
+    EXPECT_LT(mode(3), l * l) << n;
+    EXPECT_GT(0.375 + 0.25 * std::cos(4 * pi / static_cast<double>(n)), l * l) << n;  // why the variant exists
+    EXPECT_NEAR(1 - static_cast<double>(n) * bounded_beta(n) - mask.centre, l * l, 1e-14) << n;
+  }
+}
+
+TEST(Loop, BoundedVariantKeepsConstantsAndOnlyMovesPointsNearValenceSevenOrMore) {
+  Mesh m = control(table1::dragon(), 5);
+  m.point_fields.set(real_field("one", std::vector<double>(m.points.size(), 1)));
+  const Mesh classic = loop_subdivide(m, {.steps = 1}, no_progress());
+  const Mesh bounded = loop_subdivide(m, {.steps = 1, .bounded = true}, no_progress());
+  ASSERT_EQ(classic.points.size(), bounded.points.size());
+  const Field* one = bounded.point_fields.find("one");
+  std::size_t moved = 0;
+  for (std::size_t i = 0; i < bounded.points.size(); ++i) {
+    EXPECT_NEAR(one->at(i), 1, 1e-14) << i;
+    if (norm(bounded.points[i] - classic.points[i]) > 1e-12) ++moved;
+  }
+  EXPECT_GT(moved, 0u);  // the dragon's control mesh has interior points of valence 7
+  EXPECT_LT(moved, bounded.points.size());
+  // The octahedron has valence 4 only: the same result.
+  const Mesh a = loop_subdivide(octahedron(), {.steps = 2}, no_progress());
+  const Mesh b = loop_subdivide(octahedron(), {.steps = 2, .bounded = true}, no_progress());
+  for (std::size_t i = 0; i < a.points.size(); ++i) EXPECT_EQ(a.points[i], b.points[i]);
 }
