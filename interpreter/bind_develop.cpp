@@ -1,5 +1,6 @@
-// develop(source, { levels, height, smooth, thickness, ... }) -> Mesh: seed 002's developing surface by route 1,
-// the control mesh smoothed by Loop subdivision and thickened. A thin adapter over kernels/develop.
+// develop(source, { levels, route, height, smooth, stencil, resolution, thickness, ... }) -> Mesh: seed 002's
+// developing surface, by route 1 (the control mesh smoothed by Loop subdivision) or route 2 (Bezier arcs
+// joined by Hermite curves), optionally thickened. A thin adapter over kernels/develop.
 #include "interpreter/bindings.h"
 #include "interpreter/curve_value.h"
 #include "interpreter/lua_support.h"
@@ -26,9 +27,10 @@ std::vector<Held<Polyline>> grammar_levels(lua_State* L, const lsystem::Grammar&
     points += counts.max_points();
     segments.push_back(counts.segments);
   }
-  // Open or closed is not known before drawing: the larger (open) count.
+  // Open or closed is not known before drawing: the larger (open) count. Route 2's size depends on the
+  // levels' segment lengths too: develop_surface predicts it once they are drawn, before building it.
   check_run_budget(
-      L, points + develop::developed_size(segments, false, opt),
+      L, points + (opt.route == develop::Route::loop ? develop::developed_size(segments, false, opt) : 0),
       "levels = " + std::to_string(top) + (opt.smooth > 0 ? ", smooth = " + std::to_string(opt.smooth) : ""));
   std::vector<Held<Polyline>> levels;
   double held = 0;
@@ -62,6 +64,8 @@ int develop(lua_State* L) {
       throw Error("option 'levels' is for a grammar: a list of curves is the stack itself, level 0 first");
     }
     develop::DevelopOptions opt;
+    opt.route = static_cast<develop::Route>(o.enumeration("route", {"loop", "bezier"}, 0));
+    opt.resolution = static_cast<int>(o.integer("resolution", opt.resolution, 1, 64));
     opt.height = o.number("height", opt.height);
     opt.smooth = static_cast<int>(o.integer("smooth", 0, 0, 12));
     opt.bounded = o.enumeration("stencil", {"loop", "bounded"}, 0) == 1;

@@ -13,8 +13,8 @@ namespace selfsim::develop {
 
 namespace {
 
-// The thickness field of the control mesh: level l's thickness is t·rate^l, or t·(segment length of level l
-// / of level 0) for the self-similar thickness.
+// The thickness field: level l's thickness is t·rate^l, or t·(segment length of level l / of level 0) for
+// the self-similar thickness; between levels (route 2's `level` field is continuous) it goes geometrically.
 void set_thickness(Mesh& m, std::span<const Polyline* const> levels, const DevelopOptions& opt) {
   std::vector<double> per_level;
   const double first = levels.front()->length() / static_cast<double>(levels.front()->segments());
@@ -24,7 +24,12 @@ void set_thickness(Mesh& m, std::span<const Polyline* const> levels, const Devel
                             : opt.thickness * levels[l]->length() / static_cast<double>(levels[l]->segments()) / first);
   const Field* level = m.point_fields.find("level");
   std::vector<double> t(m.points.size());
-  for (std::size_t i = 0; i < t.size(); ++i) t[i] = per_level[static_cast<std::size_t>(level->at(i))];
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const double x = level->at(i);
+    const auto l = std::min(static_cast<std::size_t>(x), per_level.size() - 1);
+    const double frac = x - static_cast<double>(l);
+    t[i] = frac > 0 ? per_level[l] * std::pow(per_level[l + 1] / per_level[l], frac) : per_level[l];
+  }
   m.point_fields.set(real_field("thickness", std::move(t)));
 }
 
@@ -68,9 +73,19 @@ Mesh scaled(Mesh m, std::span<const Polyline* const> levels, const DevelopOption
 
 void DevelopOptions::validate() const {
   check_range(smooth, 0, 12, "option 'smooth'");
+  check_range(resolution, 1, 64, "option 'resolution'");
   check_between(thickness, 0, 1e6, "option 'thickness'");
   if (thickness_rate != 0) check_between(thickness_rate, 1e-6, 1, "option 'thickness_rate'");
   check_between(size, 0, 1e9, "option 'size'");
+  if (route == Route::bezier) {
+    // Route 2 smooths by its Bezier arcs: Loop's options have no meaning there.
+    const char* loop_only = smooth > 0 ? "smooth" : corner_shift > 0 ? "corner_shift" : bounded ? "stencil" : nullptr;
+    if (loop_only != nullptr)
+      throw Error(std::string("option '") + loop_only +
+                  "' is for route \"loop\" (Loop subdivision); route \"bezier\" is smooth by its Bezier arcs");
+  } else if (resolution != 4) {
+    throw Error("option 'resolution' is for route \"bezier\"; route \"loop\" refines with 'smooth'");
+  }
 }
 
 double developed_size(std::span<const double> segments, bool closed, const DevelopOptions& opt) {
@@ -91,17 +106,25 @@ double developed_size(std::span<const double> segments, bool closed, const Devel
   return opt.thickness > 0 ? 2 * v + 2 * f + 2 * boundary : v + f;
 }
 
-Mesh develop_surface(std::span<const Polyline* const> levels, const DevelopOptions& opt, Progress& progress) {
-  opt.validate();
+namespace {
+
+// Route 2's surface, predicted (thickened: two sheets and a rim) before it is built.
+Mesh bezier_route(std::span<const Polyline* const> levels, const DevelopOptions& opt, Progress& progress) {
+  const BezierOptions bezier{opt.height, opt.resolution, opt.budget};
+  const BezierCounts n = bezier_counts(levels, bezier);
+  check_budget(opt.thickness > 0 ? 2 * (n.points + n.triangles + n.boundary_edges) : n.points + n.triangles, opt.budget,
+               "route \"bezier\" at resolution = " + std::to_string(opt.resolution));
+  return bezier_surface(levels, bezier, progress);
+}
+
+// Route 1's surface with its tile classes, predicted before it is built.
+Mesh loop_route(std::span<const Polyline* const> levels, const DevelopOptions& opt, Progress& progress) {
   {
     std::vector<double> segments;
     for (const Polyline* c : levels) segments.push_back(static_cast<double>(c->segments()));
-    check_budget(developed_size(segments, closed_levels(levels), opt), opt.budget, "develop");
+    check_budget(developed_size(segments, closed_levels(levels), opt), opt.budget, "the surface");
   }
-  if (opt.size_level >= static_cast<int>(levels.size()))
-    throw Error("option 'size_level' must be a level of the stack, 0 to " + std::to_string(levels.size() - 1) +
-                ", got " + std::to_string(opt.size_level));
-  ProgressStage build(progress, 0, opt.smooth > 0 ? 0.1 : 1);
+  ProgressStage build(progress, 0, opt.smooth > 0 ? 0.1 : 0.9);
   Mesh m = control_mesh(levels, {opt.height, opt.corner_shift}, build);
   const TileLayout layout = tile_layout(m, opt.smooth);
   if (opt.thickness > 0) set_thickness(m, levels, opt);
@@ -113,17 +136,28 @@ Mesh develop_surface(std::span<const Polyline* const> levels, const DevelopOptio
       const auto last_start = static_cast<std::uint32_t>(m.points.size() - levels.back()->points.size());
       loop.corners = {0, first_end, last_start, static_cast<std::uint32_t>(m.points.size() - 1)};
     }
-    ProgressStage smooth(progress, 0.1, opt.thickness > 0 ? 0.85 : 0.95);
+    ProgressStage smooth(progress, 0.1, 0.9);
     m = loop_subdivide(m, loop, smooth);
   }
-  {
-    ProgressStage classes(progress, opt.thickness > 0 ? 0.85 : 0.95, opt.thickness > 0 ? 0.9 : 1);
-    const std::vector<std::int32_t> of_tile = tile_classes(m, layout, classes);
-    std::vector<std::int32_t> of_face(m.faces());
-    for (std::size_t f = 0; f < of_face.size(); ++f) of_face[f] = of_tile[f / layout.faces];
-    m.face_fields.set(int_field("tile_class", std::move(of_face)));
-  }
+  ProgressStage classes(progress, 0.9, 1);
+  const std::vector<std::int32_t> of_tile = tile_classes(m, layout, classes);
+  std::vector<std::int32_t> of_face(m.faces());
+  for (std::size_t f = 0; f < of_face.size(); ++f) of_face[f] = of_tile[f / layout.faces];
+  m.face_fields.set(int_field("tile_class", std::move(of_face)));
+  return m;
+}
+
+}  // namespace
+
+Mesh develop_surface(std::span<const Polyline* const> levels, const DevelopOptions& opt, Progress& progress) {
+  opt.validate();
+  if (opt.size_level >= static_cast<int>(levels.size()))
+    throw Error("option 'size_level' must be a level of the stack, 0 to " + std::to_string(levels.size() - 1) +
+                ", got " + std::to_string(opt.size_level));
+  ProgressStage surface(progress, 0, opt.thickness > 0 ? 0.9 : 1);
+  Mesh m = opt.route == Route::bezier ? bezier_route(levels, opt, surface) : loop_route(levels, opt, surface);
   if (opt.thickness > 0) {
+    if (opt.route == Route::bezier) set_thickness(m, levels, opt);
     ProgressStage solid(progress, 0.9, 1);
     m = thicken(m, solid);
   }

@@ -1,20 +1,30 @@
-// Developing fractal curves (seed 002): the level stack's control mesh (control_mesh.h), smoothed by Loop
-// subdivision (loop_subdivision.h) with the stack's four corners kept (the ends of its first and last levels:
-// a closed stack, an annulus, has none), so the smooth surface still spans the coarsest and finest curves;
-// then, given a thickness, thickened into a closed solid (thicken.h). The thickness is a point field set on
-// the control mesh, level by level, and subdivided with the same weights as the positions (§3.2): by
-// default it shrinks as the curve's segments do (the self-similar, "correct" thickness of §3.1.2); a
-// `thickness_rate` shrinks it more slowly, as a print needs.
+// Developing fractal curves (seed 002), by two routes. Route 1: the level stack's control mesh
+// (control_mesh.h), smoothed by Loop subdivision (loop_subdivision.h) with the stack's four corners kept (the
+// ends of its first and last levels: a closed stack, an annulus, has none), so the smooth surface still spans
+// the coarsest and finest curves, its tiles classed by similarity (tile_classes.h). Route 2: the direct
+// parameterisation (bezier_surface.h). Either, given a thickness, is thickened into a closed solid
+// (thicken.h). The thickness is a point field: by default it shrinks as the curve's segments do (the
+// self-similar, "correct" thickness of §3.1.2), a `thickness_rate` shrinks it more slowly, as a print needs.
+// Route 1 sets it on the control mesh, level by level, and subdivides it with the same weights as the
+// positions (§3.2); route 2 interpolates it geometrically between levels along the smooth `level` field.
 #pragma once
 
 #include <span>
 
+#include "kernels/develop/bezier_surface.h"
 #include "kernels/develop/control_mesh.h"
 #include "kernels/develop/loop_subdivision.h"
 
 namespace selfsim::develop {
 
+// Route 1 (§3.2): the control mesh smoothed by Loop subdivision, for stacks that refine segment by segment
+// (dragon, terdragon, arrowhead, Koch, Gosper); route 2 (§3.1): each level smoothed by Bezier arcs and the
+// levels joined by Hermite curves (bezier_surface.h), for any stack (Hilbert too).
+enum class Route { loop, bezier };
+
 struct DevelopOptions {
+  Route route = Route::loop;
+  int resolution = 4;         // route 2: samples per Bezier piece, in [1, 64]
   double height = 1;          // gap between levels l and l+1, in segment lengths of level l
   double corner_shift = 0;    // inward shift of each level's inner points, in [0, 0.5] (control_mesh.h)
   int smooth = 0;             // rounds of Loop subdivision, in [0, 12]
@@ -33,7 +43,7 @@ struct DevelopOptions {
 // V' = V + E, E' = 2E + 3F, F' = 4F, and thickening's two sheets and rim (two triangles a boundary edge).
 double developed_size(std::span<const double> segments, bool closed, const DevelopOptions& opt);
 
-// Checks developed_size against opt.budget before building anything.
+// Checks developed_size (route 2: bezier_counts) against opt.budget before building anything.
 Mesh develop_surface(std::span<const Polyline* const> levels, const DevelopOptions& opt, Progress& progress);
 
 }  // namespace selfsim::develop

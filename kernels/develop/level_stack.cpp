@@ -46,8 +46,8 @@ int refinement_branching(std::span<const Polyline* const> levels) {
     // What the control mesh needs; curves made otherwise (Hilbert) need seed 002's direct parameterisation.
     const std::string need =
         ": the control mesh needs each segment replaced by the same number of consecutive "
-        "segments with the same ends (direct Bezier parameterisation, seed 002 §3.1, which "
-        "other curves need, is not built yet)";
+        "segments with the same ends; develop it with route = \"bezier\" (seed 002 §3.1's direct "
+        "parameterisation, which any stack of curves can take)";
     if (f % s != 0 || f / s < 1)
       throw Error(where + " (" + std::to_string(f) + " segments for " + std::to_string(s) + ")" + need);
     const int b = static_cast<int>(f / s);
