@@ -5,7 +5,7 @@
 // terdragon, 125 for the Koch snowflake and 1487 for the Gosper curve once the count stops growing.
 //
 // Two tiles are in one class when a similarity (rotation, reflection, uniform scale and translation) maps
-// one onto the other point for point, to a millionth of the tile's size. (With reflections, all unsmoothed
+// one onto the other point for point, to a billionth of the tile's size. (With reflections, all unsmoothed
 // tiles are one class, as §4.2 says; the smoothed counts are the paper's with or without them.) The
 // points compared are, for every tile alike, its smoothed control points and the points subdivision made
 // near them; each tile is put in its own frame (origin at its coarse segment's first end a, x towards the
