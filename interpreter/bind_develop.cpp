@@ -7,6 +7,7 @@
 #include "interpreter/options_reader.h"
 #include "interpreter/run_context.h"
 #include "kernels/develop/develop.h"
+#include "kernels/develop/rounded_corners.h"
 #include "kernels/lsystem/grammar.h"
 #include "kernels/lsystem/production_count.h"
 #include "kernels/lsystem/turtle2d.h"
@@ -103,6 +104,23 @@ int develop(lua_State* L) {
 }
 
 }  // namespace
+
+// c:rounded{ samples = 8 } -> Curve: every corner rounded by the arc §1 draws (kernels/develop/rounded_corners.h).
+int curve_rounded(lua_State* L) {
+  const Held<Polyline> c = geometry_self<Polyline>(L, "rounded");
+  return call_kernel(L, "rounded", [&] {
+    if (lua_gettop(L) > 2) throw Error("takes a table of options, c:rounded{ samples = 8 }");
+    Options o(L, 2);
+    develop::RoundOptions opt;
+    opt.samples = static_cast<int>(o.integer("samples", opt.samples, 1, 1024));
+    o.finish();
+    push_geometry(L, with_budget(L, [&](const PointBudget& b) {
+                    opt.budget = b;
+                    return develop::rounded_corners(*c, opt, RunContext::of(L));
+                  }));
+    return 1;
+  });
+}
 
 void open_develop(lua_State* L) { lua_register(L, "develop", develop); }
 

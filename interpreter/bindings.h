@@ -30,6 +30,8 @@ void push_group(lua_State* L, int index);
 // bind_group.cpp: c:reverse() for Curve (V = Vec2) and Curve3 (Vec3).
 template <class V>
 int curve_reverse(lua_State* L);
+// bind_develop.cpp: c:rounded{...}, a curve's corners rounded by arcs.
+int curve_rounded(lua_State* L);
 
 inline void open_all(lua_State* L) {
   open_curve(L);

@@ -95,7 +95,8 @@ void open_curve(lua_State* L) {
                                   {"length", curve_length<Polyline>},
                                   {"level", curve_level},
                                   {"transform", curve_transform},
-                                  {"reverse", curve_reverse<Vec2>}});
+                                  {"reverse", curve_reverse<Vec2>},
+                                  {"rounded", curve_rounded}});
   register_geometry<Polyline3>(L, {{"segments", curve_segments<Polyline3>},
                                    {"paths", curve_paths<Polyline3>},
                                    {"length", curve_length<Polyline3>},
