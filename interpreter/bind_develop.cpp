@@ -75,6 +75,7 @@ int develop(lua_State* L) {
     opt.corner_shift = o.number("corner_shift", 0);
     opt.size = o.number("size", 0);
     opt.size_level = static_cast<int>(o.integer("size_level", -1, -1, lsystem::max_level));
+    opt.check = o.boolean("check", true);
     o.finish();
 
     std::vector<Held<Polyline>> levels;
@@ -95,10 +96,16 @@ int develop(lua_State* L) {
     // develop_surface checks the result's predicted size against the budget before building it.
     std::vector<const Polyline*> stack;
     for (const auto& c : levels) stack.push_back(c.get());
+    std::vector<std::string> warnings;
     push_geometry(L, with_budget(L, [&](const PointBudget& b) {
                     opt.budget = b;
-                    return develop::develop_surface(stack, opt, RunContext::of(L));
+                    warnings.clear();
+                    return develop::develop_surface(stack, opt, RunContext::of(L), &warnings);
                   }));
+    for (const std::string& w : warnings) {
+      const std::string message = recipe_where(L) + "develop: " + w;
+      lua_warning(L, message.c_str(), 0);
+    }
     return 1;
   });
 }

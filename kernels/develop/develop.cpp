@@ -8,6 +8,7 @@
 #include "kernels/develop/thicken.h"
 #include "kernels/develop/tile_classes.h"
 #include "kernels/geom/check.h"
+#include "kernels/geom/mesh_intersections.h"
 
 namespace selfsim::develop {
 
@@ -147,19 +148,52 @@ Mesh loop_route(std::span<const Polyline* const> levels, const DevelopOptions& o
   return m;
 }
 
+// "triangle 12 (level 3, tile 7)": a face as a user can find it in ParaView (cell ids count from 0 there,
+// as here).
+std::string face_text(const Mesh& m, std::uint32_t f) {
+  std::string s = "triangle " + std::to_string(f);
+  std::string where;
+  for (const char* name : {"level", "tile"})
+    if (const Field* field = m.face_fields.find(name))
+      where +=
+          std::string(where.empty() ? "" : ", ") + name + " " + std::to_string(static_cast<long long>(field->at(f)));
+  return where.empty() ? s : s + " (" + where + ")";
+}
+
+std::string pair_text(const Mesh& m, const TrianglePair& p) {
+  return face_text(m, p.first) + " meets " + face_text(m, p.second) + " at (" + number_text(p.where.x) + ", " +
+         number_text(p.where.y) + ", " + number_text(p.where.z) + ")";
+}
+
 }  // namespace
 
-Mesh develop_surface(std::span<const Polyline* const> levels, const DevelopOptions& opt, Progress& progress) {
+Mesh develop_surface(std::span<const Polyline* const> levels, const DevelopOptions& opt, Progress& progress,
+                     std::vector<std::string>* warnings) {
   opt.validate();
   if (opt.size_level >= static_cast<int>(levels.size()))
     throw Error("option 'size_level' must be a level of the stack, 0 to " + std::to_string(levels.size() - 1) +
                 ", got " + std::to_string(opt.size_level));
-  ProgressStage surface(progress, 0, opt.thickness > 0 ? 0.9 : 1);
+  const double built = opt.thickness > 0 ? 0.7 : 0.9;
+  ProgressStage surface(progress, 0, built);
   Mesh m = opt.route == Route::bezier ? bezier_route(levels, opt, surface) : loop_route(levels, opt, surface);
+  if (opt.check) {
+    ProgressStage check(progress, built, opt.thickness > 0 ? 0.8 : 1);
+    if (const auto p = first_intersection(m, check))
+      throw Error("the surface meets itself: " + pair_text(m, *p) +
+                  (opt.route == Route::loop && opt.smooth == 0
+                       ? "; shift its corners (corner_shift = 0.1) or smooth it, or keep it with check = false"
+                       : "; shift its corners (corner_shift), lower the height, or keep it with check = false"));
+  }
   if (opt.thickness > 0) {
     if (opt.route == Route::bezier) set_thickness(m, levels, opt);
-    ProgressStage solid(progress, 0.9, 1);
+    ProgressStage solid(progress, 0.8, 0.9);
     m = thicken(m, solid);
+    ProgressStage check(progress, 0.9, 1);
+    if (opt.check && warnings != nullptr)
+      if (const auto p = first_intersection(m, check))
+        warnings->push_back("the thickened solid meets itself (" + pair_text(m, *p) +
+                            "): its thickness there is more than the gap between the surface's parts; lower "
+                            "thickness or thickness_rate");
   }
   return scaled(std::move(m), levels, opt);
 }

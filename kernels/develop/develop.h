@@ -10,6 +10,8 @@
 #pragma once
 
 #include <span>
+#include <string>
+#include <vector>
 
 #include "kernels/develop/bezier_surface.h"
 #include "kernels/develop/control_mesh.h"
@@ -33,6 +35,7 @@ struct DevelopOptions {
   double thickness_rate = 0;  // factor per level, in (0, 1]; 0 for the curve's own segment ratio
   double size = 0;            // scale the result so its largest side is this (thickness too); 0: as built
   int size_level = -1;        // with size: the level whose curve's larger side becomes `size`; −1: the whole
+  bool check = true;          // refuse a surface that meets itself; warn when the thickened solid does
   PointBudget budget;         // refuse (before subdividing) a result predicted not to fit
 
   void validate() const;
@@ -43,7 +46,12 @@ struct DevelopOptions {
 // V' = V + E, E' = 2E + 3F, F' = 4F, and thickening's two sheets and rim (two triangles a boundary edge).
 double developed_size(std::span<const double> segments, bool closed, const DevelopOptions& opt);
 
-// Checks developed_size (route 2: bezier_counts) against opt.budget before building anything.
-Mesh develop_surface(std::span<const Polyline* const> levels, const DevelopOptions& opt, Progress& progress);
+// Checks developed_size (route 2: bezier_counts) against opt.budget before building anything. With
+// opt.check, the surface (before thickening) must not meet itself: Error naming the first pair of triangles
+// that do (a curve whose levels touch themselves, unshifted and unsmoothed, does); and when the thickened
+// solid meets itself, its thickness is too large for the narrowest gap between the surface's parts, which
+// `warnings` (if given) says, naming where.
+Mesh develop_surface(std::span<const Polyline* const> levels, const DevelopOptions& opt, Progress& progress,
+                     std::vector<std::string>* warnings = nullptr);
 
 }  // namespace selfsim::develop

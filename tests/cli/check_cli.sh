@@ -30,6 +30,14 @@ expect 2 "missing recipe" -- "$selfsim" run "$tmp/nope.lua"
 contains "$tmp/err" "cannot open recipe" "missing recipe message"
 expect 2 "bad --max-points" -- "$selfsim" run "$src/examples/plant.lua" --max-points lots
 
+# A developing surface thickened beyond the gaps between its parts only warns, naming where.
+printf 'local curves = require "selfsim.curves"\ndevelop(curves.dragon(), { levels = 7, smooth = 2, corner_shift = 0.1, thickness = 0.6 })\n' >"$tmp/thick.lua"
+expect 0 "too thick a solid only warns" -- "$selfsim" run "$tmp/thick.lua" -o "$tmp/thick"
+contains "$tmp/err" "develop: the thickened solid meets itself (triangle 226 (level 2, tile 4) meets triangle 242" "thickness warning"
+printf 'local curves = require "selfsim.curves"\ndevelop(curves.dragon(), { levels = 7, smooth = 2, corner_shift = 0.1, thickness = 0.2 })\n' >"$tmp/thin.lua"
+expect 0 "a thin solid" -- "$selfsim" run "$tmp/thin.lua" -o "$tmp/thin"
+[ -s "$tmp/err" ] && { echo "FAIL: a thin solid warned: $(cat "$tmp/err")"; failures=$((failures + 1)); }
+
 # A real run, then info and diff on what it wrote.
 expect 0 "run plant" -- "$selfsim" run "$src/examples/plant.lua" -o "$tmp/a" --set level=2
 contains "$tmp/out" "wrote $tmp/a/plant.vtp (26 points)" "run reports its files"

@@ -28,6 +28,7 @@ Mesh developed(const lsystem::Grammar& g, int top, int smooth, double shift, boo
   opt.smooth = smooth;
   opt.corner_shift = shift;
   opt.bounded = bounded;
+  opt.check = smooth > 0;  // the unsmoothed dragon touches itself: kept here to count its tiles
   return develop_surface(p, opt, no_progress());
 }
 

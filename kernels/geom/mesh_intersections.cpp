@@ -1,0 +1,436 @@
+#include "kernels/geom/mesh_intersections.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "kernels/geom/error.h"
+#include "kernels/geom/huge_pages.h"
+
+namespace selfsim {
+
+namespace {
+
+// ---- The pair test: is the distance between two triangles at most eps, and where do they meet?
+//
+// The closest points of two triangles are an edge of one crossing the other, a corner of one nearest the
+// other, or two edges nearest each other in their interiors; a test of each is the whole distance, coplanar
+// and degenerate cases included. Separating axes first reject, cheaply, nearly every pair that is apart.
+
+struct Tri {
+  std::array<Vec3, 3> v;
+  Vec3 n;     // cross(v1 - v0, v2 - v0): twice the area, along the normal
+  bool flat;  // height below 1e-12 of the longest edge: tested as its edges (a segment or a point)
+
+  explicit Tri(const std::array<Vec3, 3>& corners) : v(corners), n(cross(v[1] - v[0], v[2] - v[0])) {
+    const double longest =
+        std::max({dot(v[1] - v[0], v[1] - v[0]), dot(v[2] - v[1], v[2] - v[1]), dot(v[0] - v[2], v[0] - v[2])});
+    flat = dot(n, n) <= 1e-24 * longest * longest;
+  }
+  // Whether x, a point of the triangle's plane, lies in the triangle (edges included).
+  bool contains(Vec3 x) const {
+    return dot(cross(v[1] - v[0], x - v[0]), n) >= 0 && dot(cross(v[2] - v[1], x - v[1]), n) >= 0 &&
+           dot(cross(v[0] - v[2], x - v[2]), n) >= 0;
+  }
+};
+
+Vec3 closest_on_segment(Vec3 p, Vec3 a, Vec3 b) {
+  const Vec3 d = b - a;
+  const double len2 = dot(d, d);
+  if (len2 == 0) return a;
+  return a + std::clamp(dot(p - a, d) / len2, 0.0, 1.0) * d;
+}
+
+Vec3 closest_on_triangle(Vec3 p, const Tri& t) {
+  if (!t.flat) {
+    const Vec3 q = p - (dot(p - t.v[0], t.n) / dot(t.n, t.n)) * t.n;  // p dropped onto the plane
+    if (t.contains(q)) return q;
+  }
+  // Outside (or flat): the nearest point is on the boundary.
+  Vec3 best = t.v[0];
+  double best2 = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 q = closest_on_segment(p, t.v[k], t.v[(k + 1) % 3]);
+    if (dot(p - q, p - q) < best2) best = q, best2 = dot(p - q, p - q);
+  }
+  return best;
+}
+
+// True when a and b's projections on `axis` are more than eps (times the axis's length) apart: then the
+// triangles are too. Only a shortcut: a zero axis separates nothing. Projected from a's first corner, so
+// that rounding scales with the triangles' size, not with their distance from the origin.
+bool apart_on(Vec3 axis, const Tri& a, const Tri& b, double eps) {
+  const Vec3 o = a.v[0];
+  const double a0 = 0, a1 = dot(a.v[1] - o, axis), a2 = dot(a.v[2] - o, axis);
+  const double b0 = dot(b.v[0] - o, axis), b1 = dot(b.v[1] - o, axis), b2 = dot(b.v[2] - o, axis);
+  const double gap =
+      std::max(std::min({b0, b1, b2}) - std::max({a0, a1, a2}), std::min({a0, a1, a2}) - std::max({b0, b1, b2}));
+  return gap > 0 && gap * gap > eps * eps * dot(axis, axis);
+}
+
+// Separating axes, cheapest and likeliest first: the normals (which settle most pairs of a curved surface),
+// each triangle's edges' outward directions in its own plane (coplanar pairs), and the edges' cross
+// products. Together they find a gap wider than eps between any pair they do not let through.
+bool separated(const Tri& a, const Tri& b, double eps) {
+  if ((!a.flat && apart_on(a.n, a, b, eps)) || (!b.flat && apart_on(b.n, a, b, eps))) return true;
+  for (int k = 0; k < 3; ++k) {
+    if (!a.flat && apart_on(cross(a.v[(k + 1) % 3] - a.v[k], a.n), a, b, eps)) return true;
+    if (!b.flat && apart_on(cross(b.v[(k + 1) % 3] - b.v[k], b.n), a, b, eps)) return true;
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (apart_on(cross(a.v[(i + 1) % 3] - a.v[i], b.v[(j + 1) % 3] - b.v[j]), a, b, eps)) return true;
+  return false;
+}
+
+// Where the segment p-q passes through t's plane strictly between its ends, if that point is in t. (An end on
+// the plane is a corner near t; a crossing just outside t is near one of t's edges.)
+std::optional<Vec3> crossing(Vec3 p, Vec3 q, const Tri& t) {
+  if (t.flat) return std::nullopt;
+  const double dp = dot(p - t.v[0], t.n), dq = dot(q - t.v[0], t.n);
+  if (!((dp < 0 && dq > 0) || (dp > 0 && dq < 0))) return std::nullopt;
+  const Vec3 x = p + (dp / (dp - dq)) * (q - p);
+  if (t.contains(x)) return x;
+  return std::nullopt;
+}
+
+// The midpoint of the closest points of segments p1-q1 and p2-q2 when those lie inside both segments and
+// within eps of each other. Lines within 1e-12 radians of parallel are left to the corner tests: their
+// closest points then include an end to rounding. The line parameters come from cross products, which keep
+// their precision for nearly parallel edges where the normal equations would cancel.
+std::optional<Vec3> edges_meet(Vec3 p1, Vec3 q1, Vec3 p2, Vec3 q2, double eps2) {
+  const Vec3 d1 = q1 - p1, d2 = q2 - p2, n = cross(d1, d2);
+  const double nn = dot(n, n);
+  if (!(nn > 1e-24 * dot(d1, d1) * dot(d2, d2))) return std::nullopt;
+  const Vec3 w = p2 - p1;
+  const double s = dot(cross(w, d2), n) / nn, t = dot(cross(w, d1), n) / nn;
+  if (!(s >= 0 && s <= 1 && t >= 0 && t <= 1)) return std::nullopt;
+  const Vec3 x1 = p1 + s * d1, x2 = p2 + t * d2;
+  if (dot(x1 - x2, x1 - x2) > eps2) return std::nullopt;
+  return 0.5 * (x1 + x2);
+}
+
+// A point where a and b meet (are within eps of each other), if they do.
+std::optional<Vec3> contact(const Tri& a, const Tri& b, double eps) {
+  if (separated(a, b, eps)) return std::nullopt;
+  for (int k = 0; k < 3; ++k) {
+    if (auto x = crossing(a.v[k], a.v[(k + 1) % 3], b)) return x;
+    if (auto x = crossing(b.v[k], b.v[(k + 1) % 3], a)) return x;
+  }
+  const double eps2 = eps * eps;
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 qa = closest_on_triangle(a.v[k], b);
+    if (dot(qa - a.v[k], qa - a.v[k]) <= eps2) return 0.5 * (qa + a.v[k]);
+    const Vec3 qb = closest_on_triangle(b.v[k], a);
+    if (dot(qb - b.v[k], qb - b.v[k]) <= eps2) return 0.5 * (qb + b.v[k]);
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (auto x = edges_meet(a.v[i], a.v[(i + 1) % 3], b.v[j], b.v[(j + 1) % 3], eps2)) return x;
+  return std::nullopt;
+}
+
+// ---- The grid: candidate pairs are triangles whose boxes (grown by eps) share a cell.
+//
+// Boxes are floats in units of the mesh's diagonal from its low corner (24 bytes a triangle instead of 48),
+// widened by 2^-23 so that rounding only ever grows them. Every (cell, triangle) insertion is one 64-bit
+// record, the cell's Morton code above the triangle's index, radix-sorted by cell: cells then come in an
+// order that sweeps space, so neighbouring cells find their triangles still in cache (a hash table of cells
+// visits them in random order and misses the cache on most triangles it gathers). The sort is stable and
+// the records start in triangle order, so each cell's run lists its triangles in increasing index.
+
+struct Box {
+  std::array<float, 3> lo, hi;
+};
+
+using Cell = std::array<std::uint32_t, 3>;
+
+// The low 21 bits of x moved to every third bit (bit k to bit 3k), in five shifts of halving width.
+std::uint64_t spread(std::uint64_t x) {
+  x &= 0x1fffff;
+  x = (x | x << 32) & 0x001f00000000ffffull;
+  x = (x | x << 16) & 0x001f0000ff0000ffull;
+  x = (x | x << 8) & 0x100f00f00f00f00full;
+  x = (x | x << 4) & 0x10c30c30c30c30c3ull;
+  x = (x | x << 2) & 0x1249249249249249ull;
+  return x;
+}
+// The inverse: every third bit of x, from bit 0, packed together.
+std::uint32_t compact(std::uint64_t x) {
+  x &= 0x1249249249249249ull;
+  x = (x | x >> 2) & 0x10c30c30c30c30c3ull;
+  x = (x | x >> 4) & 0x100f00f00f00f00full;
+  x = (x | x >> 8) & 0x001f0000ff0000ffull;
+  x = (x | x >> 16) & 0x001f00000000ffffull;
+  x = (x | x >> 32) & 0x1fffffull;
+  return static_cast<std::uint32_t>(x);
+}
+
+int bit_width(std::uint64_t x) { return x == 0 ? 0 : 64 - __builtin_clzll(x); }
+
+struct Grid {
+  float per_unit = 1;      // cells per unit of the diagonal
+  std::uint32_t last = 0;  // the highest cell index on any axis
+  int id_bits = 1;         // the records' low bits hold the triangle index
+
+  std::uint32_t cell(float u) const {
+    // Boxes start a little below 0: truncation toward zero takes those to cell 0, as floor would.
+    return std::min(static_cast<std::uint32_t>(std::max(static_cast<std::int32_t>(u * per_unit), 0)), last);
+  }
+  Cell low(const Box& b) const { return {cell(b.lo[0]), cell(b.lo[1]), cell(b.lo[2])}; }
+  Cell high(const Box& b) const { return {cell(b.hi[0]), cell(b.hi[1]), cell(b.hi[2])}; }
+  static std::uint64_t cells(const Cell& lo, const Cell& hi) {
+    return std::uint64_t{hi[0] - lo[0] + 1} * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1);
+  }
+  std::uint64_t cells(const Box& b) const { return cells(low(b), high(b)); }
+  static std::uint64_t key(const Cell& c) { return spread(c[0]) | spread(c[1]) << 1 | spread(c[2]) << 2; }
+  static Cell cell_of(std::uint64_t key) { return {compact(key), compact(key >> 1), compact(key >> 2)}; }
+  int key_bits() const { return 3 * bit_width(last); }
+};
+
+// Insertions (triangle, cell) g would make. A sum of whole numbers: the same whatever the threads.
+double insertions(const std::vector<Box>& boxes, const Grid& g) {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, boxes.size(), 1 << 14), 0.0,
+      [&](const tbb::blocked_range<std::size_t>& r, double sum) {
+        for (std::size_t i = r.begin(); i < r.end(); ++i) sum += double(g.cells(boxes[i]));
+        return sum;
+      },
+      std::plus<>());
+}
+
+// Cell size: twice the median triangle's largest extent (from a sample), so a typical triangle spans one
+// or two cells an axis; doubled while there are more than 8 insertions a triangle (a few triangles as large
+// as the mesh would otherwise fill millions of cells each). Cells are no smaller than the key allows: three
+// coordinates and the triangle index share 64 bits. `reach` is the largest box coordinate.
+Grid choose_grid(const std::vector<Box>& boxes, float reach) {
+  const std::size_t f = boxes.size(), samples = std::min<std::size_t>(f, 1 << 16);
+  std::vector<float> sizes(samples);
+  for (std::size_t k = 0; k < samples; ++k) {
+    const Box& b = boxes[k * f / samples];
+    sizes[k] = std::max({b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]});
+  }
+  std::nth_element(sizes.begin(), sizes.begin() + samples / 2, sizes.end());
+  Grid g;
+  g.id_bits = std::max(1, bit_width(f - 1));
+  const int axis_bits = std::min(21, (64 - g.id_bits) / 3);
+  double cell = std::max(2 * double(sizes[samples / 2]), std::ldexp(2.0, -axis_bits));
+  auto with = [&](double size) {
+    g.per_unit = static_cast<float>(1 / size);
+    g.last = (std::uint32_t{1} << axis_bits) - 1;
+    g.last = g.cell(reach);
+    return g;
+  };
+  const double limit = std::min(8.0 * double(f) + 4096, double(std::numeric_limits<std::uint32_t>::max()));
+  while (insertions(boxes, with(cell)) > limit && cell < 2) cell *= 2;
+  return g;
+}
+
+// A large array, sized to n without a cost per page: 2 MiB pages (first touch is dear on some machines).
+template <class T>
+void size_large(std::vector<T>& v, std::size_t n) {
+  v.reserve(n);
+  advise_huge_pages(v);
+  v.resize(n);
+}
+
+// The records of every insertion, sorted by cell (stable, so by triangle within a cell).
+std::vector<std::uint64_t> sorted_records(const std::vector<Box>& boxes, const Grid& g, Progress& progress) {
+  // Blocks of triangles count their records, then write them from their block's offset.
+  constexpr std::size_t block = 1 << 14;
+  const std::size_t f = boxes.size(), blocks = (f + block - 1) / block;
+  std::vector<std::size_t> start(blocks + 1, 0);
+  tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+    for (std::size_t i = b * block; i < std::min(f, (b + 1) * block); ++i) start[b + 1] += g.cells(boxes[i]);
+  });
+  for (std::size_t b = 0; b < blocks; ++b) start[b + 1] += start[b];
+  std::vector<std::uint64_t> records, spare;
+  size_large(records, start[blocks]);
+  tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+    std::uint64_t* out = records.data() + start[b];
+    for (std::size_t i = b * block; i < std::min(f, (b + 1) * block); ++i) {
+      const Cell lo = g.low(boxes[i]), hi = g.high(boxes[i]);
+      for (std::uint32_t z = lo[2]; z <= hi[2]; ++z)
+        for (std::uint32_t y = lo[1]; y <= hi[1]; ++y)
+          for (std::uint32_t x = lo[0]; x <= hi[0]; ++x) *out++ = Grid::key({x, y, z}) << g.id_bits | i;
+    }
+  });
+  // Least significant digit first, 11 bits a pass (2048 counters stay in L1). Each pass counts and moves a
+  // fixed set of parts in parallel, each part into slots after the earlier parts': stable whatever the threads.
+  constexpr int digit = 11;
+  constexpr std::uint64_t digit_mask = (1 << digit) - 1;
+  constexpr std::size_t parts = 64;
+  const std::size_t n = records.size(), part = (n + parts - 1) / parts;
+  size_large(spare, n);
+  std::vector<std::array<std::size_t, 1 << digit>> slot(parts);
+  for (int shift = g.id_bits; shift < g.id_bits + g.key_bits(); shift += digit) {
+    if (progress.cancelled()) throw Cancelled();
+    tbb::parallel_for(std::size_t{0}, parts, [&](std::size_t p) {
+      slot[p].fill(0);
+      for (std::size_t k = p * part; k < std::min(n, (p + 1) * part); ++k)
+        ++slot[p][(records[k] >> shift) & digit_mask];
+    });
+    std::size_t sum = 0;
+    for (std::size_t d = 0; d <= digit_mask; ++d)
+      for (std::size_t p = 0; p < parts; ++p) sum += std::exchange(slot[p][d], sum);
+    tbb::parallel_for(std::size_t{0}, parts, [&](std::size_t p) {
+      for (std::size_t k = p * part; k < std::min(n, (p + 1) * part); ++k)
+        spare[slot[p][(records[k] >> shift) & digit_mask]++] = records[k];
+    });
+    records.swap(spare);
+  }
+  return records;
+}
+
+bool neighbours(const Triangle& a, const Triangle& b) {
+  for (std::uint32_t p : a)
+    if (p == b[0] || p == b[1] || p == b[2]) return true;
+  return false;
+}
+
+bool overlap(const Box& a, const Box& b) {
+  return (a.lo[0] <= b.hi[0]) & (b.lo[0] <= a.hi[0]) & (a.lo[1] <= b.hi[1]) & (b.lo[1] <= a.hi[1]) &
+         (a.lo[2] <= b.hi[2]) & (b.lo[2] <= a.hi[2]);
+}
+
+void check_input(const Mesh& m) {
+  for (std::size_t i = 0; i < m.points.size(); ++i)
+    if (!is_finite(m.points[i])) throw Error("point " + std::to_string(i + 1) + " has non-finite coordinates");
+  if (m.triangles.size() > std::numeric_limits<std::uint32_t>::max())
+    throw Error("a mesh has at most 4294967295 triangles, got " + std::to_string(m.triangles.size()));
+  for (std::size_t f = 0; f < m.triangles.size(); ++f)
+    for (std::uint32_t v : m.triangles[f])
+      if (v >= m.points.size())
+        throw Error("triangle " + std::to_string(f + 1) + " uses point " + std::to_string(std::size_t{v} + 1) +
+                    ", but there are " + std::to_string(m.points.size()) + " points");
+}
+
+// The mesh's corners moved and scaled so that its box starts at the origin and has diagonal 1: every test
+// then works at one scale (a gap of eps = 1e-9 means the same in millimetres and in light years, and no
+// square of a coordinate overflows or underflows).
+struct Corners {
+  const Mesh& m;
+  Vec3 origin;
+  double size;   // the diagonal, or 1 for a mesh of one point
+  double scale;  // 1 / size
+
+  Vec3 at(std::uint32_t p) const { return (m.points[p] - origin) * scale; }
+  std::array<Vec3, 3> operator()(std::uint32_t i) const {
+    const Triangle& t = m.triangles[i];
+    return {at(t[0]), at(t[1]), at(t[2])};
+  }
+};
+
+// The least pair (first << 32 | second) of triangles that meet, or none.
+constexpr std::uint64_t none = std::numeric_limits<std::uint64_t>::max();
+
+// The records in chunks, each starting at the first cell that starts in it; chunks in batches, a step of
+// progress each. The threads keep the least pair found so far in one atomic and skip every pair not below
+// it: the minimum whatever the order. In a cell, triangles rise, so for each triangle the pairs rise and the
+// first pair not below the least ends its row.
+std::uint64_t least_pair(const Corners& corners, const std::vector<Box>& boxes, const Grid& grid,
+                         const std::vector<std::uint64_t>& records, double eps, Progress& progress) {
+  struct Entry {
+    Box box;
+    Triangle points;
+    std::uint32_t id;
+    unsigned starts;  // bit a: the box starts in this cell on axis a
+  };
+  const std::size_t total = records.size(), chunk = 1 << 13, chunks = (total + chunk - 1) / chunk;
+  const std::uint64_t id_mask = (std::uint64_t{1} << grid.id_bits) - 1;
+  auto cell_start = [&](std::size_t k) {
+    while (k > 0 && k < total && (records[k] >> grid.id_bits) == (records[k - 1] >> grid.id_bits)) ++k;
+    return std::min(k, total);
+  };
+  std::atomic<std::uint64_t> best{none};
+  const std::size_t batch = std::max<std::size_t>(chunks / 32, 16);
+  for (std::size_t begin = 0; begin < chunks; begin += batch) {
+    tbb::parallel_for(begin, std::min(chunks, begin + batch), [&](std::size_t c) {
+      std::vector<Entry> in;
+      std::uint64_t least = best.load(std::memory_order_relaxed);
+      const std::size_t to = cell_start((c + 1) * chunk);
+      for (std::size_t k = cell_start(c * chunk); k < to;) {
+        const std::uint64_t key = records[k] >> grid.id_bits;
+        const Cell here = Grid::cell_of(key);
+        least = std::min(least, best.load(std::memory_order_relaxed));
+        in.clear();
+        for (; k < to && (records[k] >> grid.id_bits) == key; ++k) {
+          const auto j = static_cast<std::uint32_t>(records[k] & id_mask);
+          const Cell low = grid.low(boxes[j]);
+          in.push_back(
+              {boxes[j], corners.m.triangles[j], j,
+               unsigned(low[0] == here[0]) | unsigned(low[1] == here[1]) << 1 | unsigned(low[2] == here[2]) << 2});
+        }
+        for (std::size_t x = 0; x + 1 < in.size(); ++x) {
+          const Entry& p = in[x];
+          if ((std::uint64_t{p.id} << 32) >= least) break;
+          for (std::size_t y = x + 1; y < in.size(); ++y) {
+            const Entry& q = in[y];
+            // Test a pair once: in the cell at the low corner of the boxes' overlap, where on every axis one
+            // of the two starts.
+            if ((p.starts | q.starts) != 7 || !overlap(p.box, q.box)) continue;
+            const std::uint64_t pair = std::uint64_t{p.id} << 32 | q.id;
+            if (pair >= least) break;
+            if (neighbours(p.points, q.points) || !contact(Tri(corners(p.id)), Tri(corners(q.id)), eps)) continue;
+            least = pair;
+            break;
+          }
+        }
+      }
+      std::uint64_t seen = best.load();
+      while (least < seen && !best.compare_exchange_weak(seen, least)) {
+      }
+    });
+    progress.step(0.2 + 0.8 * double(std::min(chunks, begin + batch)) / double(chunks));
+  }
+  return best.load();
+}
+
+}  // namespace
+
+std::optional<TrianglePair> first_intersection(const Mesh& m, Progress& progress) {
+  progress.start("intersections");
+  check_input(m);
+  const std::size_t f = m.triangles.size();
+  if (f < 2) return std::nullopt;
+  const BBox3 bounds = m.bbox();
+  const double diagonal = norm(bounds.size());
+  if (!std::isfinite(diagonal)) throw Error("the mesh is too large: its diagonal overflows");
+  const double size = diagonal > 0 ? diagonal : 1;
+  const Corners corners{m, bounds.min, size, 1 / size};
+  const double eps = 1e-9;  // of the diagonal, which is 1 now
+
+  // Grown by eps, then by 2^-23 so that rounding to float only ever grows them.
+  constexpr double margin = 0x1p-23;
+  std::vector<Box> boxes;
+  size_large(boxes, f);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, f, 1 << 14), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t i = r.begin(); i < r.end(); ++i) {
+      const auto c = corners(static_cast<std::uint32_t>(i));
+      const Vec3 lo = min_each(min_each(c[0], c[1]), c[2]) - Vec3::all(eps + margin);
+      const Vec3 hi = max_each(max_each(c[0], c[1]), c[2]) + Vec3::all(eps + margin);
+      boxes[i] = {{float(lo.x), float(lo.y), float(lo.z)}, {float(hi.x), float(hi.y), float(hi.z)}};
+    }
+  });
+  const Vec3 reach = bounds.size() / corners.size + Vec3::all(eps + 2 * margin);
+  const Grid grid = choose_grid(boxes, float(std::max({reach.x, reach.y, reach.z})));
+  progress.fraction(0.05);
+  const std::vector<std::uint64_t> records = sorted_records(boxes, grid, progress);
+  progress.fraction(0.2);
+  const std::uint64_t pair = least_pair(corners, boxes, grid, records, eps, progress);
+  if (pair == none) return std::nullopt;
+  const auto first = static_cast<std::uint32_t>(pair >> 32), second = static_cast<std::uint32_t>(pair);
+  const Vec3 where = *contact(Tri(corners(first)), Tri(corners(second)), eps);
+  return TrianglePair{first, second, bounds.min + where * corners.size};
+}
+
+}  // namespace selfsim

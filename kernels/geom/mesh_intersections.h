@@ -1,0 +1,46 @@
+// Whether a mesh meets itself: the first pair of triangles that intersect or touch without being neighbours.
+// Exclusion surfaces (seed 004) must never touch themselves and a thickened developing surface (seed 002)
+// must not fold through itself, so their tests need a check exact enough to see two triangles share a
+// single coordinate and fast enough for millions of triangles: O(F) expected, with a uniform grid
+// over the triangles' bounding boxes, then an exact-to-rounding distance test per candidate pair.
+//
+// Tolerance: two triangles meet when the distance between them is at most 1e-9 times the diagonal of the
+// mesh's bounding box (all points, used or not). Rounding does not hide a touch, and a gap of a few billionths
+// of the mesh's size is still a gap, at any scale and any distance from the origin.
+//
+// Neighbours: triangles that share a point index (a corner, an edge, or all three) are never tested against
+// each other: that sharing is the mesh's connectivity, not a collision. Two triangles that share only a
+// coordinate, through different point indices, are tested, and touch.
+//
+// Degenerate (zero-area) triangles are kept and tested as what they are: the segment or point their corners
+// span (a triangle counts as flat when its height is below 1e-12 of its longest edge). A triangle that
+// names one point twice is such a segment.
+//
+// Cost: the grid's cells are twice the median triangle's size, doubled while a few huge triangles would make
+// more than 8 (cell, triangle) insertions a triangle, so memory is predicted and O(F): 24 bytes a triangle
+// for its box and 16 an insertion while they are sorted, about 60 bytes a triangle on a typical surface
+// (2.3 insertions each) and never more than about 150. Time is O(F) when triangles are small beside the
+// mesh; many long slivers crossing one region (a fan of thousands) make their cells' pairs quadratic.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "kernels/geom/mesh.h"
+#include "kernels/geom/progress.h"
+#include "kernels/geom/vec3.h"
+
+namespace selfsim {
+
+struct TrianglePair {
+  std::uint32_t first = 0, second = 0;  // 0-based triangle indices, first < second
+  Vec3 where;                           // a point of both (to within the tolerance): a crossing or the touch
+};
+
+// The first pair (smallest `first`, then smallest `second`) of triangles of m that intersect or touch
+// without sharing a point index; std::nullopt when there is none. The answer does not depend on the number
+// of threads. Throws Error for a non-finite point or an index out of range (naming it, counted from 1 as
+// Mesh::validate does), and Cancelled when progress says stop.
+std::optional<TrianglePair> first_intersection(const Mesh& m, Progress& progress);
+
+}  // namespace selfsim
