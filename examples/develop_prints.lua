@@ -13,7 +13,7 @@ local finest = param("finest", 0.8)   -- mm thick at the finest level
 local resolution = param("resolution", 4)
 
 local function print3d(name, grammar, levels)
-  local m = develop(grammar, { levels = levels, route = "bezier", resolution = resolution,
+  local m = develop(grammar, { levels = levels, method = "bezier", resolution = resolution,
                               thickness = top / size, thickness_rate = (finest / top) ^ (1 / levels),
                               size = size, size_level = 0 })
   print(string.format("%s, levels 0..%d: %d faces", name, levels, m:faces()))

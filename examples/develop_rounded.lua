@@ -1,7 +1,7 @@
 -- Seed 002 §1, Figures 2 and 4: six steps of the terdragon and of the dragon with their corners rounded by
 -- circular arcs whose radius follows the segment length (c:rounded), so successive steps stay locally alike:
 -- where segments are equally long the arcs meet at the segment midpoints and the path is a union of arcs.
--- These are the slices route 2 of develop (route = "bezier") smooths its levels into.
+-- These are the slices route 2 of develop (method = "bezier") smooths its levels into.
 --   selfsim run examples/develop_rounded.lua --set samples=16
 local curves = require "selfsim.curves"
 local sheet = require "selfsim.sheet"

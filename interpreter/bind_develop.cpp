@@ -1,5 +1,5 @@
-// develop(source, { levels, route, height, smooth, stencil, resolution, thickness, ... }) -> Mesh: seed 002's
-// developing surface, by route 1 (the control mesh smoothed by Loop subdivision) or route 2 (Bezier arcs
+// develop(source, { levels, method, height, smooth, stencil, resolution, thickness, ... }) -> Mesh: seed 002's
+// developing surface, by route 1, method "loop" (the control mesh smoothed by Loop subdivision) or route 2 (Bezier arcs
 // joined by Hermite curves), optionally thickened. A thin adapter over kernels/develop.
 #include "interpreter/bindings.h"
 #include "interpreter/curve_value.h"
@@ -65,8 +65,8 @@ int develop(lua_State* L) {
       throw Error("option 'levels' is for a grammar: a list of curves is the stack itself, level 0 first");
     }
     develop::DevelopOptions opt;
-    opt.route = static_cast<develop::Route>(o.enumeration("route", {"loop", "bezier"}, 0));
-    opt.resolution = static_cast<int>(o.integer("resolution", opt.resolution, 1, 64));
+    opt.route = static_cast<develop::Route>(o.enumeration("method", {"loop", "bezier"}, 0));
+    if (o.has("resolution")) opt.resolution = static_cast<int>(o.integer("resolution", 4, 1, 64));
     opt.height = o.number("height", opt.height);
     opt.smooth = static_cast<int>(o.integer("smooth", 0, 0, 12));
     opt.bounded = o.enumeration("stencil", {"loop", "bounded"}, 0) == 1;

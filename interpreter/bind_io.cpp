@@ -1,5 +1,6 @@
 // save(value, "file.ext", opts?) and param(name, default): the recipe's only ways out and in.
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -85,16 +86,22 @@ void warn_if_far(lua_State* L, const Polyline& c) {
 // STL keeps no shared points: readers (slicers, selfsim's own) merge coinciding corners, so a mesh with two
 // points at one place (an unsmoothed developing dragon, whose curves revisit their points) reads back as a
 // non-manifold surface. Say so rather than let a slicer find out.
+// STL stores single precision: points a float apart or less coincide there too (a solid thickened by 1e-9,
+// a fine mesh far from the origin).
 void warn_if_coinciding(lua_State* L, const Mesh& m) {
-  std::vector<Vec3> sorted = m.points;
-  std::sort(sorted.begin(), sorted.end(),
-            [](Vec3 a, Vec3 b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); });
+  std::vector<std::array<float, 3>> sorted(m.points.size());
+  for (std::size_t i = 0; i < sorted.size(); ++i)
+    sorted[i] = {static_cast<float>(m.points[i].x), static_cast<float>(m.points[i].y),
+                 static_cast<float>(m.points[i].z)};
+  std::sort(sorted.begin(), sorted.end());
   const auto same = std::adjacent_find(sorted.begin(), sorted.end());
   if (same == sorted.end()) return;
-  const std::string message = recipe_where(L) + "save: the mesh has points that coincide (at " + number_text(same->x) +
-                              ", " + number_text(same->y) + ", " + number_text(same->z) +
+  const std::string message = recipe_where(L) + "save: the mesh has points that coincide in single precision (at " +
+                              number_text((*same)[0]) + ", " + number_text((*same)[1]) + ", " +
+                              number_text((*same)[2]) +
                               "): STL readers merge them and see a non-manifold surface; save as .obj or .ply, or "
-                              "separate them (develop's smooth or corner_shift)";
+                              "separate them (develop's smooth or corner_shift, a larger thickness, a mesh nearer "
+                              "the origin)";
   lua_warning(L, message.c_str(), 0);
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <string>
 
+#include "interpreter/options_reader.h"
+
 namespace selfsim::interp {
 
 namespace {
@@ -84,27 +86,41 @@ const Fields& cell_fields(const Polyline& c) { return c.cell_fields; }
 const Fields& cell_fields(const Polyline3& c) { return c.cell_fields; }
 const Fields& cell_fields(const Mesh& m) { return m.face_fields; }
 
-// v:range(name) -> min, max of a point or cell field's first component (a develop mesh's tile_class runs
-// from 0 to classes - 1), for checks and summaries in recipes.
+// v:range(name[, "points" | "cells"]) -> min, max of a field's first component (a develop mesh's tile_class
+// runs from 0 to classes - 1), for checks and summaries in recipes. Without the second argument a point field
+// is looked for first, then a cell field (a develop mesh has `level` on both).
 template <class T>
 int value_range(lua_State* L) {
   const Held<T> v = geometry_self<T>(L, "range");
-  const char* name = luaL_checkstring(L, 2);
-  const Field* f = v->point_fields.find(name);
-  if (f == nullptr) f = cell_fields(*v).find(name);
-  if (f == nullptr) return luaL_error(L, "range: the value has no field '%s'", name);
-  if (f->stored() == 0) return luaL_error(L, "range: field '%s' is empty", name);
-  double lo = f->at(0), hi = lo;
-  for (std::size_t i = 1; i < f->stored(); ++i) {
-    lo = std::min(lo, f->at(i));
-    hi = std::max(hi, f->at(i));
-  }
-  for (double x : {lo, hi})
-    if (f->scalar() == Scalar::Int32)
-      lua_pushinteger(L, static_cast<lua_Integer>(x));
-    else
-      lua_pushnumber(L, x);
-  return 2;
+  return call_kernel(L, "range", [&] {
+    if (lua_type(L, 2) != LUA_TSTRING || lua_gettop(L) > 3)
+      throw Error("takes a field name and optionally \"points\" or \"cells\", v:range(\"level\"), got " +
+                  describe(L, 2));
+    std::size_t length = 0;
+    const char* text = lua_tolstring(L, 2, &length);
+    const std::string name(text, length);
+    if (name.find('\0') != std::string::npos) throw Error("a field name cannot hold a NUL byte");
+    const std::string where = lua_isnoneornil(L, 3) ? "" : text_value(L, 3, "argument 2 of range");
+    if (!where.empty() && where != "points" && where != "cells")
+      throw Error("argument 2 must be \"points\" or \"cells\", got '" + shown_text(where) + "'");
+    const Field* f = where == "cells" ? nullptr : v->point_fields.find(name);
+    if (f == nullptr && where != "points") f = cell_fields(*v).find(name);
+    if (f == nullptr)
+      throw Error("the value has no " + (where.empty() ? std::string() : where.substr(0, where.size() - 1) + " ") +
+                  "field '" + shown_text(name) + "'");
+    if (f->stored() == 0) throw Error("field '" + shown_text(name) + "' is empty");
+    double lo = f->at(0), hi = lo;
+    for (std::size_t i = 1; i < f->stored(); ++i) {
+      lo = std::min(lo, f->at(i));
+      hi = std::max(hi, f->at(i));
+    }
+    for (double x : {lo, hi})
+      if (f->scalar() == Scalar::Int32)
+        lua_pushinteger(L, static_cast<lua_Integer>(x));
+      else
+        lua_pushnumber(L, x);
+    return 2;
+  });
 }
 
 // {points = {names}, cells = {names}}: the fields the value carries (files add arclength and path to curves).

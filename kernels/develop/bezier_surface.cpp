@@ -78,40 +78,6 @@ class Smoothed {
   std::vector<double> k_;  // handle fraction at each corner
 };
 
-// Whether a single level is a closed loop, by level_stack.h's rule.
-bool closed_level(const Polyline& c) {
-  const Polyline* one = &c;
-  return closed_levels(std::span<const Polyline* const>(&one, 1));
-}
-
-// Throws Error naming the first level that cannot be smoothed; returns whether the levels are closed.
-bool check_levels(std::span<const Polyline* const> levels) {
-  if (levels.size() < 2) throw Error("a developing surface needs at least two levels (levels = 1 or more)");
-  bool closed = false;
-  for (std::size_t l = 0; l < levels.size(); ++l) {
-    const Polyline& c = *levels[l];
-    const std::string name = "level " + std::to_string(l);
-    if (c.paths() != 1) throw Error(name + " must be one path, got " + std::to_string(c.paths()));
-    if (c.segments() < 1) throw Error(name + " has no segment (it needs at least one)");
-    if (!c.finite()) throw Error(name + " has non-finite points");
-    const auto p = c.path(0);
-    const double size = norm(c.bbox().size());
-    for (std::size_t j = 0; j + 1 < p.size(); ++j)
-      if (norm(p[j + 1] - p[j]) <= 1e-12 * size)  // no direction to smooth along (size 0: every point equal)
-        throw Error(name + " has a zero-length segment (its points " + std::to_string(j + 1) + " and " +
-                    std::to_string(j + 2) + " coincide)");
-    const bool here = closed_level(c);
-    if (l == 0) closed = here;
-    if (here != closed)
-      throw Error("levels must be all open or all closed: level 0 is " + std::string(closed ? "closed" : "open") +
-                  ", " + name + " is " + (here ? "closed" : "open"));
-    // Two segments make a loop there and back: its rows would join the same two points twice.
-    if (closed && c.segments() < 3)
-      throw Error("a closed level needs at least 3 segments, " + name + " has " + std::to_string(c.segments()));
-  }
-  return closed;
-}
-
 // The mesh's shape, from segment counts and lengths: everything bezier_size needs, in doubles so that an
 // absurd request overflows to a number the budget refuses rather than wrapping.
 struct Plan {
@@ -125,7 +91,7 @@ struct Plan {
 Plan make_plan(std::span<const Polyline* const> levels, const BezierOptions& opt) {
   opt.validate();
   Plan p;
-  p.closed = check_levels(levels);
+  p.closed = check_stack(levels);
   p.z = level_heights(levels, opt.height);
   const double extra = p.closed ? 0 : 1;  // an open row's last sample
   for (const Polyline* c : levels) p.intervals.push_back(opt.resolution * (static_cast<double>(c->segments()) + extra));
@@ -171,7 +137,7 @@ BezierCounts bezier_counts(std::span<const Polyline* const> levels, const Bezier
 Vec2 smoothed_level_point(const Polyline& level, double t) {
   if (level.paths() != 1 || level.segments() < 1) throw Error("the level must be one path with a segment");
   check_between(t, 0, 1, "t");
-  const Smoothed c(level.path(0), closed_level(level));
+  const Smoothed c(level.path(0), closed_path(level.path(0)));
   return c.at(t * static_cast<double>(c.segments()));
 }
 

@@ -20,9 +20,9 @@ void set_thickness(Mesh& m, std::span<const Polyline* const> levels, const Devel
   std::vector<double> per_level;
   const double first = levels.front()->length() / static_cast<double>(levels.front()->segments());
   for (std::size_t l = 0; l < levels.size(); ++l)
-    per_level.push_back(opt.thickness_rate > 0
-                            ? opt.thickness * std::pow(opt.thickness_rate, static_cast<double>(l))
-                            : opt.thickness * levels[l]->length() / static_cast<double>(levels[l]->segments()) / first);
+    per_level.push_back(opt.thickness_rate > 0 ? opt.thickness * std::pow(opt.thickness_rate, static_cast<double>(l))
+                                               : opt.thickness * (levels[l]->length() /
+                                                                  static_cast<double>(levels[l]->segments()) / first));
   const Field* level = m.point_fields.find("level");
   std::vector<double> t(m.points.size());
   for (std::size_t i = 0; i < t.size(); ++i) {
@@ -74,18 +74,22 @@ Mesh scaled(Mesh m, std::span<const Polyline* const> levels, const DevelopOption
 
 void DevelopOptions::validate() const {
   check_range(smooth, 0, 12, "option 'smooth'");
-  check_range(resolution, 1, 64, "option 'resolution'");
+  if (resolution != 0) check_range(resolution, 1, 64, "option 'resolution'");
   check_between(thickness, 0, 1e6, "option 'thickness'");
   if (thickness_rate != 0) check_between(thickness_rate, 1e-6, 1, "option 'thickness_rate'");
-  check_between(size, 0, 1e9, "option 'size'");
+  if (size != 0) check_between(size, 1e-9, 1e9, "option 'size'");
+  // Options that would otherwise be ignored without a word.
+  if (thickness_rate != 0 && thickness == 0) throw Error("option 'thickness_rate' needs a 'thickness' to shrink");
+  if (size_level >= 0 && size == 0) throw Error("option 'size_level' needs a 'size' to scale that level to");
+  if (bounded && smooth == 0) throw Error("option 'stencil' needs 'smooth' rounds of Loop subdivision to act in");
   if (route == Route::bezier) {
     // Route 2 smooths by its Bezier arcs: Loop's options have no meaning there.
     const char* loop_only = smooth > 0 ? "smooth" : corner_shift > 0 ? "corner_shift" : bounded ? "stencil" : nullptr;
     if (loop_only != nullptr)
       throw Error(std::string("option '") + loop_only +
-                  "' is for route \"loop\" (Loop subdivision); route \"bezier\" is smooth by its Bezier arcs");
-  } else if (resolution != 4) {
-    throw Error("option 'resolution' is for route \"bezier\"; route \"loop\" refines with 'smooth'");
+                  "' is for method \"loop\" (Loop subdivision); method \"bezier\" is smooth by its Bezier arcs");
+  } else if (resolution != 0) {
+    throw Error("option 'resolution' is for method \"bezier\"; method \"loop\" refines with 'smooth'");
   }
 }
 
@@ -111,10 +115,10 @@ namespace {
 
 // Route 2's surface, predicted (thickened: two sheets and a rim) before it is built.
 Mesh bezier_route(std::span<const Polyline* const> levels, const DevelopOptions& opt, Progress& progress) {
-  const BezierOptions bezier{opt.height, opt.resolution, opt.budget};
+  const BezierOptions bezier{opt.height, opt.resolution == 0 ? 4 : opt.resolution, opt.budget};
   const BezierCounts n = bezier_counts(levels, bezier);
   check_budget(opt.thickness > 0 ? 2 * (n.points + n.triangles + n.boundary_edges) : n.points + n.triangles, opt.budget,
-               "route \"bezier\" at resolution = " + std::to_string(opt.resolution));
+               "method \"bezier\" at resolution = " + std::to_string(bezier.resolution));
   return bezier_surface(levels, bezier, progress);
 }
 
@@ -165,11 +169,39 @@ std::string pair_text(const Mesh& m, const TrianglePair& p) {
          number_text(p.where.y) + ", " + number_text(p.where.z) + ")";
 }
 
+// A stack far from the origin for its size, moved to it: subdivision, tile classes and the checks then work
+// with coordinates as small as the curve (at 1e5 from the origin, rounding alone would split a level-12
+// dragon's tiles into thousands of classes), and develop_surface moves the result back. Near the origin the
+// levels are used as they are.
+struct NearOrigin {
+  std::vector<Polyline> moved;
+  std::vector<const Polyline*> levels;
+  Vec2 offset{};
+};
+
+NearOrigin near_origin(std::span<const Polyline* const> levels) {
+  BBox2 box;
+  for (const Polyline* c : levels) box.add(c->bbox());
+  NearOrigin n;
+  const Vec2 centre = (box.min + box.max) * 0.5;
+  if (norm(centre) > 4 * norm(box.size())) {
+    n.offset = centre;
+    for (const Polyline* c : levels) n.moved.push_back(transformed(*c, Similarity2{{1, 0}, Vec2{0, 0} - centre}));
+    for (const Polyline& c : n.moved) n.levels.push_back(&c);
+  } else {
+    n.levels.assign(levels.begin(), levels.end());
+  }
+  return n;
+}
+
 }  // namespace
 
-Mesh develop_surface(std::span<const Polyline* const> levels, const DevelopOptions& opt, Progress& progress,
+Mesh develop_surface(std::span<const Polyline* const> given, const DevelopOptions& opt, Progress& progress,
                      std::vector<std::string>* warnings) {
   opt.validate();
+  check_stack(given);
+  const NearOrigin near = near_origin(given);
+  const std::span<const Polyline* const> levels = near.levels;
   if (opt.size_level >= static_cast<int>(levels.size()))
     throw Error("option 'size_level' must be a level of the stack, 0 to " + std::to_string(levels.size() - 1) +
                 ", got " + std::to_string(opt.size_level));
@@ -195,6 +227,7 @@ Mesh develop_surface(std::span<const Polyline* const> levels, const DevelopOptio
                             "): its thickness there is more than the gap between the surface's parts; lower "
                             "thickness or thickness_rate");
   }
+  for (Vec3& p : m.points) p = p + Vec3{near.offset.x, near.offset.y, 0};
   return scaled(std::move(m), levels, opt);
 }
 

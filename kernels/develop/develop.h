@@ -26,7 +26,7 @@ enum class Route { loop, bezier };
 
 struct DevelopOptions {
   Route route = Route::loop;
-  int resolution = 4;         // route 2: samples per Bezier piece, in [1, 64]
+  int resolution = 0;         // route 2: samples per Bezier piece, in [1, 64]; 0 for its default, 4
   double height = 1;          // gap between levels l and l+1, in segment lengths of level l
   double corner_shift = 0;    // inward shift of each level's inner points, in [0, 0.5] (control_mesh.h)
   int smooth = 0;             // rounds of Loop subdivision, in [0, 12]

@@ -46,7 +46,7 @@ int refinement_branching(std::span<const Polyline* const> levels) {
     // What the control mesh needs; curves made otherwise (Hilbert) need seed 002's direct parameterisation.
     const std::string need =
         ": the control mesh needs each segment replaced by the same number of consecutive "
-        "segments with the same ends; develop it with route = \"bezier\" (seed 002 §3.1's direct "
+        "segments with the same ends; develop it with method = \"bezier\" (seed 002 §3.1's direct "
         "parameterisation, which any stack of curves can take)";
     if (f % s != 0 || f / s < 1)
       throw Error(where + " (" + std::to_string(f) + " segments for " + std::to_string(s) + ")" + need);
@@ -65,11 +65,45 @@ int refinement_branching(std::span<const Polyline* const> levels) {
   return branching;
 }
 
+bool closed_path(std::span<const Vec2> p) {
+  if (p.size() < 3) return false;
+  BBox2 box;
+  for (Vec2 q : p) box.add(q);
+  return norm(p.back() - p.front()) <= 1e-9 * std::max(1e-300, norm(box.size()));
+}
+
 bool closed_levels(std::span<const Polyline* const> levels) {
-  return std::all_of(levels.begin(), levels.end(), [](const Polyline* c) {
-    const auto p = c->path(0);
-    return p.size() > 2 && norm(p.back() - p.front()) <= 1e-9 * std::max(1e-300, norm(c->bbox().size()));
-  });
+  return std::all_of(levels.begin(), levels.end(), [](const Polyline* c) { return closed_path(c->path(0)); });
+}
+
+bool check_stack(std::span<const Polyline* const> levels) {
+  if (levels.size() < 2)
+    throw Error("a developing surface needs at least two levels, level 0 and a finer one; got " +
+                std::to_string(levels.size()));
+  bool closed = false;
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    const Polyline& c = *levels[l];
+    const std::string name = "level " + std::to_string(l);
+    if (c.paths() == 0) throw Error(name + " is empty: it has no path to develop");
+    if (c.paths() != 1) throw Error(name + " must be one path, got " + std::to_string(c.paths()));
+    if (c.segments() < 1) throw Error(name + " has no segment (it needs at least one)");
+    if (!c.finite()) throw Error(name + " has non-finite points");
+    const auto p = c.path(0);
+    const double size = norm(c.bbox().size());
+    for (std::size_t j = 0; j + 1 < p.size(); ++j)
+      if (norm(p[j + 1] - p[j]) <= 1e-12 * size)  // no direction to smooth along (size 0: every point equal)
+        throw Error(name + " has a zero-length segment (its points " + std::to_string(j + 1) + " and " +
+                    std::to_string(j + 2) + " coincide)");
+    const bool here = closed_path(p);
+    if (l == 0) closed = here;
+    if (here != closed)
+      throw Error("levels must be all open or all closed: level 0 is " + std::string(closed ? "closed" : "open") +
+                  ", " + name + " is " + (here ? "closed" : "open"));
+    // Two segments make a loop there and back: its surface would join the same two points twice.
+    if (closed && c.segments() < 3)
+      throw Error("a closed level needs at least 3 segments, " + name + " has " + std::to_string(c.segments()));
+  }
+  return closed;
 }
 
 }  // namespace selfsim::develop

@@ -5,14 +5,13 @@
 #include <numbers>
 #include <string>
 
+#include "kernels/develop/level_stack.h"
 #include "kernels/geom/check.h"
 #include "kernels/geom/error.h"
 
 namespace selfsim::develop {
 
 namespace {
-
-bool is_loop(std::span<const Vec2> p) { return p.size() >= 4 && p.front() == p.back(); }
 
 // Arc segments for a turn of phi radians: `samples` a quarter turn, at least one.
 int arc_segments(double phi, int samples) {
@@ -59,6 +58,8 @@ Polyline rounded_corners(const Polyline& c, const RoundOptions& opt, Progress& p
   opt.validate();
   check_budget(rounded_size(c, opt), opt.budget, "rounded");
   Polyline out;
+  // A corner makes up to 2·samples + 1 points: look for a stop about every 65,536 points made.
+  const std::size_t every = std::max<std::size_t>(1, 65536 / (2 * static_cast<std::size_t>(opt.samples) + 1));
   for (std::size_t i = 0; i < c.paths(); ++i) {
     if ((i & 0xff) == 0) progress.step(static_cast<double>(i) / static_cast<double>(c.paths()));
     const auto p = c.path(i);
@@ -68,11 +69,11 @@ Polyline rounded_corners(const Polyline& c, const RoundOptions& opt, Progress& p
                     std::to_string(k + 1) + ": a corner there has no direction to round");
     if (p.size() < 3) {
       for (Vec2 q : p) out.points.push_back(q);
-    } else if (is_loop(p)) {
+    } else if (p.size() >= 4 && closed_path(p)) {
       const std::size_t n = p.size() - 1;  // corners 0..n-1, the last point repeats the first
       const std::size_t begin = out.points.size();
       for (std::size_t k = 0; k < n; ++k) {
-        if ((k & 0xffff) == 0xffff && progress.cancelled()) throw Cancelled();
+        if (k % every == every - 1 && progress.cancelled()) throw Cancelled();
         round_corner(p[(k + n - 1) % n], p[k], p[k + 1], opt.samples, begin, out.points);
       }
       // Closed again: the last arc ends where the first began (to rounding, then exactly), or a straight
@@ -85,7 +86,7 @@ Polyline rounded_corners(const Polyline& c, const RoundOptions& opt, Progress& p
       const std::size_t begin = out.points.size();
       out.points.push_back(p.front());
       for (std::size_t k = 1; k + 1 < p.size(); ++k) {
-        if ((k & 0xffff) == 0 && progress.cancelled()) throw Cancelled();
+        if (k % every == 0 && progress.cancelled()) throw Cancelled();
         round_corner(p[k - 1], p[k], p[k + 1], opt.samples, begin, out.points);
       }
       out.points.push_back(p.back());

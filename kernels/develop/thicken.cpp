@@ -53,14 +53,20 @@ Mesh thicken(const Mesh& m, Progress& progress) {
   const std::size_t n = m.points.size();
   progress.start("thickening");
 
+  // Cancellation is looked for every 65,536 points or faces.
+  auto stop = [&](std::size_t i) {
+    if ((i & 0xffff) == 0xffff && progress.cancelled()) throw Cancelled();
+  };
   std::vector<Vec3> normal(n, Vec3{});
-  for (const Triangle& t : m.triangles) {
-    const Vec3 a = area_normal(m, t);
-    for (std::uint32_t v : t) normal[v] += a;
+  for (std::size_t f = 0; f < m.faces(); ++f) {
+    stop(f);
+    const Vec3 a = area_normal(m, m.triangles[f]);
+    for (std::uint32_t v : m.triangles[f]) normal[v] += a;
   }
   Mesh out;
   out.points.resize(2 * n);
   for (std::size_t i = 0; i < n; ++i) {
+    stop(i);
     const double t = thickness->at(i);
     if (!(t > 0 && std::isfinite(t)))
       throw Error("the thickness at point " + std::to_string(i + 1) + " is not a positive number");
@@ -84,6 +90,7 @@ Mesh thicken(const Mesh& m, Progress& progress) {
     face_source.push_back(f);
   }
   for (std::uint32_t f = 0; f < m.faces(); ++f) {
+    stop(f);
     const Triangle& t = m.triangles[f];
     out.triangles.push_back({t[0] + shift, t[2] + shift, t[1] + shift});  // the bottom sheet faces the other way
     face_source.push_back(f);

@@ -5,8 +5,11 @@
 // terdragon, 125 for the Koch snowflake and 1487 for the Gosper curve once the count stops growing.
 //
 // Two tiles are in one class when a similarity (rotation, reflection, uniform scale and translation) maps
-// one onto the other point for point, to a billionth of the tile's size. (With reflections, all unsmoothed
-// tiles are one class, as §4.2 says; the smoothed counts are the paper's with or without them.) The
+// one onto the other point for point, to a billionth of the tile's size. (With reflections the unsmoothed
+// tiles of the dragon, terdragon and snowflake are one class, as §4.2 says; the smoothed counts are the
+// paper's with or without them. A Gosper tile and its mirror image run in opposite directions, and the fans
+// of 3 and 4 triangles that triangulate a tile of 7 fine segments do not map onto each other: its unsmoothed
+// tiles are two classes.) The
 // points compared are, for every tile alike, its smoothed control points and the points subdivision made
 // near them; each tile is put in its own frame (origin at its coarse segment's first end a, x towards the
 // other end e, the tile's middle fine point f_s in the xy plane, scaled so |e − a| = 1), so similar tiles

@@ -62,3 +62,25 @@ assert(lo == 0 and hi == 130, hi)
 assert(select(2, d:range("tile_class")) == 0)
 -- The classic stencil gives other shapes near points of valence 7, hence other classes.
 assert(select(2, develop(curves.dragon(), { levels = 9, smooth = 2, corner_shift = 0.1 }):range("tile_class")) ~= 130)
+
+-- range: a point field first, or the one asked for; errors name the recipe line.
+assert(select(2, classes:range("level")) == 9.0)
+assert(select(2, classes:range("level", "cells")) == 8)
+local ok2, err2 = pcall(classes.range, classes, "nope")
+assert(not ok2 and err2:find("develop_test.lua:%d+: range: the value has no field 'nope'"), err2)
+assert(not pcall(classes.range, classes, "level", "faces"))
+assert(not pcall(classes.range, classes))
+
+-- Far from the origin the classes are the same: the stack is developed near it and moved back.
+local far = {}
+for l = 0, 9 do far[#far + 1] = curves.dragon():curve { level = l }:transform { translate = { 1e5, 1e5 } } end
+local moved = develop(far, { smooth = 2, corner_shift = 0.1, stencil = "bounded" })
+assert(select(2, moved:range("tile_class")) == 130)
+assert(math.abs(moved:bbox().min[1] - classes:bbox().min[1] - 1e5) < 1e-6)
+
+-- A snowflake, whose turtle ends a rounding error from its start, is rounded all round.
+local flake = curves.koch_snowflake():curve { level = 2 }
+local round = flake:rounded { samples = 4 }
+local first, last = round:point(1), round:point(round:points())
+assert(first[1] == last[1] and first[2] == last[2])
+assert(math.abs(first[2]) > 1e-3) -- the start is on an arc, not at the old corner (0, 0)

@@ -1,3 +1,3 @@
 -- develop: an unknown route.
 local curves = require "selfsim.curves"
-develop(curves.dragon(), { levels = 3, route = "nurbs" })
+develop(curves.dragon(), { levels = 3, method = "nurbs" })
