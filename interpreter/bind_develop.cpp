@@ -31,7 +31,7 @@ std::vector<Held<Polyline>> grammar_levels(lua_State* L, const lsystem::Grammar&
   // Open or closed is not known before drawing: the larger (open) count. Route 2's size depends on the
   // levels' segment lengths too: develop_surface predicts it once they are drawn, before building it.
   check_run_budget(
-      L, points + (opt.route == develop::Route::loop ? develop::developed_size(segments, false, opt) : 0),
+      L, points + (opt.method == develop::Method::loop ? develop::developed_size(segments, false, opt) : 0),
       "levels = " + std::to_string(top) + (opt.smooth > 0 ? ", smooth = " + std::to_string(opt.smooth) : ""));
   std::vector<Held<Polyline>> levels;
   double held = 0;
@@ -65,7 +65,7 @@ int develop(lua_State* L) {
       throw Error("option 'levels' is for a grammar: a list of curves is the stack itself, level 0 first");
     }
     develop::DevelopOptions opt;
-    opt.route = static_cast<develop::Route>(o.enumeration("method", {"loop", "bezier"}, 0));
+    opt.method = static_cast<develop::Method>(o.enumeration("method", {"loop", "bezier"}, 0));
     if (o.has("resolution")) opt.resolution = static_cast<int>(o.integer("resolution", 4, 1, 64));
     opt.height = o.number("height", opt.height);
     opt.smooth = static_cast<int>(o.integer("smooth", 0, 0, 12));

@@ -82,7 +82,7 @@ void DevelopOptions::validate() const {
   if (thickness_rate != 0 && thickness == 0) throw Error("option 'thickness_rate' needs a 'thickness' to shrink");
   if (size_level >= 0 && size == 0) throw Error("option 'size_level' needs a 'size' to scale that level to");
   if (bounded && smooth == 0) throw Error("option 'stencil' needs 'smooth' rounds of Loop subdivision to act in");
-  if (route == Route::bezier) {
+  if (method == Method::bezier) {
     // Route 2 smooths by its Bezier arcs: Loop's options have no meaning there.
     const char* loop_only = smooth > 0 ? "smooth" : corner_shift > 0 ? "corner_shift" : bounded ? "stencil" : nullptr;
     if (loop_only != nullptr)
@@ -207,17 +207,17 @@ Mesh develop_surface(std::span<const Polyline* const> given, const DevelopOption
                 ", got " + std::to_string(opt.size_level));
   const double built = opt.thickness > 0 ? 0.7 : 0.9;
   ProgressStage surface(progress, 0, built);
-  Mesh m = opt.route == Route::bezier ? bezier_route(levels, opt, surface) : loop_route(levels, opt, surface);
+  Mesh m = opt.method == Method::bezier ? bezier_route(levels, opt, surface) : loop_route(levels, opt, surface);
   if (opt.check) {
     ProgressStage check(progress, built, opt.thickness > 0 ? 0.8 : 1);
     if (const auto p = first_intersection(m, check))
       throw Error("the surface meets itself: " + pair_text(m, *p) +
-                  (opt.route == Route::loop && opt.smooth == 0
+                  (opt.method == Method::loop && opt.smooth == 0
                        ? "; shift its corners (corner_shift = 0.1) or smooth it, or keep it with check = false"
                        : "; shift its corners (corner_shift), lower the height, or keep it with check = false"));
   }
   if (opt.thickness > 0) {
-    if (opt.route == Route::bezier) set_thickness(m, levels, opt);
+    if (opt.method == Method::bezier) set_thickness(m, levels, opt);
     ProgressStage solid(progress, 0.8, 0.9);
     m = thicken(m, solid);
     ProgressStage check(progress, 0.9, 1);

@@ -22,21 +22,21 @@ namespace selfsim::develop {
 // Route 1 (§3.2): the control mesh smoothed by Loop subdivision, for stacks that refine segment by segment
 // (dragon, terdragon, arrowhead, Koch, Gosper); route 2 (§3.1): each level smoothed by Bezier arcs and the
 // levels joined by Hermite curves (bezier_surface.h), for any stack (Hilbert too).
-enum class Route { loop, bezier };
+enum class Method { loop, bezier };
 
 struct DevelopOptions {
-  Route route = Route::loop;
-  int resolution = 0;         // route 2: samples per Bezier piece, in [1, 64]; 0 for its default, 4
-  double height = 1;          // gap between levels l and l+1, in segment lengths of level l
-  double corner_shift = 0;    // inward shift of each level's inner points, in [0, 0.5] (control_mesh.h)
-  int smooth = 0;             // rounds of Loop subdivision, in [0, 12]
-  bool bounded = false;       // Loop's bounded-curvature rules (loop_subdivision.h) instead of the classic ones
-  double thickness = 0;       // thickness at level 0, in the curve's units; 0 for the open surface itself
-  double thickness_rate = 0;  // factor per level, in (0, 1]; 0 for the curve's own segment ratio
-  double size = 0;            // scale the result so its largest side is this (thickness too); 0: as built
-  int size_level = -1;        // with size: the level whose curve's larger side becomes `size`; −1: the whole
-  bool check = true;          // refuse a surface that meets itself; warn when the thickened solid does
-  PointBudget budget;         // refuse (before subdividing) a result predicted not to fit
+  Method method = Method::loop;  // the DSL's `method`: route 1 or route 2
+  int resolution = 0;            // route 2: samples per Bezier piece, in [1, 64]; 0 for its default, 4
+  double height = 1;             // gap between levels l and l+1, in segment lengths of level l
+  double corner_shift = 0;       // inward shift of each level's inner points, in [0, 0.5] (control_mesh.h)
+  int smooth = 0;                // rounds of Loop subdivision, in [0, 12]
+  bool bounded = false;          // Loop's bounded-curvature rules (loop_subdivision.h) instead of the classic ones
+  double thickness = 0;          // thickness at level 0, in the curve's units; 0 for the open surface itself
+  double thickness_rate = 0;     // factor per level, in (0, 1]; 0 for the curve's own segment ratio
+  double size = 0;               // scale the result so its largest side is this (thickness too); 0: as built
+  int size_level = -1;           // with size: the level whose curve's larger side becomes `size`; −1: the whole
+  bool check = true;             // refuse a surface that meets itself; warn when the thickened solid does
+  PointBudget budget;            // refuse (before subdividing) a result predicted not to fit
 
   void validate() const;
 };

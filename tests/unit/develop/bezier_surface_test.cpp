@@ -11,6 +11,7 @@
 
 #include "../lsystem/table1.h"
 #include "kernels/develop/control_mesh.h"
+#include "kernels/develop/develop.h"
 #include "kernels/develop/level_stack.h"
 #include "kernels/geom/error.h"
 #include "kernels/geom/mesh_check.h"
@@ -258,4 +259,31 @@ TEST(BezierSurface, StopsWhenCancelled) {
   Counting progress;
   progress.cancel_after = 3;
   EXPECT_THROW(bezier_surface(pointers(levels), {}, progress), Cancelled);
+}
+
+TEST(BezierSurface, ThickenedThroughDevelopIsAClosedSolid) {
+  // Route 2 by develop_surface: the predicted size is exact, the solid closed and consistently oriented (a
+  // sphere for open levels, a torus for the snowflake's closed ones), the thickness shrinking down the stack.
+  struct Case {
+    lsystem::Grammar g;
+    int first, last;
+    long long euler;
+  };
+  for (const Case& c : {Case{table1::hilbert(), 0, 3, 2}, Case{table1::koch_snowflake(), 0, 3, 0}}) {
+    const auto levels = levels_of(c.g, c.first, c.last);
+    DevelopOptions opt;
+    opt.method = Method::bezier;
+    opt.thickness = 0.02;
+    opt.thickness_rate = 0.7;
+    const Mesh m = develop_surface(pointers(levels), opt, no_progress());
+    const BezierCounts n = bezier_counts(pointers(levels), {.height = 1, .resolution = 4});
+    EXPECT_EQ(static_cast<double>(m.points.size() + m.faces()), 2 * (n.points + n.triangles + n.boundary_edges));
+    const MeshTopology t = mesh_topology(m);
+    EXPECT_TRUE(t.closed()) << t.first_problem;
+    EXPECT_EQ(t.euler(), c.euler);
+    const Field* thickness = m.point_fields.find("thickness");
+    ASSERT_NE(thickness, nullptr);
+    EXPECT_NEAR(thickness->at(0), 0.02, 1e-15);  // level 0's row starts the mesh
+    EXPECT_NEAR(thickness->at(m.points.size() / 2 - 1), 0.02 * std::pow(0.7, c.last), 1e-12);  // the finest's
+  }
 }
