@@ -46,7 +46,7 @@ TEST(RoundedCorners, LoopsAreRoundedAllRoundAndStayClosed) {
   const Polyline square = Polyline::single({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}});
   const Polyline r = rounded_corners(square, {.samples = 4}, no_progress());
   EXPECT_EQ(r.points.front(), r.points.back());
-  EXPECT_EQ(r.points.size(), 4u * 4u + 1u);                   // arcs meet at the midpoints: one point there
+  EXPECT_EQ(r.points.size(), 4u * 4u + 1u);  // arcs meet at the midpoints: one point there
   // Four quarter circles of radius 1/2, each drawn as 4 chords.
   EXPECT_NEAR(r.length(), 16 * 2 * 0.5 * std::sin(std::numbers::pi / 16), 1e-14);
 }
