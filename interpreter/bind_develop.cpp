@@ -72,6 +72,8 @@ int develop(lua_State* L) {
     opt.bounded = o.enumeration("stencil", {"loop", "bounded"}, 0) == 1;
     opt.thickness = o.number("thickness", 0);
     opt.thickness_rate = o.number("thickness_rate", 0);
+    if (o.has("thickness_rate") && opt.thickness_rate == 0)
+      throw Error("option 'thickness_rate' must be in [1e-06, 1], got 0 (leave it out for the curve's own rate)");
     opt.corner_shift = o.number("corner_shift", 0);
     opt.size = o.number("size", 0);
     opt.size_level = static_cast<int>(o.integer("size_level", -1, -1, lsystem::max_level));

@@ -164,9 +164,10 @@ std::string face_text(const Mesh& m, std::uint32_t f) {
   return where.empty() ? s : s + " (" + where + ")";
 }
 
-std::string pair_text(const Mesh& m, const TrianglePair& p) {
-  return face_text(m, p.first) + " meets " + face_text(m, p.second) + " at (" + number_text(p.where.x) + ", " +
-         number_text(p.where.y) + ", " + number_text(p.where.z) + ")";
+// The pair and where they meet, at `where` as the caller will see it (moved back from near the origin).
+std::string pair_text(const Mesh& m, const TrianglePair& p, Vec3 where) {
+  return face_text(m, p.first) + " meets " + face_text(m, p.second) + " at (" + number_text(where.x) + ", " +
+         number_text(where.y) + ", " + number_text(where.z) + ")";
 }
 
 // A stack far from the origin for its size, moved to it: subdivision, tile classes and the checks then work
@@ -208,26 +209,40 @@ Mesh develop_surface(std::span<const Polyline* const> given, const DevelopOption
   const double built = opt.thickness > 0 ? 0.7 : 0.9;
   ProgressStage surface(progress, 0, built);
   Mesh m = opt.method == Method::bezier ? bezier_route(levels, opt, surface) : loop_route(levels, opt, surface);
+  const Vec3 back{near.offset.x, near.offset.y, 0};
   if (opt.check) {
     ProgressStage check(progress, built, opt.thickness > 0 ? 0.8 : 1);
-    if (const auto p = first_intersection(m, check))
-      throw Error("the surface meets itself: " + pair_text(m, *p) +
-                  (opt.method == Method::loop && opt.smooth == 0
-                       ? "; shift its corners (corner_shift = 0.1) or smooth it, or keep it with check = false"
-                       : "; shift its corners (corner_shift), lower the height, or keep it with check = false"));
+    if (const auto p = first_intersection(m, check)) {
+      const std::string advice = opt.method == Method::bezier
+                                     ? "the levels' smoothed curves, or the surface between them, cross"
+                                 : opt.smooth == 0 ? "shift its corners (corner_shift = 0.1) or smooth it"
+                                                   : "shift its corners (corner_shift) or smooth it more";
+      throw Error("the surface meets itself: " + pair_text(m, *p, p->where + back) +
+                  (opt.size > 0 ? " (before scaling to option 'size')" : "") + "; " + advice +
+                  ", or keep it with check = false");
+    }
   }
   if (opt.thickness > 0) {
     if (opt.method == Method::bezier) set_thickness(m, levels, opt);
+    const auto t = m.point_fields.find("thickness")->reals();
+    const double thinnest = *std::min_element(t.begin(), t.end()), size = norm(m.bbox().size());
     ProgressStage solid(progress, 0.8, 0.9);
     m = thicken(m, solid);
+    for (Vec3& p : m.points) p = p + back;
+    m = scaled(std::move(m), levels, opt);
     ProgressStage check(progress, 0.9, 1);
     if (opt.check && warnings != nullptr)
       if (const auto p = first_intersection(m, check))
-        warnings->push_back("the thickened solid meets itself (" + pair_text(m, *p) +
-                            "): its thickness there is more than the gap between the surface's parts; lower "
-                            "thickness or thickness_rate");
+        // A solid thinner somewhere than the check's tolerance (1e-9 of its size) touches itself there.
+        warnings->push_back("the thickened solid meets itself (" + pair_text(m, *p, p->where) + "): " +
+                            (thinnest <= 1e-8 * size
+                                 ? "its thickness falls to " + number_text(thinnest) +
+                                       ", too thin to tell its sheets apart; raise thickness or thickness_rate"
+                                 : "its thickness there is more than the gap between the surface's parts; lower "
+                                   "thickness or thickness_rate"));
+    return m;
   }
-  for (Vec3& p : m.points) p = p + Vec3{near.offset.x, near.offset.y, 0};
+  for (Vec3& p : m.points) p = p + back;
   return scaled(std::move(m), levels, opt);
 }
 

@@ -139,6 +139,75 @@ std::optional<Vec3> contact(const Tri& a, const Tri& b, double eps) {
   return std::nullopt;
 }
 
+// ---- Neighbours: triangles that share corners meet there by construction; they meet wrongly when they
+// also meet elsewhere: two triangles of a fan that cross, or fold onto each other.
+
+// Whether direction d points into the wedge of triangle (v, x, y) at v (n its normal), strictly: not along
+// its sides.
+bool into_wedge(Vec3 d, Vec3 v, Vec3 x, Vec3 y, Vec3 n) {
+  const Vec3 ex = x - v, ey = y - v;
+  const double tiny = 1e-12 * norm(d) * norm(n);
+  return dot(cross(ex, d), n) > tiny * norm(ex) && dot(cross(d, ey), n) > tiny * norm(ey);
+}
+
+// Triangles sharing exactly one corner v (a, b rotated so v is their first) meet elsewhere when some ray
+// from v lies in both: the line their planes share, if it points into both wedges, or, for coplanar
+// triangles, one's side pointing into the other's wedge.
+bool share_more_than_a_corner(const Tri& a, const Tri& b) {
+  const Vec3 v = a.v[0];
+  const Vec3 d = cross(a.n, b.n);
+  if (norm(d) > 1e-9 * norm(a.n) * norm(b.n)) {
+    for (const Vec3 dir : {d, -1.0 * d})
+      if (into_wedge(dir, v, a.v[1], a.v[2], a.n) && into_wedge(dir, v, b.v[1], b.v[2], b.n)) return true;
+    return false;
+  }
+  for (int k = 1; k < 3; ++k)
+    if (into_wedge(b.v[k] - v, v, a.v[1], a.v[2], a.n) || into_wedge(a.v[k] - v, v, b.v[1], b.v[2], b.n)) return true;
+  return false;
+}
+
+// Corners a triangle shares with another, by point index: 0 to 3.
+int shared_corners(const Triangle& a, const Triangle& b) {
+  int n = 0;
+  for (std::uint32_t p : a) n += int(p == b[0] || p == b[1] || p == b[2]);
+  return n;
+}
+
+// t's corners rotated (keeping its orientation) so that corner k comes first.
+std::array<Vec3, 3> from_corner(const std::array<Vec3, 3>& t, int k) { return {t[k], t[(k + 1) % 3], t[(k + 2) % 3]}; }
+
+// Where two neighbours (sharing one or two corners) meet other than along what they share, if they do: one
+// corner shared, a crossing or overlap beyond it; an edge shared, a fold (the two third corners on the same
+// side of the edge, within eps of one plane).
+std::optional<Vec3> neighbours_meet(const Triangle& ia, const Triangle& ib, const Tri& a, const Tri& b, double eps) {
+  if (a.flat || b.flat) return std::nullopt;
+  const int shared = shared_corners(ia, ib);
+  if (shared == 1) {
+    int ka = 0, kb = 0;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        if (ia[i] == ib[j]) ka = i, kb = j;
+    if (!share_more_than_a_corner(Tri(from_corner(a.v, ka)), Tri(from_corner(b.v, kb)))) return std::nullopt;
+    return a.v[ka];
+  }
+  if (shared == 2) {
+    int third_a = 0, third_b = 0;
+    for (int i = 0; i < 3; ++i) {
+      if (ia[i] != ib[0] && ia[i] != ib[1] && ia[i] != ib[2]) third_a = i;
+      if (ib[i] != ia[0] && ib[i] != ia[1] && ib[i] != ia[2]) third_b = i;
+    }
+    const Vec3 u = a.v[(third_a + 1) % 3], w = a.v[(third_a + 2) % 3], pa = a.v[third_a], pb = b.v[third_b];
+    const bool same_side = dot(cross(w - u, pa - u), cross(w - u, pb - u)) > 0;
+    if (same_side && std::abs(dot(pb - u, a.n)) <= eps * norm(a.n)) return pb;
+  }
+  return std::nullopt;
+}
+
+// Where triangles ia and ib meet wrongly, whether or not they are neighbours.
+std::optional<Vec3> meet(const Triangle& ia, const Triangle& ib, const Tri& a, const Tri& b, double eps) {
+  return shared_corners(ia, ib) > 0 ? neighbours_meet(ia, ib, a, b, eps) : contact(a, b, eps);
+}
+
 // ---- The grid: candidate pairs are triangles whose boxes (grown by eps) share a cell.
 //
 // Boxes are floats in units of the mesh's diagonal from its low corner (24 bytes a triangle instead of 48),
@@ -178,23 +247,23 @@ std::uint32_t compact(std::uint64_t x) {
 int bit_width(std::uint64_t x) { return x == 0 ? 0 : 64 - __builtin_clzll(x); }
 
 struct Grid {
-  float per_unit = 1;      // cells per unit of the diagonal
-  std::uint32_t last = 0;  // the highest cell index on any axis
-  int id_bits = 1;         // the records' low bits hold the triangle index
+  std::array<float, 3> per_unit{1, 1, 1};  // cells per unit of the diagonal, on each axis
+  std::array<std::uint32_t, 3> last{};     // the highest cell index on each axis
+  int id_bits = 1;                         // the records' low bits hold the triangle index
 
-  std::uint32_t cell(float u) const {
+  std::uint32_t cell(float u, int axis) const {
     // Boxes start a little below 0: truncation toward zero takes those to cell 0, as floor would.
-    return std::min(static_cast<std::uint32_t>(std::max(static_cast<std::int32_t>(u * per_unit), 0)), last);
+    return std::min(static_cast<std::uint32_t>(std::max(static_cast<std::int32_t>(u * per_unit[axis]), 0)), last[axis]);
   }
-  Cell low(const Box& b) const { return {cell(b.lo[0]), cell(b.lo[1]), cell(b.lo[2])}; }
-  Cell high(const Box& b) const { return {cell(b.hi[0]), cell(b.hi[1]), cell(b.hi[2])}; }
+  Cell low(const Box& b) const { return {cell(b.lo[0], 0), cell(b.lo[1], 1), cell(b.lo[2], 2)}; }
+  Cell high(const Box& b) const { return {cell(b.hi[0], 0), cell(b.hi[1], 1), cell(b.hi[2], 2)}; }
   static std::uint64_t cells(const Cell& lo, const Cell& hi) {
     return std::uint64_t{hi[0] - lo[0] + 1} * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1);
   }
   std::uint64_t cells(const Box& b) const { return cells(low(b), high(b)); }
   static std::uint64_t key(const Cell& c) { return spread(c[0]) | spread(c[1]) << 1 | spread(c[2]) << 2; }
   static Cell cell_of(std::uint64_t key) { return {compact(key), compact(key >> 1), compact(key >> 2)}; }
-  int key_bits() const { return 3 * bit_width(last); }
+  int key_bits() const { return 3 * bit_width(std::max({last[0], last[1], last[2]})); }
 };
 
 // Insertions (triangle, cell) g would make. A sum of whole numbers: the same whatever the threads.
@@ -208,30 +277,38 @@ double insertions(const std::vector<Box>& boxes, const Grid& g) {
       std::plus<>());
 }
 
-// Cell size: twice the median triangle's largest extent (from a sample), so a typical triangle spans one
-// or two cells an axis; doubled while there are more than 8 insertions a triangle (a few triangles as large
-// as the mesh would otherwise fill millions of cells each). Cells are no smaller than the key allows: three
-// coordinates and the triangle index share 64 bits. `reach` is the largest box coordinate.
-Grid choose_grid(const std::vector<Box>& boxes, float reach) {
+// Cell sizes: on each axis twice the median triangle's extent along it (from a sample), so a typical
+// triangle spans one or two cells an axis, and a mesh of tall thin triangles (a developing surface of a
+// large `height`) gets tall thin cells rather than long columns of crowded ones; all doubled while there are
+// more than 8 insertions a triangle (a few triangles as large as the mesh would otherwise fill millions of
+// cells each). Cells are no smaller than the key allows: three coordinates and the triangle index share 64
+// bits. `reach` is the largest box coordinate on each axis.
+Grid choose_grid(const std::vector<Box>& boxes, const std::array<float, 3>& reach) {
   const std::size_t f = boxes.size(), samples = std::min<std::size_t>(f, 1 << 16);
-  std::vector<float> sizes(samples);
-  for (std::size_t k = 0; k < samples; ++k) {
-    const Box& b = boxes[k * f / samples];
-    sizes[k] = std::max({b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]});
-  }
-  std::nth_element(sizes.begin(), sizes.begin() + samples / 2, sizes.end());
   Grid g;
   g.id_bits = std::max(1, bit_width(f - 1));
   const int axis_bits = std::min(21, (64 - g.id_bits) / 3);
-  double cell = std::max(2 * double(sizes[samples / 2]), std::ldexp(2.0, -axis_bits));
-  auto with = [&](double size) {
-    g.per_unit = static_cast<float>(1 / size);
-    g.last = (std::uint32_t{1} << axis_bits) - 1;
-    g.last = g.cell(reach);
+  std::array<double, 3> cell{};
+  std::vector<float> sizes(samples);
+  for (int axis = 0; axis < 3; ++axis) {
+    for (std::size_t k = 0; k < samples; ++k) {
+      const Box& b = boxes[k * f / samples];
+      sizes[k] = b.hi[axis] - b.lo[axis];
+    }
+    std::nth_element(sizes.begin(), sizes.begin() + samples / 2, sizes.end());
+    cell[axis] = std::max(2 * double(sizes[samples / 2]), std::ldexp(2.0, -axis_bits));
+  }
+  auto with = [&](double scale) {
+    for (int axis = 0; axis < 3; ++axis) {
+      g.per_unit[axis] = static_cast<float>(1 / (scale * cell[axis]));
+      g.last[axis] = (std::uint32_t{1} << axis_bits) - 1;
+      g.last[axis] = g.cell(reach[axis], axis);
+    }
     return g;
   };
   const double limit = std::min(8.0 * double(f) + 4096, double(std::numeric_limits<std::uint32_t>::max()));
-  while (insertions(boxes, with(cell)) > limit && cell < 2) cell *= 2;
+  double scale = 1;
+  while (insertions(boxes, with(scale)) > limit && scale * std::min({cell[0], cell[1], cell[2]}) < 2) scale *= 2;
   return g;
 }
 
@@ -289,12 +366,6 @@ std::vector<std::uint64_t> sorted_records(const std::vector<Box>& boxes, const G
     records.swap(spare);
   }
   return records;
-}
-
-bool neighbours(const Triangle& a, const Triangle& b) {
-  for (std::uint32_t p : a)
-    if (p == b[0] || p == b[1] || p == b[2]) return true;
-  return false;
 }
 
 bool overlap(const Box& a, const Box& b) {
@@ -380,7 +451,7 @@ std::uint64_t least_pair(const Corners& corners, const std::vector<Box>& boxes, 
             if ((p.starts | q.starts) != 7 || !overlap(p.box, q.box)) continue;
             const std::uint64_t pair = std::uint64_t{p.id} << 32 | q.id;
             if (pair >= least) break;
-            if (neighbours(p.points, q.points) || !contact(Tri(corners(p.id)), Tri(corners(q.id)), eps)) continue;
+            if (!meet(p.points, q.points, Tri(corners(p.id)), Tri(corners(q.id)), eps)) continue;
             least = pair;
             break;
           }
@@ -422,14 +493,14 @@ std::optional<TrianglePair> first_intersection(const Mesh& m, Progress& progress
     }
   });
   const Vec3 reach = bounds.size() / corners.size + Vec3::all(eps + 2 * margin);
-  const Grid grid = choose_grid(boxes, float(std::max({reach.x, reach.y, reach.z})));
+  const Grid grid = choose_grid(boxes, {float(reach.x), float(reach.y), float(reach.z)});
   progress.fraction(0.05);
   const std::vector<std::uint64_t> records = sorted_records(boxes, grid, progress);
   progress.fraction(0.2);
   const std::uint64_t pair = least_pair(corners, boxes, grid, records, eps, progress);
   if (pair == none) return std::nullopt;
   const auto first = static_cast<std::uint32_t>(pair >> 32), second = static_cast<std::uint32_t>(pair);
-  const Vec3 where = *contact(Tri(corners(first)), Tri(corners(second)), eps);
+  const Vec3 where = *meet(m.triangles[first], m.triangles[second], Tri(corners(first)), Tri(corners(second)), eps);
   return TrianglePair{first, second, bounds.min + where * corners.size};
 }
 

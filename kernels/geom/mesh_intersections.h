@@ -8,9 +8,11 @@
 // mesh's bounding box (all points, used or not). Rounding does not hide a touch, and a gap of a few billionths
 // of the mesh's size is still a gap, at any scale and any distance from the origin.
 //
-// Neighbours: triangles that share a point index (a corner, an edge, or all three) are never tested against
-// each other: that sharing is the mesh's connectivity, not a collision. Two triangles that share only a
-// coordinate, through different point indices, are tested, and touch.
+// Neighbours: triangles that share point indices meet there by construction, which is the mesh's
+// connectivity, not a collision. They are reported when they also meet elsewhere: sharing a corner, when a
+// ray from it lies in both (they cross, or overlap in one plane); sharing an edge, when they fold onto each
+// other (their third corners on one side of the edge, within the tolerance of one plane). Two triangles that
+// share only a coordinate, through different point indices, are tested as any others, and touch.
 //
 // Degenerate (zero-area) triangles are kept and tested as what they are: the segment or point their corners
 // span (a triangle counts as flat when its height is below 1e-12 of its longest edge). A triangle that
@@ -37,9 +39,9 @@ struct TrianglePair {
   Vec3 where;                           // a point of both (to within the tolerance): a crossing or the touch
 };
 
-// The first pair (smallest `first`, then smallest `second`) of triangles of m that intersect or touch
-// without sharing a point index; std::nullopt when there is none. The answer does not depend on the number
-// of threads. Throws Error for a non-finite point or an index out of range (naming it, counted from 1 as
+// The first pair (smallest `first`, then smallest `second`) of triangles of m that intersect or touch other
+// than along the corners they share (see above); std::nullopt when there is none. The answer does not depend on the
+// number of threads. Throws Error for a non-finite point or an index out of range (naming it, counted from 1 as
 // Mesh::validate does), and Cancelled when progress says stop.
 std::optional<TrianglePair> first_intersection(const Mesh& m, Progress& progress);
 

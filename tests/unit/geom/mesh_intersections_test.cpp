@@ -207,16 +207,31 @@ TEST(MeshIntersections, GapsWithinTheToleranceMeet) {
   EXPECT_FALSE(run(apart));
 }
 
-TEST(MeshIntersections, NeighboursAreNotTested) {
-  // Two triangles on one edge folded flat onto each other, and two on one corner, one crossing the other.
+TEST(MeshIntersections, NeighboursMeetOnlyWhereTheyShare) {
+  // A fan, a strip and a closed surface: neighbours meet only at their shared corners and edges.
+  Mesh fan;
+  fan.points.push_back({0, 0, 0.3});
+  for (int k = 0; k < 7; ++k) fan.points.push_back({std::cos(k * 0.9), std::sin(k * 0.9), 0.1 * (k % 2)});
+  for (std::uint32_t k = 1; k < 7; ++k) fan.triangles.push_back({0, k, k + 1});
+  EXPECT_FALSE(run(fan));
+  EXPECT_FALSE(run(flat_grid(5)));
+  // Two triangles on one edge folded flat onto each other meet beyond their edge.
   Mesh folded;
   folded.points = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 1.5, 0}};
   folded.triangles = {{0, 1, 2}, {1, 0, 3}};
-  EXPECT_FALSE(run(folded));
+  const auto fold = run(folded);
+  ASSERT_TRUE(fold);
+  EXPECT_EQ(fold->second, 1u);
+  // Two on one corner, one crossing the other, meet along a segment from it; a fan whose second triangle
+  // turns back over the first, in one plane, too.
   Mesh corner;
   corner.points = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 1, 1}, {0.5, 0.5, -1}};
   corner.triangles = {{0, 1, 2}, {0, 3, 4}};
-  EXPECT_FALSE(run(corner));
+  EXPECT_TRUE(run(corner));
+  Mesh back;
+  back.points = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 2, 0}, {1.5, 0.2, 0}};
+  back.triangles = {{0, 1, 2}, {0, 3, 4}};  // share corner 0 only; 4 lies inside the first triangle's wedge
+  EXPECT_TRUE(run(back));
 }
 
 TEST(MeshIntersections, TheFirstPairIsTheLeast) {
@@ -294,9 +309,32 @@ TEST(MeshIntersections, ToleranceScalesWithTheMesh) {
   }
 }
 
+// Whether two triangles sharing one corner meet beyond it: each cut short of the corner (at 1e-3 of its
+// sides, a quad as two triangles) and the pieces tested with the reference.
+bool reference_beyond_corner(const Mesh& m, const Triangle& s, const Triangle& t) {
+  auto pieces = [&](const Triangle& a, std::uint32_t v) {
+    int k = 0;
+    while (a[k] != v) ++k;
+    const Vec3 p = m.points[a[k]], x = m.points[a[(k + 1) % 3]], y = m.points[a[(k + 2) % 3]];
+    const Vec3 px = p + 1e-3 * (x - p), py = p + 1e-3 * (y - p);
+    return std::array<std::array<Vec3, 3>, 2>{{{px, x, y}, {px, y, py}}};
+  };
+  std::uint32_t v = 0;
+  for (std::uint32_t p : s)
+    if (p == t[0] || p == t[1] || p == t[2]) v = p;
+  Mesh pair;
+  for (const auto& piece : pieces(s, v))
+    for (const auto& other : pieces(t, v)) {
+      pair.points = {piece[0], piece[1], piece[2], other[0], other[1], other[2]};
+      if (reference_intersect(pair, {0, 1, 2}, {3, 4, 5})) return true;
+    }
+  return false;
+}
+
 TEST(MeshIntersections, RandomSoupsAgreeWithBruteForce) {
   // Small random triangles (general position: no touching by chance), some sharing a corner with the one
-  // before; the first pair must be the one an all-pairs loop with the reference test finds.
+  // before; the first pair must be the one an all-pairs loop with the reference test finds (for corner
+  // sharers: whether they meet beyond the corner).
   std::mt19937_64 random(2024);
   auto uniform = [&] { return double(random() >> 11) * 0x1p-53; };
   for (int round = 0; round < 40; ++round) {
@@ -316,7 +354,7 @@ TEST(MeshIntersections, RandomSoupsAgreeWithBruteForce) {
         const Triangle &s = m.triangles[i], &t = m.triangles[j];
         const bool shared = s[0] == t[0] || s[0] == t[1] || s[0] == t[2] || s[1] == t[0] || s[1] == t[1] ||
                             s[1] == t[2] || s[2] == t[0] || s[2] == t[1] || s[2] == t[2];
-        if (!shared && reference_intersect(m, s, t)) want = {i, j};
+        if (shared ? reference_beyond_corner(m, s, t) : reference_intersect(m, s, t)) want = {i, j};
       }
     const auto hit = run(m);
     ASSERT_EQ(bool(hit), bool(want)) << round;
