@@ -206,44 +206,55 @@ Mesh develop_surface(std::span<const Polyline* const> given, const DevelopOption
   if (opt.size_level >= static_cast<int>(levels.size()))
     throw Error("option 'size_level' must be a level of the stack, 0 to " + std::to_string(levels.size() - 1) +
                 ", got " + std::to_string(opt.size_level));
-  const double built = opt.thickness > 0 ? 0.7 : 0.9;
+  const double built = opt.thickness > 0 ? 0.6 : 0.9;
   ProgressStage surface(progress, 0, built);
   Mesh m = opt.method == Method::bezier ? bezier_route(levels, opt, surface) : loop_route(levels, opt, surface);
   const Vec3 back{near.offset.x, near.offset.y, 0};
-  if (opt.check) {
-    ProgressStage check(progress, built, opt.thickness > 0 ? 0.8 : 1);
-    if (const auto p = first_intersection(m, check)) {
-      const std::string advice = opt.method == Method::bezier
-                                     ? "the levels' smoothed curves, or the surface between them, cross"
-                                 : opt.smooth == 0 ? "shift its corners (corner_shift = 0.1) or smooth it"
-                                                   : "shift its corners (corner_shift) or smooth it more";
-      throw Error("the surface meets itself: " + pair_text(m, *p, p->where + back) +
-                  (opt.size > 0 ? " (before scaling to option 'size')" : "") + "; " + advice +
-                  ", or keep it with check = false");
+  // Throws Error naming the first pair of the surface's triangles that meet.
+  auto refuse_if_meeting = [&](const Mesh& surface, Progress& stage) {
+    const auto p = first_intersection(surface, stage);
+    if (!p) return;
+    const std::string advice = opt.method == Method::bezier
+                                   ? "the levels' smoothed curves, or the surface between them, cross"
+                               : opt.smooth == 0 ? "shift its corners (corner_shift = 0.1) or smooth it"
+                                                 : "shift its corners (corner_shift) or smooth it more";
+    throw Error("the surface meets itself: " + pair_text(surface, *p, p->where + back) +
+                (opt.size > 0 ? " (before scaling to option 'size')" : "") + "; " + advice +
+                ", or keep it with check = false");
+  };
+  if (opt.thickness == 0) {
+    if (opt.check) {
+      ProgressStage check(progress, built, 1);
+      refuse_if_meeting(m, check);
     }
-  }
-  if (opt.thickness > 0) {
-    if (opt.method == Method::bezier) set_thickness(m, levels, opt);
-    const auto t = m.point_fields.find("thickness")->reals();
-    const double thinnest = *std::min_element(t.begin(), t.end()), size = norm(m.bbox().size());
-    ProgressStage solid(progress, 0.8, 0.9);
-    m = thicken(m, solid);
     for (Vec3& p : m.points) p = p + back;
-    m = scaled(std::move(m), levels, opt);
-    ProgressStage check(progress, 0.9, 1);
-    if (opt.check && warnings != nullptr)
-      if (const auto p = first_intersection(m, check))
+    return scaled(std::move(m), levels, opt);
+  }
+  if (opt.method == Method::bezier) set_thickness(m, levels, opt);
+  const auto t = m.point_fields.find("thickness")->reals();
+  const double thinnest = *std::min_element(t.begin(), t.end()), size = norm(m.bbox().size());
+  ProgressStage thick(progress, built, 0.8);
+  Mesh solid = thicken(m, thick);
+  for (Vec3& p : solid.points) p = p + back;
+  solid = scaled(std::move(solid), levels, opt);
+  if (opt.check) {
+    // The solid's sheets lie along the surface: where the surface meets itself they do too, so the surface
+    // is checked (and refused) only when the solid meets itself; otherwise that is the thickness's doing.
+    ProgressStage check(progress, 0.8, 0.9);
+    if (const auto p = first_intersection(solid, check)) {
+      ProgressStage again(progress, 0.9, 1);
+      refuse_if_meeting(m, again);
+      if (warnings != nullptr)
         // A solid thinner somewhere than the check's tolerance (1e-9 of its size) touches itself there.
-        warnings->push_back("the thickened solid meets itself (" + pair_text(m, *p, p->where) + "): " +
+        warnings->push_back("the thickened solid meets itself (" + pair_text(solid, *p, p->where) + "): " +
                             (thinnest <= 1e-8 * size
                                  ? "its thickness falls to " + number_text(thinnest) +
                                        ", too thin to tell its sheets apart; raise thickness or thickness_rate"
-                                 : "its thickness there is more than the gap between the surface's parts; lower "
-                                   "thickness or thickness_rate"));
-    return m;
+                                 : "its thickness there is more than the gap between the surface's parts; "
+                                   "lower thickness or thickness_rate"));
+    }
   }
-  for (Vec3& p : m.points) p = p + back;
-  return scaled(std::move(m), levels, opt);
+  return solid;
 }
 
 }  // namespace selfsim::develop

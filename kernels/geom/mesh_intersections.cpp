@@ -155,6 +155,14 @@ bool into_wedge(Vec3 d, Vec3 v, Vec3 x, Vec3 y, Vec3 n) {
 // triangles, one's side pointing into the other's wedge.
 bool share_more_than_a_corner(const Tri& a, const Tri& b) {
   const Vec3 v = a.v[0];
+  // Most pairs of a smooth surface: one triangle's other corners clearly on one side of the other's plane,
+  // so the two meet only at v.
+  auto one_side = [&](const Tri& t, const Tri& plane) {
+    const double s1 = dot(t.v[1] - v, plane.n), s2 = dot(t.v[2] - v, plane.n);
+    const double tol = 1e-9 * norm(plane.n) * std::max(norm(t.v[1] - v), norm(t.v[2] - v));
+    return (s1 > tol && s2 > tol) || (s1 < -tol && s2 < -tol);
+  };
+  if (one_side(b, a) || one_side(a, b)) return false;
   const Vec3 d = cross(a.n, b.n);
   if (norm(d) > 1e-9 * norm(a.n) * norm(b.n)) {
     for (const Vec3 dir : {d, -1.0 * d})
