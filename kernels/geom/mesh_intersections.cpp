@@ -142,36 +142,41 @@ std::optional<Vec3> contact(const Tri& a, const Tri& b, double eps) {
 // ---- Neighbours: triangles that share corners meet there by construction; they meet wrongly when they
 // also meet elsewhere: two triangles of a fan that cross, or fold onto each other.
 
-// Whether direction d points into the wedge of triangle (v, x, y) at v (n its normal), strictly: not along
-// its sides.
-bool into_wedge(Vec3 d, Vec3 v, Vec3 x, Vec3 y, Vec3 n) {
-  const Vec3 ex = x - v, ey = y - v;
-  const double tiny = 1e-12 * norm(d) * norm(n);
-  return dot(cross(ex, d), n) > tiny * norm(ex) && dot(cross(d, ey), n) > tiny * norm(ey);
-}
+// A triangle seen from one of its corners v: its other corners x, y in order, and its normal n (the same
+// from any corner). Tolerances below compare squares: no square roots in the inner loop.
+struct Wedge {
+  Vec3 v, x, y, n;
+  Wedge(const Tri& t, int k) : v(t.v[k]), x(t.v[(k + 1) % 3]), y(t.v[(k + 2) % 3]), n(t.n) {}
 
-// Triangles sharing exactly one corner v (a, b rotated so v is their first) meet elsewhere when some ray
-// from v lies in both: the line their planes share, if it points into both wedges, or, for coplanar
-// triangles, one's side pointing into the other's wedge.
-bool share_more_than_a_corner(const Tri& a, const Tri& b) {
-  const Vec3 v = a.v[0];
-  // Most pairs of a smooth surface: one triangle's other corners clearly on one side of the other's plane,
-  // so the two meet only at v.
-  auto one_side = [&](const Tri& t, const Tri& plane) {
-    const double s1 = dot(t.v[1] - v, plane.n), s2 = dot(t.v[2] - v, plane.n);
-    const double tol = 1e-9 * norm(plane.n) * std::max(norm(t.v[1] - v), norm(t.v[2] - v));
-    return (s1 > tol && s2 > tol) || (s1 < -tol && s2 < -tol);
-  };
-  if (one_side(b, a) || one_side(a, b)) return false;
+  // s > tol·r for r² given: s positive and beyond the tolerance, without the root.
+  static bool above(double s, double tol2_r2) { return s > 0 && s * s > tol2_r2; }
+  // Whether direction d points into the wedge at v, strictly (beyond 1e-12 radians of its sides).
+  bool contains(Vec3 d) const {
+    const Vec3 ex = x - v, ey = y - v;
+    const double dn = 1e-24 * dot(d, d) * dot(n, n);
+    return above(dot(cross(ex, d), n), dn * dot(ex, ex)) && above(dot(cross(d, ey), n), dn * dot(ey, ey));
+  }
+  // Whether the other wedge's corners lie clearly on one side of this one's plane (beyond 1e-9 of their
+  // distance from v): then the two meet only at v.
+  bool beside(const Wedge& o) const {
+    const double s1 = dot(o.x - v, n), s2 = dot(o.y - v, n);
+    const double tol = 1e-18 * dot(n, n) * std::max(dot(o.x - v, o.x - v), dot(o.y - v, o.y - v));
+    return (above(s1, tol) && above(s2, tol)) || (above(-s1, tol) && above(-s2, tol));
+  }
+};
+
+// Triangles sharing exactly one corner v meet elsewhere when some ray from v lies in both: the line their
+// planes share, if it points into both wedges, or, for coplanar triangles, one's side pointing into the
+// other's wedge.
+bool share_more_than_a_corner(const Wedge& a, const Wedge& b) {
+  if (a.beside(b) || b.beside(a)) return false;  // most pairs of a smooth surface
   const Vec3 d = cross(a.n, b.n);
-  if (norm(d) > 1e-9 * norm(a.n) * norm(b.n)) {
+  if (dot(d, d) > 1e-18 * dot(a.n, a.n) * dot(b.n, b.n)) {  // the planes cross at more than 1e-9 radians
     for (const Vec3 dir : {d, -1.0 * d})
-      if (into_wedge(dir, v, a.v[1], a.v[2], a.n) && into_wedge(dir, v, b.v[1], b.v[2], b.n)) return true;
+      if (a.contains(dir) && b.contains(dir)) return true;
     return false;
   }
-  for (int k = 1; k < 3; ++k)
-    if (into_wedge(b.v[k] - v, v, a.v[1], a.v[2], a.n) || into_wedge(a.v[k] - v, v, b.v[1], b.v[2], b.n)) return true;
-  return false;
+  return a.contains(b.x - b.v) || a.contains(b.y - b.v) || b.contains(a.x - a.v) || b.contains(a.y - a.v);
 }
 
 // Corners a triangle shares with another, by point index: 0 to 3.
@@ -180,9 +185,6 @@ int shared_corners(const Triangle& a, const Triangle& b) {
   for (std::uint32_t p : a) n += int(p == b[0] || p == b[1] || p == b[2]);
   return n;
 }
-
-// t's corners rotated (keeping its orientation) so that corner k comes first.
-std::array<Vec3, 3> from_corner(const std::array<Vec3, 3>& t, int k) { return {t[k], t[(k + 1) % 3], t[(k + 2) % 3]}; }
 
 // Where two neighbours (sharing one or two corners) meet other than along what they share, if they do: one
 // corner shared, a crossing or overlap beyond it; an edge shared, a fold (the two third corners on the same
@@ -195,7 +197,7 @@ std::optional<Vec3> neighbours_meet(const Triangle& ia, const Triangle& ib, cons
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
         if (ia[i] == ib[j]) ka = i, kb = j;
-    if (!share_more_than_a_corner(Tri(from_corner(a.v, ka)), Tri(from_corner(b.v, kb)))) return std::nullopt;
+    if (!share_more_than_a_corner(Wedge(a, ka), Wedge(b, kb))) return std::nullopt;
     return a.v[ka];
   }
   if (shared == 2) {
@@ -423,6 +425,7 @@ std::uint64_t least_pair(const Corners& corners, const std::vector<Box>& boxes, 
     Triangle points;
     std::uint32_t id;
     unsigned starts;  // bit a: the box starts in this cell on axis a
+    Tri tri;          // its corners and normal, once per cell rather than once per pair (most pairs are neighbours)
   };
   const std::size_t total = records.size(), chunk = 1 << 13, chunks = (total + chunk - 1) / chunk;
   const std::uint64_t id_mask = (std::uint64_t{1} << grid.id_bits) - 1;
@@ -447,7 +450,8 @@ std::uint64_t least_pair(const Corners& corners, const std::vector<Box>& boxes, 
           const Cell low = grid.low(boxes[j]);
           in.push_back(
               {boxes[j], corners.m.triangles[j], j,
-               unsigned(low[0] == here[0]) | unsigned(low[1] == here[1]) << 1 | unsigned(low[2] == here[2]) << 2});
+               unsigned(low[0] == here[0]) | unsigned(low[1] == here[1]) << 1 | unsigned(low[2] == here[2]) << 2,
+               Tri(corners(j))});
         }
         for (std::size_t x = 0; x + 1 < in.size(); ++x) {
           const Entry& p = in[x];
@@ -459,7 +463,7 @@ std::uint64_t least_pair(const Corners& corners, const std::vector<Box>& boxes, 
             if ((p.starts | q.starts) != 7 || !overlap(p.box, q.box)) continue;
             const std::uint64_t pair = std::uint64_t{p.id} << 32 | q.id;
             if (pair >= least) break;
-            if (!meet(p.points, q.points, Tri(corners(p.id)), Tri(corners(q.id)), eps)) continue;
+            if (!meet(p.points, q.points, p.tri, q.tri, eps)) continue;
             least = pair;
             break;
           }
