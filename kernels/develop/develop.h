@@ -32,7 +32,7 @@ struct DevelopOptions {
   int smooth = 0;                // rounds of Loop subdivision, in [0, 12]
   bool bounded = false;          // Loop's bounded-curvature rules (loop_subdivision.h) instead of the classic ones
   double thickness = 0;          // thickness at level 0, in the curve's units; 0 for the open surface itself
-  double thickness_rate = 0;     // factor per level, in (0, 1]; 0 for the curve's own segment ratio
+  double thickness_rate = 0;     // factor per level, in [1e-6, 1]; 0 for the curve's own segment ratio
   double size = 0;               // scale the result so its largest side is this (thickness too); 0: as built
   int size_level = -1;           // with size: the level whose curve's larger side becomes `size`; −1: the whole
   bool check = true;             // refuse a surface that meets itself; warn when the thickened solid does
@@ -41,7 +41,7 @@ struct DevelopOptions {
   void validate() const;
 };
 
-// Points plus triangles of the result, from the levels' segment counts alone, before any work: the control
+// Route 1's points plus triangles, from the levels' segment counts alone, before any work: the control
 // mesh's V points and F triangles with E = V + F − χ edges (χ = 1 for a disk, 0 for an annulus), Loop's
 // V' = V + E, E' = 2E + 3F, F' = 4F, and thickening's two sheets and rim (two triangles a boundary edge).
 double developed_size(std::span<const double> segments, bool closed, const DevelopOptions& opt);
