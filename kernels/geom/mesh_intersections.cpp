@@ -15,208 +15,11 @@
 
 #include "kernels/geom/error.h"
 #include "kernels/geom/huge_pages.h"
+#include "kernels/geom/triangle_contact.h"
 
 namespace selfsim {
 
 namespace {
-
-// ---- The pair test: is the distance between two triangles at most eps, and where do they meet?
-//
-// The closest points of two triangles are an edge of one crossing the other, a corner of one nearest the
-// other, or two edges nearest each other in their interiors; a test of each is the whole distance, coplanar
-// and degenerate cases included. Separating axes first reject, cheaply, nearly every pair that is apart.
-
-struct Tri {
-  std::array<Vec3, 3> v;
-  Vec3 n;     // cross(v1 - v0, v2 - v0): twice the area, along the normal
-  bool flat;  // height below 1e-12 of the longest edge: tested as its edges (a segment or a point)
-
-  explicit Tri(const std::array<Vec3, 3>& corners) : v(corners), n(cross(v[1] - v[0], v[2] - v[0])) {
-    const double longest =
-        std::max({dot(v[1] - v[0], v[1] - v[0]), dot(v[2] - v[1], v[2] - v[1]), dot(v[0] - v[2], v[0] - v[2])});
-    flat = dot(n, n) <= 1e-24 * longest * longest;
-  }
-  // Whether x, a point of the triangle's plane, lies in the triangle (edges included).
-  bool contains(Vec3 x) const {
-    return dot(cross(v[1] - v[0], x - v[0]), n) >= 0 && dot(cross(v[2] - v[1], x - v[1]), n) >= 0 &&
-           dot(cross(v[0] - v[2], x - v[2]), n) >= 0;
-  }
-};
-
-Vec3 closest_on_segment(Vec3 p, Vec3 a, Vec3 b) {
-  const Vec3 d = b - a;
-  const double len2 = dot(d, d);
-  if (len2 == 0) return a;
-  return a + std::clamp(dot(p - a, d) / len2, 0.0, 1.0) * d;
-}
-
-Vec3 closest_on_triangle(Vec3 p, const Tri& t) {
-  if (!t.flat) {
-    const Vec3 q = p - (dot(p - t.v[0], t.n) / dot(t.n, t.n)) * t.n;  // p dropped onto the plane
-    if (t.contains(q)) return q;
-  }
-  // Outside (or flat): the nearest point is on the boundary.
-  Vec3 best = t.v[0];
-  double best2 = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < 3; ++k) {
-    const Vec3 q = closest_on_segment(p, t.v[k], t.v[(k + 1) % 3]);
-    if (dot(p - q, p - q) < best2) best = q, best2 = dot(p - q, p - q);
-  }
-  return best;
-}
-
-// True when a and b's projections on `axis` are more than eps (times the axis's length) apart: then the
-// triangles are too. Only a shortcut: a zero axis separates nothing. Projected from a's first corner, so
-// that rounding scales with the triangles' size, not with their distance from the origin.
-bool apart_on(Vec3 axis, const Tri& a, const Tri& b, double eps) {
-  const Vec3 o = a.v[0];
-  const double a0 = 0, a1 = dot(a.v[1] - o, axis), a2 = dot(a.v[2] - o, axis);
-  const double b0 = dot(b.v[0] - o, axis), b1 = dot(b.v[1] - o, axis), b2 = dot(b.v[2] - o, axis);
-  const double gap =
-      std::max(std::min({b0, b1, b2}) - std::max({a0, a1, a2}), std::min({a0, a1, a2}) - std::max({b0, b1, b2}));
-  return gap > 0 && gap * gap > eps * eps * dot(axis, axis);
-}
-
-// Separating axes, cheapest and likeliest first: the normals (which settle most pairs of a curved surface),
-// each triangle's edges' outward directions in its own plane (coplanar pairs), and the edges' cross
-// products. Together they find a gap wider than eps between any pair they do not let through.
-bool separated(const Tri& a, const Tri& b, double eps) {
-  if ((!a.flat && apart_on(a.n, a, b, eps)) || (!b.flat && apart_on(b.n, a, b, eps))) return true;
-  for (int k = 0; k < 3; ++k) {
-    if (!a.flat && apart_on(cross(a.v[(k + 1) % 3] - a.v[k], a.n), a, b, eps)) return true;
-    if (!b.flat && apart_on(cross(b.v[(k + 1) % 3] - b.v[k], b.n), a, b, eps)) return true;
-  }
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      if (apart_on(cross(a.v[(i + 1) % 3] - a.v[i], b.v[(j + 1) % 3] - b.v[j]), a, b, eps)) return true;
-  return false;
-}
-
-// Where the segment p-q passes through t's plane strictly between its ends, if that point is in t. (An end on
-// the plane is a corner near t; a crossing just outside t is near one of t's edges.)
-std::optional<Vec3> crossing(Vec3 p, Vec3 q, const Tri& t) {
-  if (t.flat) return std::nullopt;
-  const double dp = dot(p - t.v[0], t.n), dq = dot(q - t.v[0], t.n);
-  if (!((dp < 0 && dq > 0) || (dp > 0 && dq < 0))) return std::nullopt;
-  const Vec3 x = p + (dp / (dp - dq)) * (q - p);
-  if (t.contains(x)) return x;
-  return std::nullopt;
-}
-
-// The midpoint of the closest points of segments p1-q1 and p2-q2 when those lie inside both segments and
-// within eps of each other. Lines within 1e-12 radians of parallel are left to the corner tests: their
-// closest points then include an end to rounding. The line parameters come from cross products, which keep
-// their precision for nearly parallel edges where the normal equations would cancel.
-std::optional<Vec3> edges_meet(Vec3 p1, Vec3 q1, Vec3 p2, Vec3 q2, double eps2) {
-  const Vec3 d1 = q1 - p1, d2 = q2 - p2, n = cross(d1, d2);
-  const double nn = dot(n, n);
-  if (!(nn > 1e-24 * dot(d1, d1) * dot(d2, d2))) return std::nullopt;
-  const Vec3 w = p2 - p1;
-  const double s = dot(cross(w, d2), n) / nn, t = dot(cross(w, d1), n) / nn;
-  if (!(s >= 0 && s <= 1 && t >= 0 && t <= 1)) return std::nullopt;
-  const Vec3 x1 = p1 + s * d1, x2 = p2 + t * d2;
-  if (dot(x1 - x2, x1 - x2) > eps2) return std::nullopt;
-  return 0.5 * (x1 + x2);
-}
-
-// A point where a and b meet (are within eps of each other), if they do.
-std::optional<Vec3> contact(const Tri& a, const Tri& b, double eps) {
-  if (separated(a, b, eps)) return std::nullopt;
-  for (int k = 0; k < 3; ++k) {
-    if (auto x = crossing(a.v[k], a.v[(k + 1) % 3], b)) return x;
-    if (auto x = crossing(b.v[k], b.v[(k + 1) % 3], a)) return x;
-  }
-  const double eps2 = eps * eps;
-  for (int k = 0; k < 3; ++k) {
-    const Vec3 qa = closest_on_triangle(a.v[k], b);
-    if (dot(qa - a.v[k], qa - a.v[k]) <= eps2) return 0.5 * (qa + a.v[k]);
-    const Vec3 qb = closest_on_triangle(b.v[k], a);
-    if (dot(qb - b.v[k], qb - b.v[k]) <= eps2) return 0.5 * (qb + b.v[k]);
-  }
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      if (auto x = edges_meet(a.v[i], a.v[(i + 1) % 3], b.v[j], b.v[(j + 1) % 3], eps2)) return x;
-  return std::nullopt;
-}
-
-// ---- Neighbours: triangles that share corners meet there by construction; they meet wrongly when they
-// also meet elsewhere: two triangles of a fan that cross, or fold onto each other.
-
-// A triangle seen from one of its corners v: its other corners x, y in order, and its normal n (the same
-// from any corner). Tolerances below compare squares: no square roots in the inner loop.
-struct Wedge {
-  Vec3 v, x, y, n;
-  Wedge(const Tri& t, int k) : v(t.v[k]), x(t.v[(k + 1) % 3]), y(t.v[(k + 2) % 3]), n(t.n) {}
-
-  // s > tol·r for r² given: s positive and beyond the tolerance, without the root.
-  static bool above(double s, double tol2_r2) { return s > 0 && s * s > tol2_r2; }
-  // Whether direction d points into the wedge at v, strictly (beyond 1e-12 radians of its sides).
-  bool contains(Vec3 d) const {
-    const Vec3 ex = x - v, ey = y - v;
-    const double dn = 1e-24 * dot(d, d) * dot(n, n);
-    return above(dot(cross(ex, d), n), dn * dot(ex, ex)) && above(dot(cross(d, ey), n), dn * dot(ey, ey));
-  }
-  // Whether the other wedge's corners lie clearly on one side of this one's plane (beyond 1e-9 of their
-  // distance from v): then the two meet only at v.
-  bool beside(const Wedge& o) const {
-    const double s1 = dot(o.x - v, n), s2 = dot(o.y - v, n);
-    const double tol = 1e-18 * dot(n, n) * std::max(dot(o.x - v, o.x - v), dot(o.y - v, o.y - v));
-    return (above(s1, tol) && above(s2, tol)) || (above(-s1, tol) && above(-s2, tol));
-  }
-};
-
-// Triangles sharing exactly one corner v meet elsewhere when some ray from v lies in both: the line their
-// planes share, if it points into both wedges, or, for coplanar triangles, one's side pointing into the
-// other's wedge.
-bool share_more_than_a_corner(const Wedge& a, const Wedge& b) {
-  if (a.beside(b) || b.beside(a)) return false;  // most pairs of a smooth surface
-  const Vec3 d = cross(a.n, b.n);
-  if (dot(d, d) > 1e-18 * dot(a.n, a.n) * dot(b.n, b.n)) {  // the planes cross at more than 1e-9 radians
-    for (const Vec3 dir : {d, -1.0 * d})
-      if (a.contains(dir) && b.contains(dir)) return true;
-    return false;
-  }
-  return a.contains(b.x - b.v) || a.contains(b.y - b.v) || b.contains(a.x - a.v) || b.contains(a.y - a.v);
-}
-
-// Corners a triangle shares with another, by point index: 0 to 3.
-int shared_corners(const Triangle& a, const Triangle& b) {
-  int n = 0;
-  for (std::uint32_t p : a) n += int(p == b[0] || p == b[1] || p == b[2]);
-  return n;
-}
-
-// Where two neighbours (sharing one or two corners) meet other than along what they share, if they do: one
-// corner shared, a crossing or overlap beyond it; an edge shared, a fold (the two third corners on the same
-// side of the edge, within eps of one plane).
-std::optional<Vec3> neighbours_meet(const Triangle& ia, const Triangle& ib, const Tri& a, const Tri& b, double eps) {
-  if (a.flat || b.flat) return std::nullopt;
-  const int shared = shared_corners(ia, ib);
-  if (shared == 1) {
-    int ka = 0, kb = 0;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j)
-        if (ia[i] == ib[j]) ka = i, kb = j;
-    if (!share_more_than_a_corner(Wedge(a, ka), Wedge(b, kb))) return std::nullopt;
-    return a.v[ka];
-  }
-  if (shared == 2) {
-    int third_a = 0, third_b = 0;
-    for (int i = 0; i < 3; ++i) {
-      if (ia[i] != ib[0] && ia[i] != ib[1] && ia[i] != ib[2]) third_a = i;
-      if (ib[i] != ia[0] && ib[i] != ia[1] && ib[i] != ia[2]) third_b = i;
-    }
-    const Vec3 u = a.v[(third_a + 1) % 3], w = a.v[(third_a + 2) % 3], pa = a.v[third_a], pb = b.v[third_b];
-    const bool same_side = dot(cross(w - u, pa - u), cross(w - u, pb - u)) > 0;
-    if (same_side && std::abs(dot(pb - u, a.n)) <= eps * norm(a.n)) return pb;
-  }
-  return std::nullopt;
-}
-
-// Where triangles ia and ib meet wrongly, whether or not they are neighbours.
-std::optional<Vec3> meet(const Triangle& ia, const Triangle& ib, const Tri& a, const Tri& b, double eps) {
-  return shared_corners(ia, ib) > 0 ? neighbours_meet(ia, ib, a, b, eps) : contact(a, b, eps);
-}
 
 // ---- The grid: candidate pairs are triangles whose boxes (grown by eps) share a cell.
 //
@@ -424,8 +227,8 @@ std::uint64_t least_pair(const Corners& corners, const std::vector<Box>& boxes, 
     Box box;
     Triangle points;
     std::uint32_t id;
-    unsigned starts;  // bit a: the box starts in this cell on axis a
-    Tri tri;          // its corners and normal, once per cell rather than once per pair (most pairs are neighbours)
+    unsigned starts;      // bit a: the box starts in this cell on axis a
+    ContactTriangle tri;  // its corners and normal, once per cell rather than once per pair (most pairs are neighbours)
   };
   const std::size_t total = records.size(), chunk = 1 << 13, chunks = (total + chunk - 1) / chunk;
   const std::uint64_t id_mask = (std::uint64_t{1} << grid.id_bits) - 1;
@@ -451,7 +254,7 @@ std::uint64_t least_pair(const Corners& corners, const std::vector<Box>& boxes, 
           in.push_back(
               {boxes[j], corners.m.triangles[j], j,
                unsigned(low[0] == here[0]) | unsigned(low[1] == here[1]) << 1 | unsigned(low[2] == here[2]) << 2,
-               Tri(corners(j))});
+               ContactTriangle(corners(j))});
         }
         for (std::size_t x = 0; x + 1 < in.size(); ++x) {
           const Entry& p = in[x];
@@ -463,7 +266,7 @@ std::uint64_t least_pair(const Corners& corners, const std::vector<Box>& boxes, 
             if ((p.starts | q.starts) != 7 || !overlap(p.box, q.box)) continue;
             const std::uint64_t pair = std::uint64_t{p.id} << 32 | q.id;
             if (pair >= least) break;
-            if (!meet(p.points, q.points, p.tri, q.tri, eps)) continue;
+            if (!triangles_meet(p.points, q.points, p.tri, q.tri, eps)) continue;
             least = pair;
             break;
           }
@@ -512,7 +315,8 @@ std::optional<TrianglePair> first_intersection(const Mesh& m, Progress& progress
   const std::uint64_t pair = least_pair(corners, boxes, grid, records, eps, progress);
   if (pair == none) return std::nullopt;
   const auto first = static_cast<std::uint32_t>(pair >> 32), second = static_cast<std::uint32_t>(pair);
-  const Vec3 where = *meet(m.triangles[first], m.triangles[second], Tri(corners(first)), Tri(corners(second)), eps);
+  const Vec3 where = *triangles_meet(m.triangles[first], m.triangles[second], ContactTriangle(corners(first)),
+                                     ContactTriangle(corners(second)), eps);
   return TrianglePair{first, second, bounds.min + where * corners.size};
 }
 
