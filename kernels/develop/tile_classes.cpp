@@ -4,7 +4,6 @@
 #include <cmath>
 #include <numeric>
 #include <string>
-#include <unordered_map>
 
 #include "kernels/geom/error.h"
 
@@ -29,10 +28,11 @@ std::vector<double> signature(const Mesh& m, const TileLayout& layout, std::size
     throw Error("tile " + std::to_string(t) + " is degenerate: its middle fine point lies on its coarse segment");
   const Vec3 y = normalized(y0), z = cross(x, y);
   std::vector<double> s;
-  std::unordered_map<std::uint32_t, char> seen;
+  std::vector<std::uint32_t> seen;  // a few dozen points: a linear search beats a hash set
   for (std::size_t f0 = t * layout.faces; f0 < (t + 1) * layout.faces; f0 += layout.stride)
     for (std::uint32_t p : m.triangles[f0])
-      if (seen.emplace(p, 0).second) {
+      if (std::find(seen.begin(), seen.end(), p) == seen.end()) {
+        seen.push_back(p);
         const Vec3 d = (m.points[p] - a) / scale;
         s.insert(s.end(), {dot(d, x), dot(d, y), dot(d, z)});
       }
