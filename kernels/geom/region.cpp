@@ -38,7 +38,7 @@ bool inside_ring(const std::vector<Vec2>& ring, Vec2 p) {
 
 }  // namespace
 
-Region::Region(std::vector<std::vector<Vec2>> rings) : grid_(1) {
+Region::Region(std::vector<std::vector<Vec2>> rings) {
   if (rings.empty()) throw Error("a region needs an outer ring of at least 3 points");
   for (std::size_t r = 0; r < rings.size(); ++r) {
     auto& ring = rings[r];
@@ -54,7 +54,7 @@ Region::Region(std::vector<std::vector<Vec2>> rings) : grid_(1) {
     }
   }
   rings_ = std::move(rings);
-  grid_ = SegmentGrid(cell_size(starts_, ends_));
+  grid_ = SegmentGrid(box_, cell_size(starts_, ends_));
   for (std::size_t e = 0; e < starts_.size(); ++e) grid_.insert(static_cast<std::uint32_t>(e), starts_[e], ends_[e]);
 
   // Rings simple and apart: no two edges meet unless they follow each other around one ring.

@@ -1,11 +1,10 @@
 // Segments of the plane in a uniform grid of square cells (seed 004's neighbour queries: no O(N²) scans).
-// Each segment is listed in every cell its bounding box covers; a query visits the cells a box covers and
-// reports each segment once. Cells are keyed in a hash map, so an unbounded plane costs memory only where
-// segments are.
+// The cells cover given bounds densely; a segment or a query beyond them falls in the edge cells, so every
+// answer stays right, only slower. Each segment is listed in every cell it passes through; a query visits
+// the cells a box covers.
 #pragma once
 
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include "kernels/geom/bbox.h"
@@ -15,24 +14,40 @@ namespace selfsim {
 
 class SegmentGrid {
  public:
-  // `cell`: the cells' side, positive and finite; about the length of a typical segment or query.
-  explicit SegmentGrid(double cell);
+  SegmentGrid() = default;  // no cells; insert and queries need a grid made with bounds
+  // Cells of side `cell` (positive, finite) over `bounds` (non-empty, finite); larger cells when that would
+  // make more than 2^22 of them.
+  SegmentGrid(const BBox2& bounds, double cell);
 
-  // Lists segment `id` from a to b. Throws Error if it would cover more than 2^24 cells.
+  // Lists segment `id` from a to b in the cells it passes through.
   void insert(std::uint32_t id, Vec2 a, Vec2 b);
 
   // The ids of segments whose cells meet `box`, each once, in increasing order. A superset of the segments
   // that come within the box: callers measure the real distances.
   std::vector<std::uint32_t> near(const BBox2& box) const;
+  // The same into `out` (cleared first), reusing its memory.
+  void near(const BBox2& box, std::vector<std::uint32_t>& out) const;
+  // Calls f(id) for each entry of the cells `box` meets: a segment in several of them comes several times
+  // (the fastest query; callers that must see each once keep their own marks).
+  template <class F>
+  void visit(const BBox2& box, F&& f) const {
+    if (cells_.empty() || box.empty()) return;
+    const int i0 = column(box.min.x), i1 = column(box.max.x), j0 = row(box.min.y), j1 = row(box.max.y);
+    for (int j = j0; j <= j1; ++j)
+      for (int i = i0; i <= i1; ++i)
+        for (std::uint32_t id : cells_[static_cast<std::size_t>(j) * nx_ + i]) f(id);
+  }
 
   double cell() const { return cell_; }
 
  private:
-  std::int64_t index(double x) const;
-  static std::uint64_t key(std::int64_t i, std::int64_t j);
+  int column(double x) const;
+  int row(double y) const;
 
-  double cell_;
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells_;
+  BBox2 bounds_;
+  double cell_ = 0;
+  int nx_ = 0, ny_ = 0;
+  std::vector<std::vector<std::uint32_t>> cells_;
 };
 
 }  // namespace selfsim

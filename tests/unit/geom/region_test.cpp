@@ -41,7 +41,7 @@ TEST(Segment2, DistancesAndMeetings) {
 }
 
 TEST(SegmentGrid, ReportsEachNearSegmentOnce) {
-  SegmentGrid g(0.1);
+  SegmentGrid g({{0, 0}, {6, 6}}, 0.1);
   g.insert(3, {0, 0}, {1, 0});  // spans ten cells
   g.insert(7, {5, 5}, {5.05, 5});
   const auto near = g.near(BBox2{{0.2, -0.05}, {0.8, 0.05}});
@@ -49,7 +49,11 @@ TEST(SegmentGrid, ReportsEachNearSegmentOnce) {
   EXPECT_EQ(near[0], 3u);
   EXPECT_TRUE(g.near(BBox2{{2, 2}, {3, 3}}).empty());
   EXPECT_EQ(g.near(BBox2{{-10, -10}, {10, 10}}).size(), 2u);
-  EXPECT_THROW(SegmentGrid(0), Error);
+  EXPECT_THROW(SegmentGrid({{0, 0}, {1, 1}}, 0), Error);
+  EXPECT_TRUE(g.near(BBox2{{0.9, 0.5}, {0.95, 0.6}}).empty());  // only the cells a segment passes through
+  g.insert(9, {-3, 2}, {20, 2.5});                              // beyond the bounds: in the edge cells
+  EXPECT_EQ(g.near(BBox2{{15, 2.3}, {16, 2.5}}), std::vector<std::uint32_t>{9});
+  EXPECT_EQ(g.near(BBox2{{-5, 1.9}, {-4, 2.1}}), std::vector<std::uint32_t>{9});
 }
 
 TEST(Region, SquareContainsAndMeasures) {

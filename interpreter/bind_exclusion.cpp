@@ -1,0 +1,91 @@
+// exclusion.curve{ region, start, radius, factor, levels, order, scan, exclusion } -> Curve, report: seed
+// 004's exclusion-radius curve (kernels/exclusion). The region is a closed curve: polygon{...}, or a curve
+// of several closed paths (group{...}) whose first is the outer ring and the others holes. The start is a
+// curve whose paths are the start curves. The report says how many points could not move, level by level.
+// A thin adapter.
+#include <string>
+
+#include "interpreter/bindings.h"
+#include "interpreter/curve_value.h"
+#include "interpreter/lua_support.h"
+#include "interpreter/options_reader.h"
+#include "interpreter/run_context.h"
+#include "kernels/exclusion/exclusion_curve.h"
+
+namespace selfsim::interp {
+
+namespace {
+
+Region region_of(const Polyline& c) {
+  std::vector<std::vector<Vec2>> rings;
+  for (std::size_t i = 0; i < c.paths(); ++i) rings.emplace_back(c.path(i).begin(), c.path(i).end());
+  try {
+    return Region(std::move(rings));
+  } catch (const BudgetError&) {
+    throw;
+  } catch (const Error& e) {
+    throw Error(std::string("option 'region': ") + e.what());
+  }
+}
+
+// { stuck = n, levels = { { splits = , stuck = , seconds = }, ... } }
+void push_report(lua_State* L, const exclusion::CurveResult& r) {
+  lua_createtable(L, 0, 2);
+  lua_pushinteger(L, static_cast<lua_Integer>(r.stuck()));
+  lua_setfield(L, -2, "stuck");
+  lua_createtable(L, static_cast<int>(r.levels.size()), 0);
+  for (std::size_t i = 0; i < r.levels.size(); ++i) {
+    lua_createtable(L, 0, 3);
+    lua_pushinteger(L, static_cast<lua_Integer>(r.levels[i].splits));
+    lua_setfield(L, -2, "splits");
+    lua_pushinteger(L, static_cast<lua_Integer>(r.levels[i].stuck));
+    lua_setfield(L, -2, "stuck");
+    lua_pushnumber(L, r.levels[i].seconds);
+    lua_setfield(L, -2, "seconds");
+    lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+  }
+  lua_setfield(L, -2, "levels");
+}
+
+int exclusion_curve(lua_State* L) {
+  return call_kernel(L, "exclusion.curve", [&] {
+    if (lua_gettop(L) != 1 || !lua_istable(L, 1))
+      throw Error("takes one table of options, exclusion.curve{ region = ..., start = ..., radius = ... }");
+    Options o(L, 1);
+    o.require("region", "the region to fill, e.g. region = polygon { {0,0}, {1,0}, {1,1}, {0,1} }");
+    o.require("start", "the start curve, e.g. start = polyline { {0,0}, {1,1} }");
+    o.require("radius", "the first level's exclusion radius, e.g. radius = 0.1");
+    o.require("levels", "how many times every segment is split, e.g. levels = 10");
+    const Polyline region_curve = o.curve("region");
+    const Polyline start = o.curve("start");
+    exclusion::CurveOptions opt;
+    opt.radius = o.number("radius", opt.radius);
+    opt.factor = o.number("factor", opt.factor);
+    opt.levels = static_cast<int>(o.integer("levels", 1, 0, 40));
+    opt.order = static_cast<exclusion::Order>(o.enumeration("order", {"breadth", "depth"}, 0));
+    if (opt.order == exclusion::Order::depth && o.has("scan"))
+      throw Error("option 'scan' applies to order = \"breadth\" only (depth first always goes forward)");
+    opt.scan = static_cast<exclusion::Scan>(o.enumeration("scan", {"alternate", "forward"}, 0));
+    opt.exclusion = static_cast<exclusion::Mode>(o.enumeration("exclusion", {"exact", "vertex"}, 0));
+    o.finish();
+    opt.validate();
+    const Region region = region_of(region_curve);
+    exclusion::CurveResult r = with_budget(L, [&](const PointBudget& b) {
+      opt.budget = b;
+      return exclusion::exclusion_curve(region, start, opt, RunContext::of(L));
+    });
+    push_curve(L, std::move(r.curve));
+    push_report(L, r);
+    return 2;
+  });
+}
+
+}  // namespace
+
+void open_exclusion(lua_State* L) {
+  const luaL_Reg functions[] = {{"curve", exclusion_curve}, {nullptr, nullptr}};
+  luaL_newlib(L, functions);
+  lua_setglobal(L, "exclusion");
+}
+
+}  // namespace selfsim::interp

@@ -1,0 +1,19 @@
+// What `exclusion.curve` requires of its start curves, checked before any work: each has a segment, finite
+// points inside the region, no zero-length segment, touches the region's boundary at most at its own two
+// ends (Figure 3 runs corner to corner), and no two segments of the start curves meet unless they follow
+// each other along one curve. Each failure is an Error naming the curve, the point or segment, and why.
+#pragma once
+
+#include <span>
+
+#include "kernels/geom/polyline.h"
+#include "kernels/geom/region.h"
+
+namespace selfsim::exclusion {
+
+// A path that ends where it starts (at least three segments) is a closed curve.
+bool closed_path(std::span<const Vec2> p);
+
+void check_start(const Region& region, const Polyline& start);
+
+}  // namespace selfsim::exclusion
