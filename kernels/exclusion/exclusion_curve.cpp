@@ -18,6 +18,9 @@ namespace {
 
 constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
 
+// A point that can move less than this fraction of its half segment on both sides stays at the midpoint.
+constexpr double stuck_fraction = 1e-6;
+
 // Bytes of working memory per point of the result, measured (README): vertices and their links, about one
 // and a half segments of 40 bytes, their grid cells. Counted against the budget in points of 16 bytes.
 constexpr double working_points_per_point = 12;
@@ -46,16 +49,17 @@ class Curves {
   Polyline result() const;
 
  private:
-  Reach reach(const SplitFrame& f, double r, std::uint32_t self);
+  Reach reach(const SplitFrame& f, double r, std::uint32_t v);
   void limit(const SplitFrame& f, std::uint32_t id, std::uint32_t self, double r, Reach& limits) const;
   std::uint32_t add(Vec2 u, Vec2 v);
 
   const Region& region_;
   const CurveOptions& opt_;
   std::vector<Vec2> at_;
-  std::vector<std::uint32_t> next_, out_;  // next vertex along the curve, segment starting here (or none)
-  std::vector<std::int32_t> level_;        // the level each vertex was made at
-  std::vector<std::uint32_t> first_;       // each curve's first vertex
+  std::vector<std::uint32_t> next_, prev_, out_;  // next and previous vertex along the curve, segment
+                                                  // starting here (or none)
+  std::vector<std::int32_t> level_;               // the level each vertex was made at
+  std::vector<std::uint32_t> first_;              // each curve's first vertex
   std::vector<bool> closed_;
   std::vector<Segment> segments_;
   SegmentGrid grid_;
@@ -67,6 +71,7 @@ Curves::Curves(const Region& region, const Polyline& start, const CurveOptions& 
     : region_(region), opt_(opt), far_(2 * norm(region.bbox().size())) {
   at_.reserve(static_cast<std::size_t>(points));
   next_.reserve(at_.capacity());
+  prev_.reserve(at_.capacity());
   out_.reserve(at_.capacity());
   level_.reserve(at_.capacity());
   for (std::size_t i = 0; i < start.paths(); ++i) {
@@ -77,6 +82,9 @@ Curves::Curves(const Region& region, const Polyline& start, const CurveOptions& 
     for (std::size_t k = 0; k < n; ++k) {
       at_.push_back(p[k]);
       next_.push_back(k + 1 < n ? first + static_cast<std::uint32_t>(k + 1) : loop ? first : none);
+      prev_.push_back(k > 0  ? first + static_cast<std::uint32_t>(k - 1)
+                      : loop ? first + static_cast<std::uint32_t>(n - 1)
+                             : none);
       out_.push_back(none);
       level_.push_back(0);
     }
@@ -110,6 +118,8 @@ double Curves::mean_length() const {
 void Curves::limit(const SplitFrame& f, std::uint32_t id, std::uint32_t self, double r, Reach& limits) const {
   const Segment& s = segments_[id];
   if (!s.alive || id == self) return;
+  // Once both sides are below the stuck threshold the point stays at the midpoint, whatever else is near.
+  if (limits.positive < stuck_fraction * f.h && limits.negative < stuck_fraction * f.h) return;
   if (opt_.exclusion == Mode::exact)
     limit_exact(f, s.u, s.v, r, limits);
   else
@@ -137,23 +147,33 @@ bool apart(const SplitFrame& f, const Segment& s, double positive, double negati
 
 // The limits on both sides, from the segments near the split: those within r of where the new segments
 // could be for moves up to t, with t growing until both sides stop within it.
-Reach Curves::reach(const SplitFrame& f, double r, std::uint32_t self) {
+Reach Curves::reach(const SplitFrame& f, double r, std::uint32_t v) {
+  const std::uint32_t self = out_[v];
   Reach limits;
   if (opt_.brute_force) {
     for (std::uint32_t id = 0; id < segments_.size(); ++id) limit(f, id, self, r, limits);
     return limits;
   }
+  // The segments next along the curve first: they stop the point most often, and once both sides are
+  // stuck the rest is skipped.
+  std::uint32_t chain[4] = {none, none, none, none};
+  const std::uint32_t before = prev_[v], after = next_[v];
+  if (before != none) chain[0] = out_[before], chain[1] = prev_[before] != none ? out_[prev_[before]] : none;
+  if (out_[after] != none) chain[2] = out_[after], chain[3] = out_[next_[after]];
   for (double t = std::max(f.h, r);; t *= 2) {
     BBox2 box;
     for (Vec2 q : {f.a, f.b, f.at(t), f.at(-t)}) box.add(q);
     limits = Reach{};
     ++query_;
-    grid_.visit({box.min - Vec2::all(r), box.max + Vec2::all(r)}, [&](std::uint32_t id) {
+    auto visit = [&](std::uint32_t id) {
       Segment& s = segments_[id];
       if (s.seen == query_) return;
       s.seen = query_;
       if (!apart(f, s, std::min(limits.positive, t), std::min(limits.negative, t), r)) limit(f, id, self, r, limits);
-    });
+    };
+    for (std::uint32_t id : chain)
+      if (id != none && id != self) visit(id);
+    grid_.visit({box.min - Vec2::all(r), box.max + Vec2::all(r)}, visit);
     if ((limits.positive <= t && limits.negative <= t) || t > far_) return limits;
   }
 }
@@ -161,12 +181,12 @@ Reach Curves::reach(const SplitFrame& f, double r, std::uint32_t self) {
 std::uint32_t Curves::split(std::uint32_t v, double r, int level, LevelReport& report) {
   const std::uint32_t w = next_[v];
   const SplitFrame f(at_[v], at_[w]);
-  const Reach limits = reach(f, r, out_[v]);
+  const Reach limits = reach(f, r, v);
   double t = limits.negative > limits.positive * (1 + 1e-9) ? -limits.negative : limits.positive;
   if (!std::isfinite(t)) throw Error("exclusion curve: a point found nothing to stop it (the region is not closed)");
   t *= 1 - 1e-9;  // a rounding short of the limit, so that the radius still holds once the point is stored
   ++report.splits;
-  if (std::abs(t) < 1e-6 * f.h) {
+  if (std::abs(t) < stuck_fraction * f.h) {
     t = 0;
     ++report.stuck;
   }
@@ -175,6 +195,8 @@ std::uint32_t Curves::split(std::uint32_t v, double r, int level, LevelReport& r
   level_.push_back(level);
   next_.push_back(w);
   next_[v] = p;
+  prev_.push_back(v);
+  prev_[w] = p;
   segments_[out_[v]].alive = false;
   out_[v] = add(at_[v], at_[p]);
   out_.push_back(add(at_[p], at_[w]));

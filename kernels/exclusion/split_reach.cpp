@@ -68,21 +68,25 @@ double start_distance(Local u, Local v) {
   return std::sqrt(s * s + t * t);
 }
 
-// One term: its set of t where it is below r; if that holds t = 0 the term starts below r (inherited) and
-// may not get smaller than where it starts, d0: its set is taken again with that, a hair less.
-template <class SetFor, class StartValue>
-void term(Reach& reach, double r, SetFor set_for, StartValue d0) {
-  Interval i = set_for(r);
-  if (!(i.lo < 0 && i.hi > 0)) {
-    reach.block(i);
-    return;
-  }
-  const double rho = d0() * (1 - 1e-9);
+// One term, whose value where the point starts is d0: its set of t where it is below r, or, when it starts
+// below r (inherited), where it gets smaller than d0, a hair less so that t = 0 stays outside the set.
+template <class SetFor>
+void term(Reach& reach, double r, double d0, SetFor set_for) {
+  const double rho = d0 < r ? d0 * (1 - 1e-9) : r;
   if (!(rho > 0)) {  // already touching: no move can be trusted
     reach.positive = reach.negative = 0;
     return;
   }
   reach.block(set_for(rho));
+}
+
+// Whether w, at sigma in front of an end and w.t along n, is farther than r from every segment from that
+// end to (0, t) with t in [-negative, positive]: beyond one of the two slanted sides of their triangle.
+bool outside_fan(double h, double sigma, Local w, double positive, double negative, double r) {
+  if (std::isinf(positive) || std::isinf(negative)) return false;
+  const double above = h * w.t - positive * sigma, below = -h * w.t - negative * sigma;
+  return (above > 0 && above * above > r * r * (positive * positive + h * h)) ||
+         (below > 0 && below * below > r * r * (negative * negative + h * h));
 }
 
 }  // namespace
@@ -113,17 +117,15 @@ void limit_exact(const SplitFrame& f, Vec2 u, Vec2 v, double r, Reach& reach) {
   const bool both_above = U.t > reach.positive + r && V.t > reach.positive + r;
   const bool both_below = U.t < -reach.negative - r && V.t < -reach.negative - r;
   if (!both_above && !both_below)
-    term(
-        reach, r, [&](double rho) { return capsule_set(U, V, rho); }, [&] { return start_distance(U, V); });
+    term(reach, r, start_distance(U, V), [&](double rho) { return capsule_set(U, V, rho); });
   for (int k = 0; k < (u == v ? 1 : 2); ++k) {
     const Vec2 w = k == 0 ? u : v;
     const Local W = k == 0 ? U : V;
     if (w == f.a || w == f.b || beyond(W)) continue;
     for (const double sigma : {f.h + W.s, f.h - W.s}) {
-      if (sigma < -r || sigma > f.h + r) continue;  // farther than r from every segment from that end
-      term(
-          reach, r, [&](double rho) { return shadow_set(f.h, sigma, W, rho); },
-          [&] { return start_distance(f.h, sigma, W); });
+      // Farther than r from every segment from that end (behind it, past the axis, or beside the fan).
+      if (sigma < -r || sigma > f.h + r || outside_fan(f.h, sigma, W, reach.positive, reach.negative, r)) continue;
+      term(reach, r, start_distance(f.h, sigma, W), [&](double rho) { return shadow_set(f.h, sigma, W, rho); });
     }
   }
 }
