@@ -44,4 +44,4 @@ for k = 0, 47 do hole[#hole + 1] = { 0.5 + 0.2 * math.cos(2 * math.pi * k / 48),
 local holed = group { square, polygon(hole) }
 local ring = exclusion.curve { region = holed, start = polygon { {0.15,0.15}, {0.85,0.15}, {0.85,0.85}, {0.15,0.85} },
                               radius = 0.05, factor = 0.8, levels = levels }
-save({ holed, { ring, fill = "#ffb703" } }, "hole.svg", { stroke_width = 1 })
+save({ square, { ring, fill = "#ffb703" }, { polygon(hole), fill = "white" } }, "hole.svg", { stroke_width = 1 })

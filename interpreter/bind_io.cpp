@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <tuple>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "kernels/geom/check.h"
 #include "kernels/geom/lower_case.h"
 #include "kernels/io/colour.h"
+#include "kernels/io/csv_file.h"
 #include "kernels/io/save.h"
 
 namespace selfsim::interp {
@@ -105,9 +107,48 @@ void warn_if_coinciding(lua_State* L, const Mesh& m) {
   lua_warning(L, message.c_str(), 0);
 }
 
+// The rows of a table for .csv: a list of rows, each a list of numbers and strings.
+io::CsvRows csv_rows(lua_State* L) {
+  if (lua_type(L, 1) != LUA_TTABLE || test_any(L, 1))
+    throw Error("a .csv file holds a table of rows, { { \"x\", \"y\" }, { 1, 2 }, ... }, got " + describe(L, 1));
+  if (!lua_isnoneornil(L, 3)) throw Error("'.csv' files take no options");
+  io::CsvRows rows;
+  const lua_Integer n = luaL_len(L, 1);
+  if (n < 1) throw Error("a .csv file needs at least one row");
+  for (lua_Integer r = 1; r <= n; ++r) {
+    lua_geti(L, 1, r);
+    if (!lua_istable(L, -1))
+      throw Error("row " + std::to_string(r) + " must be a list of numbers or strings, got " + describe(L, -1));
+    std::vector<io::CsvCell> row;
+    const lua_Integer m = luaL_len(L, -1);
+    for (lua_Integer c = 1; c <= m; ++c) {
+      lua_geti(L, -1, c);
+      if (lua_type(L, -1) == LUA_TNUMBER)
+        row.emplace_back(lua_tonumber(L, -1));
+      else if (lua_type(L, -1) == LUA_TSTRING)
+        row.emplace_back(std::string(lua_tostring(L, -1)));
+      else
+        throw Error("row " + std::to_string(r) + ", cell " + std::to_string(c) + " must be a number or a string, got " +
+                    describe(L, -1));
+      lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
 int save(lua_State* L) {
   return call_kernel(L, "save", [&] {
     RunContext& run = RunContext::of(L);
+    if (lua_type(L, 2) == LUA_TSTRING &&
+        lower_case(std::filesystem::path(lua_tostring(L, 2)).extension().string()) == ".csv") {
+      const io::CsvRows rows = csv_rows(L);
+      const std::string written =
+          io::save_csv(run.config.out_dir, text_value(L, 2, "argument 2 (the file name)"), rows);
+      if (!run.config.quiet) std::printf("wrote %s (%zu rows)\n", shown_text(written, 4096).c_str(), rows.size());
+      return 0;
+    }
     if (lua_type(L, 1) == LUA_TTABLE) {  // save({ a, b }, ...): the group of the list
       push_group(L, 1);
       lua_replace(L, 1);

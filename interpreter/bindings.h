@@ -23,6 +23,7 @@ void open_group(lua_State* L);       // bind_group.cpp: group{}, concat()
 void open_hoist(lua_State* L);       // bind_hoist.cpp: bspline{}, catmull_rom{}, hoist.*, simplify()
 void open_develop(lua_State* L);     // bind_develop.cpp: develop()
 void open_exclusion(lua_State* L);   // bind_exclusion.cpp: exclusion.curve{}
+void open_analysis(lua_State* L);    // bind_analysis.cpp: dimension()
 
 // bind_lsystem.cpp: the grammar at index, or null (develop() takes one as its source).
 Held<lsystem::Grammar> test_grammar(lua_State* L, int index);
@@ -45,6 +46,7 @@ inline void open_all(lua_State* L) {
   open_hoist(L);
   open_develop(L);
   open_exclusion(L);
+  open_analysis(L);
 }
 
 }  // namespace selfsim::interp

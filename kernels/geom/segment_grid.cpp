@@ -44,6 +44,11 @@ void SegmentGrid::insert(std::uint32_t id, Vec2 a, Vec2 b) {
   }
 }
 
+std::size_t SegmentGrid::occupied() const {
+  return static_cast<std::size_t>(
+      std::count_if(cells_.begin(), cells_.end(), [](const std::vector<std::uint32_t>& c) { return !c.empty(); }));
+}
+
 std::vector<std::uint32_t> SegmentGrid::near(const BBox2& box) const {
   std::vector<std::uint32_t> out;
   near(box, out);

@@ -39,6 +39,8 @@ class SegmentGrid {
   }
 
   double cell() const { return cell_; }
+  // How many cells list at least one segment (box counting).
+  std::size_t occupied() const;
 
  private:
   int column(double x) const;

@@ -1,0 +1,74 @@
+// dimension(curve, { method, from, to }) -> table: a curve's fractal dimension (kernels/analysis), by the
+// length scaling of seed 004 (method = "length", the default: the curve's `level` field gives its levels)
+// or by box counting (method = "box"). A thin adapter.
+#include <algorithm>
+#include <cmath>
+
+#include "interpreter/bindings.h"
+#include "interpreter/curve_value.h"
+#include "interpreter/lua_support.h"
+#include "interpreter/options_reader.h"
+#include "interpreter/run_context.h"
+#include "kernels/analysis/dimension.h"
+
+namespace selfsim::interp {
+
+namespace {
+
+void set_number(lua_State* L, const char* key, double v) {
+  lua_pushnumber(L, v);
+  lua_setfield(L, -2, key);
+}
+
+// { method, dimension, slope, intercept, error, points = { { step, x, y }, ... } }
+void push_dimension(lua_State* L, const char* method, const analysis::Dimension& d) {
+  lua_createtable(L, 0, 6);
+  lua_pushstring(L, method);
+  lua_setfield(L, -2, "method");
+  set_number(L, "dimension", d.dimension);
+  set_number(L, "slope", d.fit.slope);
+  set_number(L, "intercept", d.fit.intercept);
+  set_number(L, "error", d.fit.error);
+  lua_createtable(L, static_cast<int>(d.steps.size()), 0);
+  for (std::size_t i = 0; i < d.steps.size(); ++i) {
+    lua_createtable(L, 0, 3);
+    lua_pushinteger(L, d.steps[i]);
+    lua_setfield(L, -2, "step");
+    set_number(L, "x", d.fit.x[i]);
+    set_number(L, "y", d.fit.y[i]);
+    lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+  }
+  lua_setfield(L, -2, "points");
+}
+
+// The default last box step: boxes no smaller than the curve's mean segment, at most 2^11 a side.
+int default_last_box(const Polyline& c, int from) {
+  const double side = std::max(c.bbox().size().x, c.bbox().size().y);
+  const double mean = c.segments() > 0 ? c.length() / static_cast<double>(c.segments()) : side;
+  const double steps = mean > 0 ? std::floor(std::log2(side / mean)) : 11;
+  return static_cast<int>(std::clamp(steps, from + 1.0, 11.0));
+}
+
+int dimension(lua_State* L) {
+  return call_kernel(L, "dimension", [&] {
+    const Held<Polyline> c = held_curve(L, 1, "argument 1 (the curve)");
+    Options o(L, 2);
+    const int method = o.enumeration("method", {"length", "box"}, 0);
+    const int from = static_cast<int>(o.integer("from", method == 0 ? 0 : 1, 0, method == 0 ? 40 : 11));
+    const int to = static_cast<int>(
+        o.integer("to", method == 0 ? -1 : default_last_box(*c, from), method == 0 ? -1 : 0, method == 0 ? 40 : 11));
+    o.finish();
+    if (method == 0) {
+      push_dimension(L, "length", analysis::length_scaling(*c, from, to));
+    } else {
+      push_dimension(L, "box", analysis::box_counting(*c, from, to, RunContext::of(L)));
+    }
+    return 1;
+  });
+}
+
+}  // namespace
+
+void open_analysis(lua_State* L) { lua_register(L, "dimension", dimension); }
+
+}  // namespace selfsim::interp

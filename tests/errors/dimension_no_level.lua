@@ -1,0 +1,2 @@
+local c = polyline { {0,0}, {1,0}, {1,1} }
+local d = dimension(c)
