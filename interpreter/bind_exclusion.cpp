@@ -10,6 +10,7 @@
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
 #include "interpreter/run_context.h"
+#include "kernels/exclusion/discs.h"
 #include "kernels/exclusion/exclusion_curve.h"
 
 namespace selfsim::interp {
@@ -80,10 +81,30 @@ int exclusion_curve(lua_State* L) {
   });
 }
 
+// exclusion.discs(curve, { radius, factor, level, samples }) -> Curve: Figure 4's exclusion discs.
+int exclusion_discs(lua_State* L) {
+  return call_kernel(L, "exclusion.discs", [&] {
+    const Held<Polyline> c = held_curve(L, 1, "argument 1 (an exclusion curve)");
+    Options o(L, 2);
+    o.require("radius", "the curve's first exclusion radius, e.g. radius = 0.1");
+    exclusion::DiscOptions opt;
+    opt.radius = o.number("radius", opt.radius);
+    opt.factor = o.number("factor", opt.factor);
+    opt.level = static_cast<int>(o.integer("level", opt.level, 1, 40));
+    opt.samples = static_cast<int>(o.integer("samples", opt.samples, 3, 4096));
+    o.finish();
+    push_curve(L, with_budget(L, [&](const PointBudget& b) {
+                 opt.budget = b;
+                 return exclusion::exclusion_discs(*c, opt, RunContext::of(L));
+               }));
+    return 1;
+  });
+}
+
 }  // namespace
 
 void open_exclusion(lua_State* L) {
-  const luaL_Reg functions[] = {{"curve", exclusion_curve}, {nullptr, nullptr}};
+  const luaL_Reg functions[] = {{"curve", exclusion_curve}, {"discs", exclusion_discs}, {nullptr, nullptr}};
   luaL_newlib(L, functions);
   lua_setglobal(L, "exclusion");
 }

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "kernels/exclusion/discs.h"
 #include "kernels/geom/error.h"
 #include "kernels/geom/segment2.h"
 
@@ -193,4 +194,32 @@ TEST(ExclusionCurve, BadStartsAndOptionsAreRefusedByName) {
   o.levels = 30;
   o.budget.limit = 1e6;
   EXPECT_NE(error_of(square, Polyline::single({{0.1, 0.1}, {0.9, 0.9}}), o).find("--max-points"), std::string::npos);
+}
+
+TEST(ExclusionCurve, DiscsHaveEachPointsRadius) {
+  const Region square({unit_square});
+  CurveOptions o;
+  o.levels = 3;
+  o.radius = 0.1;
+  o.factor = 0.5;
+  const CurveResult r = run(square, Polyline::single({{0, 0}, {1, 1}}), o);
+  DiscOptions d;
+  d.radius = 0.1;
+  d.factor = 0.5;
+  d.samples = 12;
+  const Polyline discs = exclusion_discs(r.curve, d, no_progress());
+  ASSERT_EQ(discs.paths(), 7u);  // 1 + 2 + 4 points made at levels 1..3
+  const Field* made = r.curve.point_fields.find("level");
+  std::size_t disc = 0;
+  for (std::size_t i = 0; i < r.curve.points.size(); ++i) {
+    const int l = static_cast<int>(made->at(i));
+    if (l < 1) continue;
+    const auto p = discs.path(disc++);
+    ASSERT_EQ(p.size(), 13u);
+    EXPECT_EQ(p.front(), p.back());
+    for (Vec2 q : p) EXPECT_NEAR(norm(q - r.curve.points[i]), 0.1 * std::pow(0.5, l - 1), 1e-12);
+  }
+  d.level = 2;
+  EXPECT_EQ(exclusion_discs(r.curve, d, no_progress()).paths(), 2u);
+  EXPECT_THROW(exclusion_discs(Polyline::single({{0, 0}, {1, 1}}), d, no_progress()), Error);  // no level field
 }

@@ -1,0 +1,3 @@
+local square = polygon { {0,0}, {1,0}, {1,1}, {0,1} }
+local c = exclusion.curve { region = square, start = polyline { {0,0}, {1,1} }, radius = 0.1, levels = 2 }
+local d = exclusion.discs(c, { radius = 0.1, samples = 2 })
