@@ -27,6 +27,7 @@ constexpr double working_points_per_point = 12;
 
 struct Segment {
   Vec2 u, v;
+  std::uint32_t from = none, to = none;  // the curve's vertices at u and v (none for the boundary's)
   bool alive = true;
   std::uint32_t seen = 0;  // the query that last visited it (a grid lists a segment in several cells)
 };
@@ -50,8 +51,10 @@ class Curves {
 
  private:
   Reach reach(const SplitFrame& f, double r, std::uint32_t v);
-  void limit(const SplitFrame& f, std::uint32_t id, std::uint32_t self, double r, Reach& limits) const;
-  std::uint32_t add(Vec2 u, Vec2 v);
+  void limit(const SplitFrame& f, std::uint32_t id, std::uint32_t self, double r, Reach& limits);
+  std::uint32_t add(Vec2 u, Vec2 v, std::uint32_t from = none, std::uint32_t to = none);
+  // Whether vertex x's own terms are still to be measured in this query (a vertex ends two segments).
+  bool first_visit(std::uint32_t x);
 
   const Region& region_;
   const CurveOptions& opt_;
@@ -64,7 +67,8 @@ class Curves {
   std::vector<Segment> segments_;
   SegmentGrid grid_;
   std::uint32_t query_ = 0;
-  double far_;  // no point moves farther than this: the region's size
+  std::vector<std::uint32_t> vertex_seen_;  // the query that last measured each vertex's terms
+  double far_;                              // no point moves farther than this: the region's size
 };
 
 Curves::Curves(const Region& region, const Polyline& start, const CurveOptions& opt, double points)
@@ -93,19 +97,23 @@ Curves::Curves(const Region& region, const Polyline& start, const CurveOptions& 
   }
 }
 
-std::uint32_t Curves::add(Vec2 u, Vec2 v) {
+std::uint32_t Curves::add(Vec2 u, Vec2 v, std::uint32_t from, std::uint32_t to) {
   const auto id = static_cast<std::uint32_t>(segments_.size());
-  segments_.push_back({u, v});
+  segments_.push_back({u, v, from, to});
   if (!opt_.brute_force) grid_.insert(id, u, v);
   return id;
 }
 
 void Curves::index(double cell) {
   segments_.clear();
+  // This level's segments, then two for each split: no reallocation while the level runs.
+  segments_.reserve(region_.edges() + 3 * at_.size());
   grid_ = SegmentGrid(region_.bbox(), cell);
   query_ = 0;
   for (std::size_t e = 0; e < region_.edges(); ++e) add(region_.edge_start(e), region_.edge_end(e));
-  for (std::uint32_t v = 0; v < at_.size(); ++v) out_[v] = next_[v] == none ? none : add(at_[v], at_[next_[v]]);
+  for (std::uint32_t v = 0; v < at_.size(); ++v)
+    out_[v] = next_[v] == none ? none : add(at_[v], at_[next_[v]], v, next_[v]);
+  vertex_seen_.assign(at_.size(), 0);
 }
 
 double Curves::mean_length() const {
@@ -115,15 +123,23 @@ double Curves::mean_length() const {
   return count > 0 ? length / count : 0;
 }
 
-void Curves::limit(const SplitFrame& f, std::uint32_t id, std::uint32_t self, double r, Reach& limits) const {
+bool Curves::first_visit(std::uint32_t x) {
+  if (x == none) return true;
+  if (vertex_seen_[x] == query_) return false;
+  vertex_seen_[x] = query_;
+  return true;
+}
+
+void Curves::limit(const SplitFrame& f, std::uint32_t id, std::uint32_t self, double r, Reach& limits) {
   const Segment& s = segments_[id];
   if (!s.alive || id == self) return;
-  // Once both sides are below the stuck threshold the point stays at the midpoint, whatever else is near.
-  if (limits.positive < stuck_fraction * f.h && limits.negative < stuck_fraction * f.h) return;
-  if (opt_.exclusion == Mode::exact)
-    limit_exact(f, s.u, s.v, r, limits);
-  else
+  if (opt_.exclusion == Mode::vertex) {
     limit_vertex(f, s.u, s.v, r, limits);
+    return;
+  }
+  // Brute force measures every term of every segment; the grid's queries measure each vertex's once.
+  const bool at_u = opt_.brute_force || first_visit(s.from), at_v = opt_.brute_force || first_visit(s.to);
+  limit_exact(f, s.u, s.v, r, limits, at_u, at_v);
 }
 
 // Whether segment s is farther than r from the quadrilateral a, p(positive), b, p(-negative), which holds
@@ -135,11 +151,14 @@ bool apart(const SplitFrame& f, const Segment& s, double positive, double negati
   if ((su > f.h + r && sv > f.h + r) || (su < -f.h - r && sv < -f.h - r)) return true;
   if ((tu > positive + r && tv > positive + r) || (tu < -negative - r && tv < -negative - r)) return true;
   // Beyond one of the diamond's four edges by more than r: the edge from (±h, 0) to (0, ±height) has
-  // outward normal (height, h) up to signs, scaled by 1 / sqrt(height² + h²).
+  // outward normal (height, h) up to signs; compared squared, so without a square root.
   for (int side = 0; side < 4; ++side) {
     const double sx = side & 1 ? -1 : 1, height = side & 2 ? negative : positive, sy = side & 2 ? -1 : 1;
-    const double len = std::sqrt(height * height + f.h * f.h);
-    auto beyond = [&](double s0, double t0) { return (height * sx * s0 + f.h * sy * t0 - f.h * height) / len > r; };
+    const double limit = r * r * (height * height + f.h * f.h);
+    auto beyond = [&](double s0, double t0) {
+      const double d = height * sx * s0 + f.h * sy * t0 - f.h * height;
+      return d > 0 && d * d > limit;
+    };
     if (beyond(su, tu) && beyond(sv, tv)) return true;
   }
   return false;
@@ -160,16 +179,19 @@ Reach Curves::reach(const SplitFrame& f, double r, std::uint32_t v) {
   const std::uint32_t before = prev_[v], after = next_[v];
   if (before != none) chain[0] = out_[before], chain[1] = prev_[before] != none ? out_[prev_[before]] : none;
   if (out_[after] != none) chain[2] = out_[after], chain[3] = out_[next_[after]];
+  // Segments measured in a smaller box keep their limits when the box grows; only those not measured yet
+  // (the new ones, and those the diamond test set aside for the smaller box) are looked at again.
+  ++query_;
   for (double t = std::max(f.h, r);; t *= 2) {
     BBox2 box;
     for (Vec2 q : {f.a, f.b, f.at(t), f.at(-t)}) box.add(q);
-    limits = Reach{};
-    ++query_;
     auto visit = [&](std::uint32_t id) {
+      // Once both sides are below the stuck threshold the point stays at the midpoint, whatever else is near.
+      if (limits.positive < stuck_fraction * f.h && limits.negative < stuck_fraction * f.h) return;
       Segment& s = segments_[id];
-      if (s.seen == query_) return;
+      if (s.seen == query_ || apart(f, s, std::min(limits.positive, t), std::min(limits.negative, t), r)) return;
       s.seen = query_;
-      if (!apart(f, s, std::min(limits.positive, t), std::min(limits.negative, t), r)) limit(f, id, self, r, limits);
+      limit(f, id, self, r, limits);
     };
     for (std::uint32_t id : chain)
       if (id != none && id != self) visit(id);
@@ -198,8 +220,9 @@ std::uint32_t Curves::split(std::uint32_t v, double r, int level, LevelReport& r
   prev_.push_back(v);
   prev_[w] = p;
   segments_[out_[v]].alive = false;
-  out_[v] = add(at_[v], at_[p]);
-  out_.push_back(add(at_[p], at_[w]));
+  out_[v] = add(at_[v], at_[p], v, p);
+  out_.push_back(add(at_[p], at_[w], p, w));
+  vertex_seen_.push_back(0);
   return p;
 }
 
@@ -242,9 +265,9 @@ void grow_breadth(Curves& c, const CurveOptions& opt, double total_splits, Progr
   for (int level = 1; level <= opt.levels; ++level, r *= opt.factor) {
     const auto begun = std::chrono::steady_clock::now();
     LevelReport report;
-    // Cells about the radius or the segments' length, whichever is larger, and not so small that a
-    // segment crossing the region fills millions of them.
-    c.index(std::max({r, c.mean_length(), 1e-6 * opt.radius}));
+    // Cells of 1.5 times the radius or the segments' mean length, whichever is larger (measured fastest
+    // among 0.5 to 2 times), and not so small that a segment crossing the region fills millions of them.
+    c.index(1.5 * std::max({r, c.mean_length(), 1e-6 * opt.radius}));
     const bool backwards = opt.scan == Scan::alternate && level % 2 == 0;
     for (std::size_t q = 0; q < c.curves(); ++q) {
       const std::size_t i = backwards ? c.curves() - 1 - q : q;

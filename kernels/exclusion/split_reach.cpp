@@ -109,7 +109,7 @@ void Reach::block(Interval violated) {
   }
 }
 
-void limit_exact(const SplitFrame& f, Vec2 u, Vec2 v, double r, Reach& reach) {
+void limit_exact(const SplitFrame& f, Vec2 u, Vec2 v, double r, Reach& reach, bool u_terms, bool v_terms) {
   const Local U = local(f, u), V = local(f, v);
   // Beyond the moves still allowed by more than r, a point is too far to matter (the shortcut only skips
   // work: an empty set changes nothing).
@@ -121,7 +121,7 @@ void limit_exact(const SplitFrame& f, Vec2 u, Vec2 v, double r, Reach& reach) {
   for (int k = 0; k < (u == v ? 1 : 2); ++k) {
     const Vec2 w = k == 0 ? u : v;
     const Local W = k == 0 ? U : V;
-    if (w == f.a || w == f.b || beyond(W)) continue;
+    if (!(k == 0 ? u_terms : v_terms) || w == f.a || w == f.b || beyond(W)) continue;
     for (const double sigma : {f.h + W.s, f.h - W.s}) {
       // Farther than r from every segment from that end (behind it, past the axis, or beside the fan).
       if (sigma < -r || sigma > f.h + r || outside_fan(f.h, sigma, W, reach.positive, reach.negative, r)) continue;

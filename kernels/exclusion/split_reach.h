@@ -46,8 +46,10 @@ struct Reach {
   void block(Interval violated);
 };
 
-// Narrows `reach` by what obstacle segment u-v (u == v: a point) allows with radius r, exactly.
-void limit_exact(const SplitFrame& f, Vec2 u, Vec2 v, double r, Reach& reach);
+// Narrows `reach` by what obstacle segment u-v (u == v: a point) allows with radius r, exactly. The terms
+// of an end whose flag is false are left out: a caller that has measured that point already (it ends the
+// neighbouring segment too) saves the work.
+void limit_exact(const SplitFrame& f, Vec2 u, Vec2 v, double r, Reach& reach, bool u_terms = true, bool v_terms = true);
 
 // Narrows `reach` by what obstacle segment u-v allows under the original program's rules.
 void limit_vertex(const SplitFrame& f, Vec2 u, Vec2 v, double r, Reach& reach);
