@@ -205,7 +205,8 @@ std::uint32_t Curves::split(std::uint32_t v, double r, int level, LevelReport& r
   const SplitFrame f(at_[v], at_[w]);
   const Reach limits = reach(f, r, v);
   double t = limits.negative > limits.positive * (1 + 1e-9) ? -limits.negative : limits.positive;
-  if (!std::isfinite(t)) throw Error("exclusion curve: a point found nothing to stop it (the region is not closed)");
+  if (!std::isfinite(t))
+    throw Error("a split found nothing to stop its point (a fault in selfsim: please report the recipe)");
   t *= 1 - 1e-9;  // a rounding short of the limit, so that the radius still holds once the point is stored
   ++report.splits;
   if (std::abs(t) < stuck_fraction * f.h) {
@@ -342,22 +343,66 @@ double working_size(const Polyline& start, int levels) {
   return curve_size(start, levels) * (1 + working_points_per_point);
 }
 
+namespace {
+
+// The region and starts moved to the origin and scaled by a power of two to a size about 1: the closed-form
+// limits square coordinates up to four times over, which would overflow or underflow far from that size.
+struct Normalised {
+  Vec2 centre;
+  double scale;
+  Vec2 to(Vec2 p) const { return scale * (p - centre); }
+  Vec2 from(Vec2 q) const { return (1 / scale) * q + centre; }
+};
+
+Normalised normalised(const Region& region) {
+  const BBox2 box = region.bbox();
+  const double side = std::max(box.size().x, box.size().y);
+  return {0.5 * (box.min + box.max), std::ldexp(1.0, -std::ilogb(side))};
+}
+
+}  // namespace
+
 CurveResult exclusion_curve(const Region& region, const Polyline& start, const CurveOptions& opt, Progress& progress) {
   opt.validate();
   const double points = curve_size(start, opt.levels);
   check_budget(working_size(start, opt.levels), opt.budget,
                "levels = " + std::to_string(opt.levels) + " (" + count_text(points) + " curve points, each " +
                    count_text(1 + working_points_per_point) + " budget points with its working memory)");
-  check_start(region, start);
+  const Normalised n = normalised(region);
+  std::vector<std::vector<Vec2>> rings;
+  for (const auto& ring : region.rings()) {
+    rings.emplace_back();
+    for (Vec2 p : ring) rings.back().push_back(n.to(p));
+  }
+  const Region local(std::move(rings));
+  Polyline local_start = start;
+  for (Vec2& p : local_start.points) p = n.to(p);
+  check_start(local, local_start, start);
+  // The last level's radius must stay well above rounding at the region's size.
+  const double last = opt.radius * std::pow(opt.factor, std::max(opt.levels - 1, 0)) * n.scale;
+  if (opt.levels > 0 && !(last >= 1e-12))
+    throw Error("option 'radius' falls to " + number_text(last / n.scale) + " at level " + std::to_string(opt.levels) +
+                " (factor " + number_text(opt.factor) + "), below 1e-12 of the region's size: raise 'radius' or " +
+                "'factor', or lower 'levels'");
+  CurveOptions local_opt = opt;
+  local_opt.radius = opt.radius * n.scale;
   progress.start("exclusion curve");
-  Curves c(region, start, opt, points);
+  Curves c(local, local_start, local_opt, points);
   CurveResult result;
   const double splits = points - static_cast<double>(start.points.size());
   if (opt.order == Order::breadth)
-    grow_breadth(c, opt, splits, progress, result.levels);
+    grow_breadth(c, local_opt, splits, progress, result.levels);
   else
-    grow_depth(c, opt, splits, progress, result.levels);
+    grow_depth(c, local_opt, splits, progress, result.levels);
   result.curve = c.result();
+  // Back to the caller's coordinates, the start points exactly as given.
+  const Field* made = result.curve.point_fields.find("level");
+  for (std::size_t i = 0; i < result.curve.paths(); ++i) {
+    const auto given = start.path(i);
+    std::size_t k = 0;
+    for (std::size_t j = result.curve.path_begin(i); j < result.curve.path_ends[i]; ++j)
+      result.curve.points[j] = made->at(j) == 0 ? given[k++] : n.from(result.curve.points[j]);
+  }
   if (!result.curve.finite()) throw Error("the exclusion curve has non-finite points");
   return result;
 }

@@ -1,6 +1,7 @@
 #include "kernels/exclusion/start_check.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -36,31 +37,50 @@ std::string segment_name(const StartSegment& s) {
 
 bool closed_path(std::span<const Vec2> p) { return p.size() >= 4 && p.front() == p.back(); }
 
-void check_start(const Region& region, const Polyline& start) {
+// Whether segment a-b meets the boundary anywhere but at an end that may touch it (a_may, b_may), exactly:
+// the quick test by distance is too coarse for a short segment or one at a shallow angle to an edge.
+bool meets_boundary(const Region& region, Vec2 a, Vec2 b, bool a_may, bool b_may, double tiny) {
+  for (std::size_t e = 0; e < region.edges(); ++e) {
+    const Vec2 p = region.edge_start(e), q = region.edge_end(e);
+    if (!segments_meet(a, b, p, q) && segment_distance(a, b, p, q) > tiny) continue;
+    const bool at_a = a_may && point_segment_distance(a, p, q) <= tiny;
+    const bool at_b = b_may && point_segment_distance(b, p, q) <= tiny;
+    if (!at_a && !at_b) return true;
+    // Touching at an allowed end is fine unless the segment runs along the edge from there.
+    const Vec2 other = at_a ? b : a;
+    if (point_segment_distance(other, p, q) <= tiny) return true;
+    const double along = std::abs(cross(q - p, other - (at_a ? a : b))) / norm(q - p);
+    if (along <= tiny) return true;
+  }
+  return false;
+}
+
+void check_start(const Region& region, const Polyline& start, const Polyline& shown) {
   if (start.paths() == 0) throw Error("the start has no curve");
   const double tiny = 1e-12 * norm(region.bbox().size());
   std::vector<StartSegment> segments;
   for (std::size_t i = 0; i < start.paths(); ++i) {
-    const auto p = start.path(i);
+    const auto p = start.path(i), q = shown.path(i);
     const std::string name = "start curve " + std::to_string(i + 1);
     if (p.size() < 2) throw Error(name + " needs at least one segment (two points)");
     const bool loop = closed_path(p);
     for (std::size_t k = 0; k < p.size(); ++k) {
       if (!is_finite(p[k])) throw Error(name + "'s point " + std::to_string(k + 1) + " is not finite");
       if (!region.contains(p[k]))
-        throw Error(name + "'s point " + std::to_string(k + 1) + " " + point_text(p[k]) + " lies outside the region");
+        throw Error(name + "'s point " + std::to_string(k + 1) + " " + point_text(q[k]) + " lies outside the region");
       // Only an open curve's two ends may lie on the boundary.
       const bool end = !loop && (k == 0 || k + 1 == p.size());
       if (!end && region.distance(p[k]) <= tiny)
-        throw Error(name + "'s point " + std::to_string(k + 1) + " " + point_text(p[k]) +
+        throw Error(name + "'s point " + std::to_string(k + 1) + " " + point_text(q[k]) +
                     " lies on the region's boundary (a curve may touch it only at its own two ends)");
       if (k + 1 == p.size()) break;
       if (p[k] == p[k + 1])
         throw Error(name + "'s segment " + std::to_string(k + 1) + " has zero length (its points " +
-                    std::to_string(k + 1) + " and " + std::to_string(k + 2) + " are both " + point_text(p[k]) + ")");
+                    std::to_string(k + 1) + " and " + std::to_string(k + 2) + " are both " + point_text(q[k]) + ")");
       // The segment without its ends must stay off the boundary.
       const Vec2 d = p[k + 1] - p[k];
-      if (region.distance(p[k] + 1e-9 * d, p[k + 1] - 1e-9 * d) <= tiny)
+      if (region.distance(p[k] + 1e-9 * d, p[k + 1] - 1e-9 * d) <= tiny &&
+          meets_boundary(region, p[k], p[k + 1], !loop && k == 0, !loop && k + 2 == p.size(), tiny))
         throw Error(name + "'s segment " + std::to_string(k + 1) +
                     " crosses or touches the region's boundary (a curve may touch it only at its own two ends)");
       segments.push_back({p[k], p[k + 1], i, k});

@@ -14,6 +14,7 @@ namespace selfsim::exclusion {
 // A path that ends where it starts (at least three segments) is a closed curve.
 bool closed_path(std::span<const Vec2> p);
 
-void check_start(const Region& region, const Polyline& start);
+// `shown`: the same start in the caller's coordinates, for messages (the checks run on `start`).
+void check_start(const Region& region, const Polyline& start, const Polyline& shown);
 
 }  // namespace selfsim::exclusion

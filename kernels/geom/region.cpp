@@ -53,6 +53,8 @@ Region::Region(std::vector<std::vector<Vec2>> rings) {
       ends_.push_back(ring[(i + 1) % ring.size()]);
     }
   }
+  if (!(std::isfinite(box_.size().x) && std::isfinite(box_.size().y)))
+    throw Error("the region's extent overflows (coordinates up to about 1e300 in size are supported)");
   rings_ = std::move(rings);
   grid_ = SegmentGrid(box_, cell_size(starts_, ends_));
   for (std::size_t e = 0; e < starts_.size(); ++e) grid_.insert(static_cast<std::uint32_t>(e), starts_[e], ends_[e]);
@@ -86,6 +88,14 @@ Region::Region(std::vector<std::vector<Vec2>> rings) {
     for (std::size_t s = 1; s < r; ++s)
       if (inside_ring(rings_[s], rings_[r][0]) || inside_ring(rings_[r], rings_[s][0]))
         throw Error(ring_name(r) + " and " + ring_name(s) + " overlap: holes must lie apart");
+  }
+  // A ring enclosing no area (all its points on one line) is a slit, not a region (a simple ring
+  // of three or more edges can enclose none only by lying on one line, which the crossing test lets through).
+  for (std::size_t r = 0; r < rings_.size(); ++r) {
+    double twice_area = 0;
+    const Vec2 o = rings_[r][0];
+    for (std::size_t i = 1; i + 1 < rings_[r].size(); ++i) twice_area += cross(rings_[r][i] - o, rings_[r][i + 1] - o);
+    if (twice_area == 0) throw Error(ring_name(r) + " encloses no area (its points lie on one line)");
   }
 }
 

@@ -223,3 +223,35 @@ TEST(ExclusionCurve, DiscsHaveEachPointsRadius) {
   EXPECT_EQ(exclusion_discs(r.curve, d, no_progress()).paths(), 2u);
   EXPECT_THROW(exclusion_discs(Polyline::single({{0, 0}, {1, 1}}), d, no_progress()), Error);  // no level field
 }
+
+TEST(ExclusionCurve, AnyScaleAndPlaceStaysSimple) {
+  // The closed-form limits square coordinates several times over: the kernel works at the region's own size.
+  for (const double scale : {1e-150, 1e-55, 1e55, 1e150})
+    for (const double offset : {0.0, 1e8}) {
+      const Vec2 o{offset * scale, offset * scale};
+      std::vector<Vec2> ring;
+      for (Vec2 p : unit_square) ring.push_back(o + scale * p);
+      const Region square({ring});
+      CurveOptions opt;
+      opt.levels = 8;
+      opt.radius = 0.1 * scale;
+      const CurveResult r = run(square, Polyline::single({o, o + Vec2{scale, scale}}), opt);
+      expect_simple(r.curve);
+      expect_inside(r.curve, square);
+      EXPECT_EQ(r.curve.points.front(), o);  // start points come back exactly as given
+      EXPECT_GT(r.curve.length(), 10 * scale);
+    }
+}
+
+TEST(ExclusionCurve, StartsTouchingTheBoundaryOnlyAtTheirEndsAreAccepted) {
+  // A short stub standing on an edge, and the diagonal of a long thin rectangle (a shallow angle to its
+  // edges): the distance test alone would call both touching.
+  const Region square({unit_square});
+  CurveOptions o;
+  o.levels = 3;
+  EXPECT_EQ(error_of(square, Polyline::single({{0.5, 0}, {0.5, 1e-4}, {0.6, 0.5}}), o), "");
+  const Region thin({{{0, 0}, {1000, 0}, {1000, 1}, {0, 1}}});
+  o.radius = 0.05;
+  EXPECT_EQ(error_of(thin, Polyline::single({{0, 0}, {1000, 1}}), o), "");
+  EXPECT_NE(error_of(square, Polyline::single({{0.5, 0}, {0.7, 0}, {0.6, 0.5}}), o), "");  // along an edge
+}
