@@ -38,7 +38,7 @@ bool inside_ring(const std::vector<Vec2>& ring, Vec2 p) {
 
 }  // namespace
 
-Region::Region(std::vector<std::vector<Vec2>> rings) {
+void Region::build(std::vector<std::vector<Vec2>> rings) {
   if (rings.empty()) throw Error("a region needs an outer ring of at least 3 points");
   for (std::size_t r = 0; r < rings.size(); ++r) {
     auto& ring = rings[r];
@@ -58,7 +58,23 @@ Region::Region(std::vector<std::vector<Vec2>> rings) {
   rings_ = std::move(rings);
   grid_ = SegmentGrid(box_, cell_size(starts_, ends_));
   for (std::size_t e = 0; e < starts_.size(); ++e) grid_.insert(static_cast<std::uint32_t>(e), starts_[e], ends_[e]);
+}
 
+Region::Region(std::vector<std::vector<Vec2>> rings) {
+  build(std::move(rings));
+  check_rings();
+}
+
+Region Region::moved(Vec2 centre, double scale) const {
+  std::vector<std::vector<Vec2>> rings = rings_;
+  for (auto& ring : rings)
+    for (Vec2& p : ring) p = scale * (p - centre);
+  Region r;
+  r.build(std::move(rings));
+  return r;
+}
+
+void Region::check_rings() const {
   // Rings simple and apart: no two edges meet unless they follow each other around one ring.
   std::vector<std::size_t> ring_of, first_of;
   for (std::size_t r = 0, e = 0; r < rings_.size(); ++r) {

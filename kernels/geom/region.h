@@ -21,6 +21,10 @@ class Region {
   // (naming the two edges), a hole outside the outer ring, rings that cross or touch each other.
   explicit Region(std::vector<std::vector<Vec2>> rings);
 
+  // This region with every point p moved to scale·(p − centre), without checking its rings again (a
+  // scale by a power of two keeps them as they were; callers work at a convenient size).
+  Region moved(Vec2 centre, double scale) const;
+
   // True when p is inside the outer ring and outside every hole (a point on the boundary counts as inside).
   bool contains(Vec2 p) const;
   // Distance from p to the nearest boundary edge.
@@ -36,6 +40,12 @@ class Region {
   BBox2 bbox() const { return box_; }
 
  private:
+  Region() = default;
+  // Rings, edges, box and grid, refusing only what they cannot be built from (too few points, non-finite,
+  // zero-length edges, an overflowing extent).
+  void build(std::vector<std::vector<Vec2>> rings);
+  // The rings simple, apart, holes inside the outer ring and each enclosing some area.
+  void check_rings() const;
   double distance_within(const BBox2& box, Vec2 a, Vec2 b) const;
 
   std::vector<std::vector<Vec2>> rings_;
