@@ -40,6 +40,10 @@ Curves::Curves(const Region& region, const Polyline& start, const CurveOptions& 
   prev_.reserve(at_.capacity());
   out_.reserve(at_.capacity());
   level_.reserve(at_.capacity());
+  // Room for the most segments listed at once (breadth first: a level's and two for each split, 1.5 a
+  // point; depth first: two for each split, 2 a point), reserved once so that every level reuses the same
+  // memory instead of touching fresh pages (page faults were a tenth of a 2^20-segment run).
+  segments_.reserve(region.edges() + 2 * at_.capacity());
   for (std::size_t i = 0; i < start.paths(); ++i) {
     const auto p = start.path(i);
     const bool loop = closed_path(p);
@@ -66,9 +70,37 @@ std::uint32_t Curves::add(Vec2 u, Vec2 v, std::uint32_t from, std::uint32_t to) 
   return id;
 }
 
+void Curves::renumber() {
+  std::vector<std::uint32_t> order;  // old numbers, in their new order
+  order.reserve(at_.size());
+  for (std::size_t i = 0; i < curves(); ++i) {
+    const std::vector<std::uint32_t> c = chain(i);
+    first_[i] = static_cast<std::uint32_t>(order.size());
+    order.insert(order.end(), c.begin(), c.end());
+  }
+  std::vector<std::uint32_t> to(at_.size());
+  for (std::uint32_t k = 0; k < order.size(); ++k) to[order[k]] = k;
+  // In place, through a copy, so that the vectors keep the capacity reserved for the whole run.
+  auto permute = [&](auto& values) {
+    const auto old = values;
+    for (std::uint32_t k = 0; k < order.size(); ++k) values[k] = old[order[k]];
+  };
+  permute(at_);
+  permute(next_);
+  permute(prev_);
+  permute(level_);
+  for (auto* links : {&next_, &prev_})
+    for (std::uint32_t& x : *links)
+      if (x != none) x = to[x];
+}
+
 void Curves::index(double cell) {
+  // Vertices numbered along their curves, so that a level's splits, taken in that order, find their
+  // vertices and segments near each other in memory.
+  renumber();
   segments_.clear();
-  // This level's segments, then two for each split: no reallocation while the level runs.
+  // This level's segments, then two for each split: no reallocation while the level runs (a no-op when the
+  // run's estimate above holds).
   segments_.reserve(region_.edges() + 3 * at_.size());
   grid_ = SegmentGrid(region_.bbox(), cell);
   query_ = 0;
@@ -102,6 +134,10 @@ void Curves::limit(const SplitFrame& f, std::uint32_t id, std::uint32_t self, do
   // Brute force measures every term of every segment; the grid's queries measure each vertex's once.
   const bool at_u = opt_.brute_force || first_visit(s.from), at_v = opt_.brute_force || first_visit(s.to);
   limit_exact(f, s.u, s.v, r, limits, at_u, at_v);
+  // A side stopped below the stuck threshold can only decide the split by leaving the point at the
+  // midpoint, whatever its exact value: as 0 it lets the terms that only narrow it be skipped.
+  if (limits.positive < stuck_fraction * f.h) limits.positive = 0;
+  if (limits.negative < stuck_fraction * f.h) limits.negative = 0;
 }
 
 // The limits on both sides, from the segments near the split: those within r of where the new segments
@@ -123,8 +159,6 @@ Reach Curves::reach(const SplitFrame& f, double r, std::uint32_t v) {
   // (the new ones, and those the diamond test set aside for the smaller box) are looked at again.
   ++query_;
   for (double t = std::max(f.h, r);; t *= 2) {
-    BBox2 box;
-    for (Vec2 q : {f.a, f.b, f.at(t), f.at(-t)}) box.add(q);
     auto visit = [&](std::uint32_t id) {
       // Once both sides are below the stuck threshold the point stays at the midpoint, whatever else is near.
       if (limits.positive < stuck_fraction * f.h && limits.negative < stuck_fraction * f.h) return;
@@ -135,6 +169,9 @@ Reach Curves::reach(const SplitFrame& f, double r, std::uint32_t v) {
     };
     for (std::uint32_t id : chain)
       if (id != none && id != self) visit(id);
+    // Only where the new segments can still go: the limits found so far bound that too.
+    BBox2 box;
+    for (Vec2 q : {f.a, f.b, f.at(std::min(t, limits.positive)), f.at(-std::min(t, limits.negative))}) box.add(q);
     grid_.visit({box.min - Vec2::all(r), box.max + Vec2::all(r)}, visit);
     if ((limits.positive <= t && limits.negative <= t) || t > far_) return limits;
   }

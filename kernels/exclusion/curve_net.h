@@ -42,6 +42,8 @@ class Curves {
   Polyline result() const;
 
  private:
+  // Numbers the vertices afresh in the order of their curves.
+  void renumber();
   Reach reach(const SplitFrame& f, double r, std::uint32_t v);
   void limit(const SplitFrame& f, std::uint32_t id, std::uint32_t self, double r, Reach& limits);
   std::uint32_t add(Vec2 u, Vec2 v, std::uint32_t from = none, std::uint32_t to = none);

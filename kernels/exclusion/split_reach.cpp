@@ -60,23 +60,27 @@ double start_distance(double h, double sigma, Local w) {
   return std::sqrt(along * along + w.t * w.t);
 }
 
-// Distance from m (the origin) to segment u-v.
-double start_distance(Local u, Local v) {
+// The point of segment u-v nearest m (the origin).
+Local nearest_to_origin(Local u, Local v) {
   const double ds = v.s - u.s, dt = v.t - u.t, len2 = ds * ds + dt * dt;
   const double k = len2 > 0 ? std::clamp(-(u.s * ds + u.t * dt) / len2, 0.0, 1.0) : 0.0;
-  const double s = u.s + k * ds, t = u.t + k * dt;
-  return std::sqrt(s * s + t * t);
+  return {u.s + k * ds, u.t + k * dt};
 }
 
 // One term, whose value where the point starts is d0: its set of t where it is below r, or, when it starts
 // below r (inherited), where it gets smaller than d0, a hair less so that t = 0 stays outside the set.
+// Every term is a distance that changes by at most |t| and can only shrink on the side `toward` (the sign
+// of t; 0: on neither), and not before |t| = `after`: a side already stopped before that is left alone
+// without solving for the set.
 template <class SetFor>
-void term(Reach& reach, double r, double d0, SetFor set_for) {
+void term(Reach& reach, double r, double d0, double toward, double after, SetFor set_for) {
   const double rho = d0 < r ? d0 * (1 - 1e-9) : r;
   if (!(rho > 0)) {  // already touching: no move can be trusted
     reach.positive = reach.negative = 0;
     return;
   }
+  if (toward == 0) return;
+  if ((toward > 0 ? reach.positive : reach.negative) <= std::max(d0 - rho, after)) return;
   reach.block(set_for(rho));
 }
 
@@ -116,8 +120,12 @@ void limit_exact(const SplitFrame& f, Vec2 u, Vec2 v, double r, Reach& reach, bo
   auto beyond = [&](Local w) { return w.t > reach.positive + r || w.t < -reach.negative - r; };
   const bool both_above = U.t > reach.positive + r && V.t > reach.positive + r;
   const bool both_below = U.t < -reach.negative - r && V.t < -reach.negative - r;
-  if (!both_above && !both_below)
-    term(reach, r, start_distance(U, V), [&](double rho) { return capsule_set(U, V, rho); });
+  if (!both_above && !both_below) {
+    // The point's distance to u-v is convex in t with slope -c.t / d0 at t = 0, c the nearest point: it
+    // shrinks only towards c.
+    const Local c = nearest_to_origin(U, V);
+    term(reach, r, std::sqrt(c.s * c.s + c.t * c.t), c.t, 0, [&](double rho) { return capsule_set(U, V, rho); });
+  }
   for (int k = 0; k < (u == v ? 1 : 2); ++k) {
     const Vec2 w = k == 0 ? u : v;
     const Local W = k == 0 ? U : V;
@@ -125,7 +133,12 @@ void limit_exact(const SplitFrame& f, Vec2 u, Vec2 v, double r, Reach& reach, bo
     for (const double sigma : {f.h + W.s, f.h - W.s}) {
       // Farther than r from every segment from that end (behind it, past the axis, or beside the fan).
       if (sigma < -r || sigma > f.h + r || outside_fan(f.h, sigma, W, reach.positive, reach.negative, r)) continue;
-      term(reach, r, start_distance(f.h, sigma, W), [&](double rho) { return shadow_set(f.h, sigma, W, rho); });
+      // Turning the new segment away from w (t of the other sign than w's) keeps every point of it at least
+      // as far from w as the old one's; and while w lies behind the end (sigma < 0) the end stays nearest
+      // until t·w.t reaches h·|sigma|.
+      const double after = sigma < 0 ? f.h * -sigma / std::abs(W.t) : 0;
+      term(reach, r, start_distance(f.h, sigma, W), W.t, after,
+           [&](double rho) { return shadow_set(f.h, sigma, W, rho); });
     }
   }
 }

@@ -59,6 +59,33 @@ TEST(SplitReach, ExactLimitsAreValidAndMaximal) {
   EXPECT_GT(blocked, 1000);  // the sample exercised the limits, not only obstacles too far to matter
 }
 
+// The shortcuts that skip an obstacle, or one of its terms, when the limits found so far already stop both
+// sides before it could: measuring obstacles one after another from given limits must give exactly the
+// smallest of those limits and of each obstacle's own.
+TEST(SplitReach, ObstaclesInTurnGiveTheSmallestOfTheirOwnLimits) {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> coordinate(-1, 1), radius(0.02, 0.4), given(0, 1.5);
+  int narrowed = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const SplitFrame f({coordinate(random), coordinate(random)}, {coordinate(random), coordinate(random)});
+    const double r = radius(random);
+    Reach together{given(random), given(random)};
+    Reach smallest = together;
+    for (int k = 0; k < 4; ++k) {
+      const Vec2 u{coordinate(random), coordinate(random)}, v{coordinate(random), coordinate(random)};
+      Reach own;
+      limit_exact(f, u, v, r, own);
+      smallest = {std::min(smallest.positive, own.positive), std::min(smallest.negative, own.negative)};
+      const Reach before = together;
+      limit_exact(f, u, v, r, together);
+      narrowed += together.positive < before.positive || together.negative < before.negative;
+    }
+    ASSERT_EQ(together.positive, smallest.positive) << "trial " << trial;
+    ASSERT_EQ(together.negative, smallest.negative) << "trial " << trial;
+  }
+  EXPECT_GT(narrowed, 1000);  // the obstacles did narrow given limits, not only fail to reach them
+}
+
 TEST(SplitReach, NeighbourMeetingAtAnEndIsExceptedThere) {
   // The split segment (0,0)-(1,0) and its neighbour from (1,0) up to (1,1): the neighbour's shared end is
   // not a term, so the point moves up until the new segment from b comes within r of the neighbour's other
