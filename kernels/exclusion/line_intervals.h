@@ -40,6 +40,17 @@ inline IntervalSet intersect(const IntervalSet& x, const IntervalSet& y) {
   return out;
 }
 
+// The smallest interval holding x ∩ y, without listing its parts (which may be more than four).
+inline Interval intersect_hull(const IntervalSet& x, const IntervalSet& y) {
+  Interval h;
+  for (int i = 0; i < x.count; ++i)
+    for (int j = 0; j < y.count; ++j) {
+      const Interval part{std::max(x.part[i].lo, y.part[j].lo), std::min(x.part[i].hi, y.part[j].hi)};
+      if (!part.empty()) h = {std::min(h.lo, part.lo), std::max(h.hi, part.hi)};
+    }
+  return h;
+}
+
 // {t : g0 + g1·t > 0}.
 inline IntervalSet positive_linear(double g0, double g1) {
   IntervalSet s;

@@ -67,23 +67,6 @@ Local nearest_to_origin(Local u, Local v) {
   return {u.s + k * ds, u.t + k * dt};
 }
 
-// One term, whose value where the point starts is d0: its set of t where it is below r, or, when it starts
-// below r (inherited), where it gets smaller than d0, a hair less so that t = 0 stays outside the set.
-// Every term is a distance that changes by at most |t| and can only shrink on the side `toward` (the sign
-// of t; 0: on neither), and not before |t| = `after`: a side already stopped before that is left alone
-// without solving for the set.
-template <class SetFor>
-void term(Reach& reach, double r, double d0, double toward, double after, SetFor set_for) {
-  const double rho = d0 < r ? d0 * (1 - 1e-9) : r;
-  if (!(rho > 0)) {  // already touching: no move can be trusted
-    reach.positive = reach.negative = 0;
-    return;
-  }
-  if (toward == 0) return;
-  if ((toward > 0 ? reach.positive : reach.negative) <= std::max(d0 - rho, after)) return;
-  reach.block(set_for(rho));
-}
-
 // Whether w, at sigma in front of an end and w.t along n, is farther than r from every segment from that
 // end to (0, t) with t in [-negative, positive]: beyond one of the two slanted sides of their triangle.
 bool outside_fan(double h, double sigma, Local w, double positive, double negative, double r) {
@@ -102,17 +85,6 @@ SplitFrame::SplitFrame(Vec2 from, Vec2 to) : a(from), b(to), m(0.5 * (from + to)
   h = 0.5 * len;
 }
 
-void Reach::block(Interval violated) {
-  if (violated.empty()) return;
-  if (violated.lo >= 0) {
-    positive = std::min(positive, violated.lo);
-  } else if (violated.hi <= 0) {
-    negative = std::min(negative, -violated.hi);
-  } else {
-    positive = negative = 0;
-  }
-}
-
 void limit_exact(const SplitFrame& f, Vec2 u, Vec2 v, double r, Reach& reach, bool u_terms, bool v_terms) {
   const Local U = local(f, u), V = local(f, v);
   // Beyond the moves still allowed by more than r, a point is too far to matter (the shortcut only skips
@@ -124,7 +96,8 @@ void limit_exact(const SplitFrame& f, Vec2 u, Vec2 v, double r, Reach& reach, bo
     // The point's distance to u-v is convex in t with slope -c.t / d0 at t = 0, c the nearest point: it
     // shrinks only towards c.
     const Local c = nearest_to_origin(U, V);
-    term(reach, r, std::sqrt(c.s * c.s + c.t * c.t), c.t, 0, [&](double rho) { return capsule_set(U, V, rho); });
+    term(reach, r, std::sqrt(c.s * c.s + c.t * c.t), side_of(c.t), 0,
+         [&](double rho) { return capsule_set(U, V, rho); });
   }
   for (int k = 0; k < (u == v ? 1 : 2); ++k) {
     const Vec2 w = k == 0 ? u : v;
@@ -137,7 +110,7 @@ void limit_exact(const SplitFrame& f, Vec2 u, Vec2 v, double r, Reach& reach, bo
       // as far from w as the old one's; and while w lies behind the end (sigma < 0) the end stays nearest
       // until t·w.t reaches h·|sigma|.
       const double after = sigma < 0 ? f.h * -sigma / std::abs(W.t) : 0;
-      term(reach, r, start_distance(f.h, sigma, W), W.t, after,
+      term(reach, r, start_distance(f.h, sigma, W), side_of(W.t), after,
            [&](double rho) { return shadow_set(f.h, sigma, W, rho); });
     }
   }

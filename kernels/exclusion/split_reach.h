@@ -23,7 +23,7 @@
 // disc the split segment already passes through limits nothing.
 #pragma once
 
-#include "kernels/exclusion/line_intervals.h"
+#include "kernels/exclusion/reach.h"
 #include "kernels/geom/vec2.h"
 
 namespace selfsim::exclusion {
@@ -36,14 +36,6 @@ struct SplitFrame {
 
   SplitFrame(Vec2 from, Vec2 to);
   Vec2 at(double t) const { return m + t * n; }
-};
-
-// How far the point may move: t in [0, positive] along n, in [0, negative] along −n.
-struct Reach {
-  double positive = unbounded, negative = unbounded;
-
-  // Stops both sides at the first t of `violated` (a violation around t = 0 stops both at once).
-  void block(Interval violated);
 };
 
 // Narrows `reach` by what obstacle segment u-v (u == v: a point) allows with radius r, exactly. The terms

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "kernels/geom/distance3.h"
+
 namespace selfsim {
 
 namespace {
@@ -12,28 +14,6 @@ namespace {
 // nearest the other, or two edges nearest each other in their interiors; a test of each is the whole
 // distance, coplanar and degenerate cases included. Separating axes first reject, cheaply, nearly every pair
 // that is apart.
-
-Vec3 closest_on_segment(Vec3 p, Vec3 a, Vec3 b) {
-  const Vec3 d = b - a;
-  const double len2 = dot(d, d);
-  if (len2 == 0) return a;
-  return a + std::clamp(dot(p - a, d) / len2, 0.0, 1.0) * d;
-}
-
-Vec3 closest_on_triangle(Vec3 p, const ContactTriangle& t) {
-  if (!t.flat) {
-    const Vec3 q = p - (dot(p - t.v[0], t.n) / dot(t.n, t.n)) * t.n;  // p dropped onto the plane
-    if (t.contains(q)) return q;
-  }
-  // Outside (or flat): the nearest point is on the boundary.
-  Vec3 best = t.v[0];
-  double best2 = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < 3; ++k) {
-    const Vec3 q = closest_on_segment(p, t.v[k], t.v[(k + 1) % 3]);
-    if (dot(p - q, p - q) < best2) best = q, best2 = dot(p - q, p - q);
-  }
-  return best;
-}
 
 // True when a and b's projections on `axis` are more than eps (times the axis's length) apart: then the
 // triangles are too. Only a shortcut: a zero axis separates nothing. Projected from a's first corner, so
@@ -98,9 +78,9 @@ std::optional<Vec3> contact(const ContactTriangle& a, const ContactTriangle& b, 
   }
   const double eps2 = eps * eps;
   for (int k = 0; k < 3; ++k) {
-    const Vec3 qa = closest_on_triangle(a.v[k], b);
+    const Vec3 qa = closest_on_triangle(a.v[k], b.v[0], b.v[1], b.v[2]);
     if (dot(qa - a.v[k], qa - a.v[k]) <= eps2) return 0.5 * (qa + a.v[k]);
-    const Vec3 qb = closest_on_triangle(b.v[k], a);
+    const Vec3 qb = closest_on_triangle(b.v[k], a.v[0], a.v[1], a.v[2]);
     if (dot(qb - b.v[k], qb - b.v[k]) <= eps2) return 0.5 * (qb + b.v[k]);
   }
   for (int i = 0; i < 3; ++i)

@@ -1,0 +1,163 @@
+#include "kernels/exclusion/fan_reach.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "kernels/geom/distance3.h"
+
+namespace selfsim::exclusion {
+
+namespace {
+
+// {t : c0 + c1·t + c2·t² > 0}.
+IntervalSet positive_quadratic(double c0, double c1, double c2) { return negative_quadratic(-c2, -c1 / 2, -c0); }
+
+Interval hull(Interval a, Interval b) {
+  if (a.empty()) return b;
+  if (b.empty()) return a;
+  return {std::min(a.lo, b.lo), std::max(a.hi, b.hi)};
+}
+
+// The pieces of the terms for a point p(t) = t·d (coordinates taken from m, d a unit vector): each is the set
+// of t where the piece comes within rho, as quadratics a·t² + 2b·t + c < 0 and their intersections. A
+// term's set is the hull of its pieces' sets: the pieces cover it, and it is one interval.
+struct Line {
+  Vec3 d;
+
+  // p(t) within rho of point w: |t·d - w|² < rho².
+  Interval point(Vec3 w, double rho) const { return negative_quadratic(1, -dot(d, w), dot(w, w) - rho * rho).hull(); }
+
+  // p(t) within rho of segment u-v's inside, its foot strictly between u and v.
+  Interval segment_inside(Vec3 u, Vec3 v, double rho) const {
+    const Vec3 e = v - u, a = cross(d, e), b = cross(u, e);  // cross(t·d - u, e) = t·a - b
+    const double ee = dot(e, e), de = dot(d, e), ue = dot(u, e);
+    if (!(ee > 0)) return {};
+    const IntervalSet near = negative_quadratic(dot(a, a), -dot(a, b), dot(b, b) - rho * rho * ee);
+    const IntervalSet along = intersect(positive_linear(-ue, de), positive_linear(ee + ue, -de));  // 0 < foot < ee
+    return intersect(near, along).hull();
+  }
+
+  Interval segment(Vec3 u, Vec3 v, double rho) const {
+    return hull(hull(point(u, rho), point(v, rho)), segment_inside(u, v, rho));
+  }
+
+  // p(t) within rho of triangle a, b, c: its edges, or its inside (a flat triangle has none).
+  Interval triangle(Vec3 a, Vec3 b, Vec3 c, double rho) const {
+    const Interval edges = hull(hull(segment(a, b, rho), segment(b, c, rho)), segment(c, a, rho));
+    const Vec3 n = cross(b - a, c - a);
+    const double nn = dot(n, n), longest = std::max({dot(b - a, b - a), dot(c - b, c - b), dot(a - c, a - c)});
+    if (!(nn > 1e-24 * longest * longest)) return edges;
+    // Within rho of the plane, |dot(t·d - a, n)| < rho·|n|, and the foot inside each edge u-v:
+    // dot(cross(v - u, t·d - u), n) > 0.
+    const double dn = dot(d, n), an = dot(a, n), band = rho * std::sqrt(nn);
+    IntervalSet s = intersect(positive_linear(band + an, -dn), positive_linear(band - an, dn));
+    for (const auto& [u, v] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}})
+      s = intersect(s, positive_linear(-dot(cross(v - u, u), n), dot(cross(v - u, d), n)));
+    return hull(edges, s.hull());
+  }
+
+  // w within rho of the segment from static end x to p(t): the shadow of w's ball seen from x.
+  Interval shadow(Vec3 x, Vec3 w, double rho) const {
+    const Vec3 wx = w - x, P = cross(d, wx), Q = cross(x, wx);  // cross(t·d - x, wx) = t·P - Q
+    const double r2 = rho * rho, wd = dot(wx, d), wxx = dot(wx, x);
+    // The line through x and p(t) passes within rho of w: |t·P - Q|² < rho²·|t·d - x|².
+    const IntervalSet line =
+        negative_quadratic(dot(P, P) - r2, -(dot(P, Q) - r2 * dot(d, x)), dot(Q, Q) - r2 * dot(x, x));
+    // w's foot strictly between x and p(t): 0 < dot(wx, t·d - x) < |t·d - x|².
+    const IntervalSet foot_after_x = positive_linear(-wxx, wd);
+    const IntervalSet foot_before_p = positive_quadratic(dot(x, x) + wxx, -(2 * dot(d, x) + wd), 1);
+    return hull(point(w, rho), intersect_hull(intersect(line, foot_after_x), foot_before_p));
+  }
+
+  // w within rho of the inside of triangle x, y, p(t), its foot strictly inside.
+  Interval face(Vec3 x, Vec3 y, Vec3 w, double rho) const {
+    const Vec3 yx = y - x, wx = w - x, wy = w - y;
+    const Vec3 n0 = -cross(yx, x), n1 = cross(yx, d);  // the normal cross(yx, t·d - x) = n0 + t·n1
+    const double r2 = rho * rho, w0 = dot(wx, n0), w1 = dot(wx, n1);
+    // Within rho of the plane: (w0 + t·w1)² < rho²·|n0 + t·n1|².
+    const IntervalSet plane =
+        negative_quadratic(w1 * w1 - r2 * dot(n1, n1), w0 * w1 - r2 * dot(n0, n1), w0 * w0 - r2 * dot(n0, n0));
+    // The foot inside each edge, x-y, y-p, p-x: dot(cross(edge, w - edge start), n) > 0.
+    const Vec3 c = cross(yx, wx);
+    const IntervalSet inside_xy = positive_linear(dot(c, n0), dot(c, n1));
+    const Vec3 k0 = -cross(y, wy), k1 = cross(d, wy);  // cross(t·d - y, wy)
+    const IntervalSet inside_yp = positive_quadratic(dot(k0, n0), dot(k0, n1) + dot(k1, n0), dot(k1, n1));
+    const Vec3 j0 = cross(x, wx), j1 = -cross(d, wx);  // cross(x - t·d, w - p) = cross(x - t·d, wx)
+    const IntervalSet inside_px = positive_quadratic(dot(j0, n0), dot(j0, n1) + dot(j1, n0), dot(j1, n1));
+    return intersect_hull(intersect(intersect(plane, inside_xy), inside_yp), inside_px);
+  }
+
+  // Corner term: w within rho of fan triangle x, y, p(t) (x and y are static, and never within rho).
+  Interval corner(Vec3 x, Vec3 y, Vec3 w, double rho) const {
+    return hull(face(x, y, w, rho), hull(shadow(x, w, rho), shadow(y, w, rho)));
+  }
+
+  // Segment u-v within rho of the spoke from z to p(t), the nearest points inside both.
+  Interval spoke_inside(Vec3 z, Vec3 u, Vec3 v, double rho) const {
+    const Vec3 e = v - u, uz = u - z;
+    const Vec3 n0 = -cross(z, e), n1 = cross(d, e);  // cross(t·d - z, e) = n0 + t·n1
+    const double r2 = rho * rho, w0 = dot(uz, n0), w1 = dot(uz, n1);
+    const double nn0 = dot(n0, n0), nn1 = 2 * dot(n0, n1), nn2 = dot(n1, n1);  // |n|² = nn0 + nn1·t + nn2·t²
+    const IntervalSet near = negative_quadratic(w1 * w1 - r2 * nn2, w0 * w1 - r2 * nn1 / 2, w0 * w0 - r2 * nn0);
+    // The spoke's parameter dot(cross(uz, e), n) / |n|² in (0, 1).
+    const Vec3 c = cross(uz, e);
+    const double c0 = dot(c, n0), c1 = dot(c, n1);
+    const IntervalSet spoke_param = intersect(positive_linear(c0, c1), positive_quadratic(nn0 - c0, nn1 - c1, nn2));
+    // The segment's parameter dot(cross(uz, t·d - z), n) / |n|² in (0, 1).
+    const Vec3 g0 = -cross(uz, z), g1 = cross(uz, d);
+    const double q0 = dot(g0, n0), q1 = dot(g0, n1) + dot(g1, n0), q2 = dot(g1, n1);
+    const IntervalSet segment_param =
+        intersect(positive_quadratic(q0, q1, q2), positive_quadratic(nn0 - q0, nn1 - q1, nn2 - q2));
+    return intersect_hull(intersect(near, spoke_param), segment_param);
+  }
+
+  // Edge term: segment u-v within rho of the spoke from z to p(t) (z is static, and never within rho).
+  Interval edge(Vec3 z, Vec3 u, Vec3 v, double rho) const {
+    return hull(hull(shadow(z, u, rho), shadow(z, v, rho)), hull(segment(u, v, rho), spoke_inside(z, u, v, rho)));
+  }
+};
+
+bool shared(std::uint32_t a, std::uint32_t b) { return a != no_vertex && a == b; }
+
+}  // namespace
+
+void limit_fan(const FanMove& f, const Obstacle& o, double r, Reach& reach, const TermsWanted& wanted) {
+  const Line line{f.d};
+  const std::size_t n = f.ring.size(), triangles = f.closed ? n : n - 1;
+  auto ring = [&](std::size_t i) { return f.ring[i % n] - f.m; };
+  std::array<Vec3, 3> at{};
+  for (int k = 0; k < o.corners; ++k) at[k] = o.at[k] - f.m;
+  const Vec3 origin{};
+  if (wanted.point) {
+    if (o.corners == 1)
+      term(reach, r, norm(at[0]), either, 0, [&](double rho) { return line.point(at[0], rho); });
+    else if (o.corners == 2)
+      term(reach, r, point_segment_distance(origin, at[0], at[1]), either, 0,
+           [&](double rho) { return line.segment(at[0], at[1], rho); });
+    else
+      term(reach, r, point_triangle_distance(origin, at[0], at[1], at[2]), either, 0,
+           [&](double rho) { return line.triangle(at[0], at[1], at[2], rho); });
+  }
+  for (int k = 0; k < o.corners; ++k) {
+    if (!wanted.corner[k]) continue;
+    for (std::size_t i = 0; i < triangles; ++i) {
+      if (shared(o.id[k], f.ring_id[i]) || shared(o.id[k], f.ring_id[(i + 1) % n])) continue;
+      const Vec3 x = ring(i), y = ring(i + 1), w = at[k];
+      term(reach, r, point_triangle_distance(w, x, y, origin), either, 0,
+           [&](double rho) { return line.corner(x, y, w, rho); });
+    }
+  }
+  const int edges = o.corners == 3 ? 3 : o.corners - 1;
+  for (int k = 0; k < edges; ++k) {
+    if (!wanted.edge[k]) continue;
+    const int k1 = (k + 1) % o.corners;
+    for (std::size_t j = 0; j < n; ++j) {
+      if (shared(o.id[k], f.ring_id[j]) || shared(o.id[k1], f.ring_id[j])) continue;
+      const Vec3 z = ring(j), u = at[k], v = at[k1];
+      term(reach, r, segment_segment_distance(u, v, z, origin), either, 0,
+           [&](double rho) { return line.edge(z, u, v, rho); });
+    }
+  }
+}
+
+}  // namespace selfsim::exclusion

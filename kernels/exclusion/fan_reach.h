@@ -1,0 +1,59 @@
+// How far one obstacle lets a new point of an exclusion surface move (seed 004's closing section, in 3D:
+// every triangle split 1 -> 4 at its edge midpoints, each midpoint moved along a line perpendicular to its
+// edge). Pure geometry: the caller collects the obstacles near the move and keeps the smallest reach on
+// each side.
+//
+// The point p(t) = m + t·d moves continuously away from the midpoint m. The triangles that have p as a
+// corner (its fan) are p with each two consecutive points of its ring. They must keep the radius r from
+// each obstacle: another triangle, or a segment or point (the fan's own static edges take part that way,
+// so that the fan cannot fold onto itself). As in 2D (split_reach.h), the distance between a fan triangle
+// and an obstacle is the least of distances between a point and a triangle or between two segments, and the
+// ones that change with t are the terms:
+//   - the point term: p to the obstacle;
+//   - a corner term: an obstacle corner w to a fan triangle (p, x, y);
+//   - an edge term: an obstacle edge u-v to a spoke p-z of the fan.
+// Pairs that share a vertex (by number) are not measured: they meet there by construction. A term already
+// below r where the move starts may not get any smaller (reach.h). Each term's set of t where it is too
+// small is one interval: the fan triangle (or spoke) meets the convex set of points within the radius of the
+// obstacle's piece exactly when p lies in that set's shadow from the triangle's static edge (or the spoke's
+// static end), which is convex; the interval comes in closed form from the quadratics of its pieces.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+
+#include "kernels/exclusion/reach.h"
+#include "kernels/geom/vec3.h"
+
+namespace selfsim::exclusion {
+
+inline constexpr std::uint32_t no_vertex = 0xffffffffu;
+
+// The moving point and its fan.
+struct FanMove {
+  Vec3 m, d;                               // where the point starts, and its line's unit direction
+  std::span<const Vec3> ring;              // the fan's other corners in order around p (at least 2)
+  std::span<const std::uint32_t> ring_id;  // their vertex numbers
+  bool closed = false;                     // the last and first ring points make a triangle with p too
+};
+
+// An obstacle: a triangle (3 corners), a segment (2) or a point (1), with its corners' vertex numbers
+// (no_vertex for corners no fan can share, such as the region's boundary).
+struct Obstacle {
+  std::array<Vec3, 3> at;
+  std::array<std::uint32_t, 3> id{no_vertex, no_vertex, no_vertex};
+  int corners = 3;
+};
+
+// Which of an obstacle's terms to measure: a caller that has measured a corner or edge already (it belongs
+// to a neighbouring obstacle too) saves the work. Edge k joins corners k and k + 1.
+struct TermsWanted {
+  bool point = true;
+  std::array<bool, 3> corner{true, true, true}, edge{true, true, true};
+};
+
+// Narrows `reach` by what obstacle `o` allows the fan with radius r, exactly.
+void limit_fan(const FanMove& f, const Obstacle& o, double r, Reach& reach, const TermsWanted& wanted = {});
+
+}  // namespace selfsim::exclusion

@@ -1,0 +1,55 @@
+// How far a split point may move along its line, on each side, as the obstacles near it narrow the move:
+// what the exclusion curve (split_reach.h, seed 004) and the exclusion surface (fan_reach.h, its 3D
+// extension) share. A "term" is one distance the move changes (the point to an obstacle, an obstacle point
+// to a new segment or triangle, ...); each has its own set of t where it is too small.
+#pragma once
+
+#include <algorithm>
+
+#include "kernels/exclusion/line_intervals.h"
+
+namespace selfsim::exclusion {
+
+// How far the point may move: t in [0, positive] along the line's direction, in [0, negative] against it.
+struct Reach {
+  double positive = unbounded, negative = unbounded;
+
+  // Stops both sides at the first t of `violated` (a violation around t = 0 stops both at once).
+  void block(Interval violated) {
+    if (violated.empty()) return;
+    if (violated.lo >= 0) {
+      positive = std::min(positive, violated.lo);
+    } else if (violated.hi <= 0) {
+      negative = std::min(negative, -violated.hi);
+    } else {
+      positive = negative = 0;
+    }
+  }
+};
+
+// The radius a term must keep: r, or, when it starts below r at d0 (inherited from a coarser level, where
+// the radius was larger but the split's neighbours were excepted), d0 itself less a hair, so that it may
+// not get any smaller and t = 0 stays outside its set. Zero when the term starts touching.
+inline double term_radius(double r, double d0) { return d0 < r ? d0 * (1 - 1e-9) : r; }
+
+// The side of the line where a term can shrink: the sign of t, 0 for neither, `either` when not known.
+inline constexpr int either = 2;
+inline int side_of(double t) { return t > 0 ? 1 : t < 0 ? -1 : 0; }
+
+// Narrows `reach` by one term whose value where the point starts is d0 and whose set of t below radius rho
+// is set_for(rho). Every term changes by at most |t| (the points of the new pieces move no faster than the
+// split point), so it cannot act before |t| = d0 - rho, nor before `after`, and only on side `toward`. A
+// side already stopped before the term could act is left alone without solving for the set.
+template <class SetFor>
+void term(Reach& reach, double r, double d0, int toward, double after, SetFor set_for) {
+  const double rho = term_radius(r, d0);
+  if (!(rho > 0)) {  // already touching: no move can be trusted
+    reach.positive = reach.negative = 0;
+    return;
+  }
+  const double first = std::max(d0 - rho, after);
+  const bool positive = toward == 1 || toward == either, negative = toward == -1 || toward == either;
+  if ((positive && reach.positive > first) || (negative && reach.negative > first)) reach.block(set_for(rho));
+}
+
+}  // namespace selfsim::exclusion
