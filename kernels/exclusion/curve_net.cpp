@@ -181,10 +181,7 @@ std::uint32_t Curves::split(std::uint32_t v, double r, int level, LevelReport& r
   const std::uint32_t w = next_[v];
   const SplitFrame f(at_[v], at_[w]);
   const Reach limits = reach(f, r, v);
-  double t = limits.negative > limits.positive * (1 + 1e-9) ? -limits.negative : limits.positive;
-  if (!std::isfinite(t))
-    throw Error("a split found nothing to stop its point (a fault in selfsim: please report the recipe)");
-  t *= 1 - 1e-9;  // a rounding short of the limit, so that the radius still holds once the point is stored
+  double t = chosen_move(limits);
   ++report.splits;
   if (std::abs(t) < stuck_fraction * f.h) {
     t = 0;

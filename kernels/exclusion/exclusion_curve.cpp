@@ -139,11 +139,7 @@ CurveResult exclusion_curve(const Region& region, const Polyline& start, const C
   for (Vec2& p : local_start.points) p = n.to(p);
   check_start(local, local_start, start);
   // The last level's radius must stay well above rounding at the region's size.
-  const double last = opt.radius * std::pow(opt.factor, std::max(opt.levels - 1, 0)) * n.scale;
-  if (opt.levels > 0 && !(last >= 1e-12))
-    throw Error("option 'radius' falls to " + number_text(last / n.scale) + " at level " + std::to_string(opt.levels) +
-                " (factor " + number_text(opt.factor) + "), below 1e-12 of the region's size: raise 'radius' or " +
-                "'factor', or lower 'levels'");
+  check_last_radius(opt.radius, opt.factor, opt.levels, n.scale, 1e-12);
   CurveOptions local_opt = opt;
   local_opt.radius = opt.radius * n.scale;
   progress.start("exclusion curve");

@@ -18,6 +18,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "kernels/exclusion/level_report.h"
 #include "kernels/geom/budget.h"
 #include "kernels/geom/polyline.h"
 #include "kernels/geom/progress.h"
@@ -41,11 +42,6 @@ struct CurveOptions {
   PointBudget budget;
 
   void validate() const;
-};
-
-struct LevelReport {
-  std::size_t splits = 0, stuck = 0;
-  double seconds = 0;
 };
 
 struct CurveResult {

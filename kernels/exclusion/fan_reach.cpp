@@ -84,7 +84,23 @@ struct Line {
     const IntervalSet inside_yp = positive_quadratic(dot(k0, n0), dot(k0, n1) + dot(k1, n0), dot(k1, n1));
     const Vec3 j0 = cross(x, wx), j1 = -cross(d, wx);  // cross(x - t·d, w - p) = cross(x - t·d, wx)
     const IntervalSet inside_px = positive_quadratic(dot(j0, n0), dot(j0, n1) + dot(j1, n0), dot(j1, n1));
-    return intersect_hull(intersect(intersect(plane, inside_xy), inside_yp), inside_px);
+    return intersect_hull(
+        intersect(intersect(plane, inside_xy), inside_yp), intersect(inside_px, not_parallel(n0, n1, yx, x)),
+        [&](Interval part) { return point_triangle_distance(w, x, y, inner_point(part) * d) < rho * (1 + 1e-9); });
+  }
+
+  // The face and the inside of two segments are products of near-cancelling terms where the point is in
+  // or near the plane of what it meets (a flat surface's boundary moving in its plane): rounding can leave
+  // slivers there that no distance confirms. Each part of their sets is checked by the distance at a point
+  // of it.
+  //
+  // Where t·d - x is not within 1e-10 radians of parallel to e: |cross(e, t·d - x)|² = |n0 + t·n1|² above
+  // 1e-20·|e|²·|t·d - x|². Near parallel the face and the inside of two segments are ill-conditioned (every
+  // sign test is a product of rounding), and the nearest points are on their edges or ends instead, which
+  // other pieces measure.
+  IntervalSet not_parallel(Vec3 n0, Vec3 n1, Vec3 e, Vec3 x) const {
+    const double k = 1e-20 * dot(e, e);
+    return positive_quadratic(dot(n0, n0) - k * dot(x, x), 2 * (dot(n0, n1) + k * dot(d, x)), dot(n1, n1) - k);
   }
 
   // Corner term: w within rho of fan triangle x, y, p(t) (x and y are static, and never within rho).
@@ -108,7 +124,9 @@ struct Line {
     const double q0 = dot(g0, n0), q1 = dot(g0, n1) + dot(g1, n0), q2 = dot(g1, n1);
     const IntervalSet segment_param =
         intersect(positive_quadratic(q0, q1, q2), positive_quadratic(nn0 - q0, nn1 - q1, nn2 - q2));
-    return intersect_hull(intersect(near, spoke_param), segment_param);
+    return intersect_hull(
+        intersect(near, spoke_param), intersect(segment_param, not_parallel(n0, n1, e, z)),
+        [&](Interval part) { return segment_segment_distance(u, v, z, inner_point(part) * d) < rho * (1 + 1e-9); });
   }
 
   // Edge term: segment u-v within rho of the spoke from z to p(t) (z is static, and never within rho).

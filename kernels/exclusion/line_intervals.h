@@ -40,15 +40,29 @@ inline IntervalSet intersect(const IntervalSet& x, const IntervalSet& y) {
   return out;
 }
 
-// The smallest interval holding x ∩ y, without listing its parts (which may be more than four).
-inline Interval intersect_hull(const IntervalSet& x, const IntervalSet& y) {
+// The smallest interval holding the parts of x ∩ y that `keep` accepts, without listing them (they may be
+// more than four). A caller whose sets come from ill-conditioned quadratics checks each part there.
+template <class Keep>
+Interval intersect_hull(const IntervalSet& x, const IntervalSet& y, Keep keep) {
   Interval h;
   for (int i = 0; i < x.count; ++i)
     for (int j = 0; j < y.count; ++j) {
       const Interval part{std::max(x.part[i].lo, y.part[j].lo), std::min(x.part[i].hi, y.part[j].hi)};
-      if (!part.empty()) h = {std::min(h.lo, part.lo), std::max(h.hi, part.hi)};
+      if (!part.empty() && keep(part)) h = {std::min(h.lo, part.lo), std::max(h.hi, part.hi)};
     }
   return h;
+}
+
+inline Interval intersect_hull(const IntervalSet& x, const IntervalSet& y) {
+  return intersect_hull(x, y, [](Interval) { return true; });
+}
+
+// A finite point of a non-empty interval: its middle, or a point a unit or more inside an unbounded end.
+inline double inner_point(Interval i) {
+  if (std::isfinite(i.lo) && std::isfinite(i.hi)) return 0.5 * (i.lo + i.hi);
+  if (std::isfinite(i.lo)) return i.lo + std::max(1.0, std::abs(i.lo));
+  if (std::isfinite(i.hi)) return i.hi - std::max(1.0, std::abs(i.hi));
+  return 0;
 }
 
 // {t : g0 + g1·t > 0}.

@@ -5,8 +5,11 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 
 #include "kernels/exclusion/line_intervals.h"
+#include "kernels/geom/check.h"
 
 namespace selfsim::exclusion {
 
@@ -50,6 +53,26 @@ void term(Reach& reach, double r, double d0, int toward, double after, SetFor se
   const double first = std::max(d0 - rho, after);
   const bool positive = toward == 1 || toward == either, negative = toward == -1 || toward == either;
   if ((positive && reach.positive > first) || (negative && reach.negative > first)) reach.block(set_for(rho));
+}
+
+// The move a split makes: to the side that reaches farther (the positive one unless the negative reaches
+// farther by more than one part in 10^9), a rounding short of its limit so that the radius still holds once
+// the point is stored.
+inline double chosen_move(const Reach& limits) {
+  const double t = limits.negative > limits.positive * (1 + 1e-9) ? -limits.negative : limits.positive;
+  if (!std::isfinite(t))
+    throw Error("a split found nothing to stop its point (a fault in selfsim: please report the recipe)");
+  return t * (1 - 1e-9);
+}
+
+// Refuses a last level's radius (`radius` times `factor` for each level after the first, in coordinates
+// scaled by `scale` to a region of size about 1) below `floor`: the limits would drown in rounding.
+inline void check_last_radius(double radius, double factor, int levels, double scale, double floor) {
+  const double last = radius * std::pow(factor, std::max(levels - 1, 0)) * scale;
+  if (levels > 0 && !(last >= floor))
+    throw Error("option 'radius' falls to " + number_text(last / scale) + " at level " + std::to_string(levels) +
+                " (factor " + number_text(factor) + "), below " + number_text(floor) +
+                " of the region's size: raise 'radius' or 'factor', or lower 'levels'");
 }
 
 }  // namespace selfsim::exclusion

@@ -1,0 +1,148 @@
+#include "kernels/exclusion/exclusion_surface.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "kernels/exclusion/surface_net.h"
+#include "kernels/geom/check.h"
+#include "kernels/geom/mesh_check.h"
+#include "kernels/geom/mesh_intersections.h"
+#include "kernels/geom/winding_number.h"
+
+namespace selfsim::exclusion {
+
+namespace {
+
+struct Counts {
+  double points, edges, triangles;
+};
+
+// A triangle mesh after `levels` splits 1 -> 4: every edge adds a point and becomes two edges, every
+// triangle adds three edges inside.
+Counts grown(Counts c, int levels) {
+  for (int l = 0; l < levels; ++l) c = {c.points + c.edges, 2 * c.edges + 3 * c.triangles, 4 * c.triangles};
+  return c;
+}
+
+Counts counts(const Mesh& start) {
+  const MeshTopology t = mesh_topology(start);
+  return {static_cast<double>(start.points.size()), static_cast<double>(t.edges), static_cast<double>(t.faces)};
+}
+
+// Working memory, in budget points of 16 bytes: a point's coordinates and level, and about 260 bytes a
+// triangle (its corners and surface, grid entries, and while a level is split its half edges, midpoints and
+// fans).
+constexpr double working_points_per_triangle = 16;
+
+// The region and start moved to the origin and scaled by a power of two to a size about 1: the closed-form
+// limits take coordinates to the fourth power and more.
+struct Normalised {
+  Vec3 centre;
+  double scale;
+  Vec3 to(Vec3 p) const { return scale * (p - centre); }
+  Vec3 from(Vec3 q) const { return (1 / scale) * q + centre; }
+};
+
+Mesh moved(const Mesh& m, const Normalised& n) {
+  Mesh out;
+  out.triangles = m.triangles;
+  out.points.reserve(m.points.size());
+  for (Vec3 p : m.points) out.points.push_back(n.to(p));
+  return out;
+}
+
+double since(std::chrono::steady_clock::time_point from) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - from).count();
+}
+
+// The start must be a manifold of triangles with area, strictly inside the region, touching neither
+// itself nor the boundary.
+void check_start(const Mesh& boundary, const Mesh& start, Progress& progress) {
+  if (start.triangles.empty()) throw Error("the start has no triangles");
+  const MeshTopology t = mesh_topology(start);
+  if (!t.manifold()) throw Error("the start is not a manifold surface: " + t.first_problem);
+  for (std::size_t i = 0; i < start.triangles.size(); ++i) {
+    const Triangle& c = start.triangles[i];
+    const Vec3 n = cross(start.points[c[1]] - start.points[c[0]], start.points[c[2]] - start.points[c[0]]);
+    const double longest =
+        std::max({norm(start.points[c[1]] - start.points[c[0]]), norm(start.points[c[2]] - start.points[c[1]]),
+                  norm(start.points[c[0]] - start.points[c[2]])});
+    if (!(norm(n) > 1e-12 * longest * longest)) throw Error("start triangle " + std::to_string(i + 1) + " has no area");
+  }
+  for (std::size_t i = 0; i < start.points.size(); ++i)
+    if (winding_number(boundary, start.points[i]) < 0.5)
+      throw Error("start point " + std::to_string(i + 1) + " lies outside the region");
+  Mesh both = start;
+  const auto offset = static_cast<std::uint32_t>(start.points.size());
+  both.points.insert(both.points.end(), boundary.points.begin(), boundary.points.end());
+  for (Triangle c : boundary.triangles) both.triangles.push_back({c[0] + offset, c[1] + offset, c[2] + offset});
+  if (const auto pair = first_intersection(both, progress)) {
+    const std::size_t n = start.triangles.size();
+    if (pair->second < n)
+      throw Error("start triangles " + std::to_string(pair->first + 1) + " and " + std::to_string(pair->second + 1) +
+                  " cross or touch");
+    if (pair->first < n)
+      throw Error("start triangle " + std::to_string(pair->first + 1) + " crosses or touches the region's boundary");
+  }
+}
+
+}  // namespace
+
+void SurfaceOptions::validate() const {
+  check_between(radius, 1e-300, 1e300, "option 'radius'");
+  if (!(factor > 0 && factor <= 1)) throw Error("option 'factor' must be in (0, 1], got " + number_text(factor));
+  check_range(levels, 0, 20, "option 'levels'");
+}
+
+double surface_size(const Mesh& start, int levels) {
+  const Counts c = grown(counts(start), levels);
+  return c.points + working_points_per_triangle * c.triangles;
+}
+
+SurfaceResult exclusion_surface(const Mesh& boundary, const Mesh& start, const SurfaceOptions& opt,
+                                Progress& progress) {
+  opt.validate();
+  start.validate();
+  boundary.validate();
+  const Counts final_counts = grown(counts(start), opt.levels);
+  check_budget(surface_size(start, opt.levels), opt.budget,
+               "levels = " + std::to_string(opt.levels) + " (" + count_text(final_counts.triangles) +
+                   " triangles, each " + count_text(working_points_per_triangle) +
+                   " budget points with its working memory)");
+  const MeshTopology region = mesh_topology(boundary);
+  if (!region.closed()) throw Error("the region's boundary is not a closed surface: " + region.first_problem);
+  const BBox3 box = boundary.bbox();
+  const double side = std::max({box.size().x, box.size().y, box.size().z});
+  const Normalised n{0.5 * (box.min + box.max), std::ldexp(1.0, -std::ilogb(side))};
+  const Mesh local_boundary = moved(boundary, n), local_start = moved(start, n);
+  check_start(local_boundary, local_start, progress);
+  check_last_radius(opt.radius, opt.factor, opt.levels, n.scale, 1e-9);
+
+  Surfaces s(local_boundary, local_start, final_counts.points, final_counts.triangles);
+  SurfaceResult result;
+  double r = opt.radius * n.scale;
+  for (int level = 1; level <= opt.levels; ++level, r *= opt.factor) {
+    const auto begun = std::chrono::steady_clock::now();
+    progress.start(("surface level " + std::to_string(level)).c_str());
+    progress.step(0);
+    LevelReport report;
+    s.subdivide(level, r);
+    const std::size_t moves = s.midpoints();
+    for (std::size_t k = 0; k < moves; ++k) {
+      if ((k & 255) == 0) progress.step(static_cast<double>(k) / static_cast<double>(moves));
+      s.move(k, r, report);
+    }
+    report.seconds = since(begun);
+    result.levels.push_back(report);
+  }
+  result.surface = s.result();
+  // Back to the caller's coordinates, the start points exactly as given.
+  for (std::size_t i = 0; i < result.surface.points.size(); ++i)
+    result.surface.points[i] = i < start.points.size() ? start.points[i] : n.from(result.surface.points[i]);
+  if (!result.surface.finite()) throw Error("the exclusion surface has non-finite points");
+  return result;
+}
+
+}  // namespace selfsim::exclusion

@@ -1,0 +1,51 @@
+// Seed 004's closing section, built: the exclusion-radius surface. Every triangle of the growing surfaces is
+// split 1 -> 4 at its edge midpoints, and each midpoint moves along a line perpendicular to its edge, to
+// whichever side lets it go farther, as far as it can while the new point and the triangles around it keep
+// the exclusion radius from every other part of every surface and from the region's boundary
+// (fan_reach.h says exactly what is measured). The radius is multiplied by `factor` at each level. The
+// surfaces grow inside the region and never cross or touch.
+//
+// The line. For an edge inside a surface, the line through the midpoint perpendicular to the edge that
+// bisects the dihedral angle of the two triangles sharing it; its positive side is the side of the first
+// triangle's normal (the surface's front: right-hand rule). For an edge on a surface's boundary, the line in
+// the owning triangle's plane; its positive side points away from the triangle.
+//
+// Order. Level by level; within a level, every triangle is first split flat (its midpoints on its edges),
+// then the midpoints move one after another in the order of their edges' first appearance (triangles in
+// order, each triangle's edges from its first corner), each move seeing every move before it. Ties go to
+// the positive side unless the negative side reaches farther by more than one part in 10^9; a point that can
+// move less than 10^-6 of its half edge on both sides stays at the midpoint and is counted as stuck.
+#pragma once
+
+#include <vector>
+
+#include "kernels/exclusion/level_report.h"
+#include "kernels/geom/budget.h"
+#include "kernels/geom/mesh.h"
+#include "kernels/geom/progress.h"
+
+namespace selfsim::exclusion {
+
+struct SurfaceOptions {
+  double radius = 0.1;  // exclusion radius of the first level
+  double factor = 0.8;  // radius multiplied by this at each level, in (0, 1]
+  int levels = 1;       // levels of splitting, each making four triangles of one, in [0, 20]
+  PointBudget budget;
+
+  void validate() const;
+};
+
+struct SurfaceResult {
+  Mesh surface;  // point field `level` (0: a start point); face fields `level` (the oldest corner's) and
+                 // `surface` (from 1: the start's face-connected pieces, in order)
+  std::vector<LevelReport> levels;
+};
+
+// Points of the result and working memory, in budget points, for `levels` levels grown from `start`.
+double surface_size(const Mesh& start, int levels);
+
+// Grows the surfaces from `start` inside the closed, outward-oriented triangle mesh `boundary`. Throws Error
+// for a start that is not inside, crosses itself or is not a manifold, and for options out of range.
+SurfaceResult exclusion_surface(const Mesh& boundary, const Mesh& start, const SurfaceOptions& opt, Progress& progress);
+
+}  // namespace selfsim::exclusion

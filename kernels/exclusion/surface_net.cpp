@@ -1,0 +1,272 @@
+#include "kernels/exclusion/surface_net.h"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+#include "kernels/geom/error.h"
+#include "kernels/geom/field.h"
+
+namespace selfsim::exclusion {
+
+namespace {
+
+constexpr std::uint32_t boundary_bit = 0x80000000u;  // grid ids of the region's boundary triangles
+
+// A triangle's edge from corner k to corner k + 1, keyed by its ends' numbers.
+struct HalfEdge {
+  std::uint32_t lo, hi, triangle;
+  int k;
+};
+
+// The unit vector from edge a-b's line towards c, square to the edge.
+Vec3 towards(Vec3 a, Vec3 b, Vec3 c) {
+  const Vec3 e = b - a, w = c - a;
+  return normalized(w - (dot(w, e) / dot(e, e)) * e);
+}
+
+}  // namespace
+
+Surfaces::Surfaces(const Mesh& boundary, const Mesh& start, double points, double triangles)
+    : boundary_(boundary), far_(2 * norm(boundary.bbox().size())) {
+  points_.reserve(static_cast<std::size_t>(points));
+  level_.reserve(points_.capacity());
+  triangles_.reserve(static_cast<std::size_t>(triangles));
+  surface_.reserve(triangles_.capacity());
+  points_ = start.points;
+  level_.assign(points_.size(), 0);
+  triangles_ = start.triangles;
+  // Each face-connected piece of the start is one surface, numbered in the order of its first triangle.
+  std::vector<std::uint32_t> root(points_.size());
+  for (std::uint32_t i = 0; i < root.size(); ++i) root[i] = i;
+  auto find = [&](std::uint32_t i) {
+    while (root[i] != i) i = root[i] = root[root[i]];
+    return i;
+  };
+  for (const Triangle& t : triangles_) root[find(t[0])] = find(t[1]), root[find(t[1])] = find(t[2]);
+  std::vector<std::int32_t> number(points_.size(), 0);
+  std::int32_t count = 0;
+  for (const Triangle& t : triangles_) {
+    std::int32_t& n = number[find(t[0])];
+    if (n == 0) n = ++count;
+    surface_.push_back(n);
+  }
+  boundary_seen_.assign(boundary.triangles.size(), 0);
+}
+
+void Surfaces::subdivide(int level, double r) {
+  // The edges, each once, in the order of their first appearance.
+  std::vector<HalfEdge> half;
+  half.reserve(3 * triangles_.size());
+  for (std::uint32_t t = 0; t < triangles_.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = triangles_[t][k], b = triangles_[t][(k + 1) % 3];
+      half.push_back({std::min(a, b), std::max(a, b), t, k});
+    }
+  std::sort(half.begin(), half.end(), [](const HalfEdge& x, const HalfEdge& y) {
+    return std::tie(x.lo, x.hi, x.triangle, x.k) < std::tie(y.lo, y.hi, y.triangle, y.k);
+  });
+  struct Edge {
+    std::size_t first, count;  // its half edges in `half`
+  };
+  std::vector<Edge> edges;
+  for (std::size_t i = 0; i < half.size();) {
+    std::size_t j = i;
+    while (j < half.size() && half[j].lo == half[i].lo && half[j].hi == half[i].hi) ++j;
+    if (j - i > 2) throw Error("the surface has an edge shared by more than two triangles");
+    edges.push_back({i, j - i});
+    i = j;
+  }
+  std::sort(edges.begin(), edges.end(), [&](const Edge& x, const Edge& y) {
+    return 3 * half[x.first].triangle + half[x.first].k < 3 * half[y.first].triangle + half[y.first].k;
+  });
+  // A midpoint for each edge, on the edge.
+  const auto old_points = static_cast<std::uint32_t>(points_.size());
+  std::vector<std::uint32_t> mid_of(3 * triangles_.size());  // triangle t's edge k -> its midpoint
+  for (std::uint32_t e = 0; e < edges.size(); ++e)
+    for (std::size_t i = edges[e].first; i < edges[e].first + edges[e].count; ++i)
+      mid_of[3 * half[i].triangle + half[i].k] = old_points + e;
+  for (const Edge& e : edges) {
+    points_.push_back(0.5 * (points_[half[e.first].lo] + points_[half[e.first].hi]));
+    level_.push_back(level);
+  }
+  // Each triangle c0 c1 c2 becomes its three corners' triangles (corner k's is 4t + k) and the middle one.
+  const std::vector<Triangle> old = std::move(triangles_);
+  const std::vector<std::int32_t> old_surface = std::move(surface_);
+  triangles_.clear();
+  surface_.clear();
+  for (std::uint32_t t = 0; t < old.size(); ++t) {
+    const Triangle& c = old[t];
+    const std::uint32_t m0 = mid_of[3 * t], m1 = mid_of[3 * t + 1], m2 = mid_of[3 * t + 2];
+    for (const Triangle& n :
+         {Triangle{c[0], m0, m2}, Triangle{m0, c[1], m1}, Triangle{m2, m1, c[2]}, Triangle{m0, m1, m2}}) {
+      triangles_.push_back(n);
+      surface_.push_back(old_surface[t]);
+    }
+  }
+  // Each midpoint's fan and line.
+  mids_.assign(edges.size(), Midpoint{});
+  for (std::uint32_t e = 0; e < edges.size(); ++e) {
+    Midpoint& mid = mids_[e];
+    mid.vertex = old_points + e;
+    // Within triangle t, the ring from the edge's start c_k to its end c_k+1 passes the other two midpoints.
+    auto part = [&](const HalfEdge& he, bool reversed) {
+      const Triangle& c = old[he.triangle];
+      const int k = he.k, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+      std::array<std::uint32_t, 4> ring{c[k], mid_of[3 * he.triangle + k2], mid_of[3 * he.triangle + k1], c[k1]};
+      std::array<std::uint32_t, 3> fan{4 * he.triangle + k, 4 * he.triangle + 3, 4 * he.triangle + k1};
+      if (reversed) std::reverse(ring.begin(), ring.end()), std::reverse(fan.begin(), fan.end());
+      return std::pair{ring, fan};
+    };
+    const HalfEdge& first = half[edges[e].first];
+    const Triangle& c = old[first.triangle];
+    const Vec3 a = points_[c[first.k]], b = points_[c[(first.k + 1) % 3]], third = points_[c[(first.k + 2) % 3]];
+    const auto [ring, fan] = part(first, false);
+    for (int i = 0; i < 4; ++i) mid.ring[mid.ring_size++] = ring[i];
+    for (int i = 0; i < 3; ++i) mid.fan[mid.fan_size++] = fan[i];
+    mid.h = 0.5 * norm(b - a);
+    const Vec3 u1 = towards(a, b, third);
+    if (edges[e].count == 1) {
+      mid.d = -u1;  // in the triangle's plane, away from it
+      continue;
+    }
+    // The other triangle goes b -> a when the surface is consistently oriented; its ring part b ... a then
+    // closes the ring (its ends are a and b already there).
+    const HalfEdge& second = half[edges[e].first + 1];
+    const Triangle& c2 = old[second.triangle];
+    const auto [ring2, fan2] = part(second, c2[second.k] == c[first.k]);
+    mid.ring[mid.ring_size++] = ring2[1];
+    mid.ring[mid.ring_size++] = ring2[2];
+    for (int i = 0; i < 3; ++i) mid.fan[mid.fan_size++] = fan2[i];
+    mid.closed = true;
+    // The dihedral angle's bisector: square to the edge and to u1 - u2, on the side of the first
+    // triangle's normal.
+    const Vec3 u2 = towards(a, b, points_[c2[(second.k + 2) % 3]]);
+    Vec3 d = normalized(cross(b - a, u1 - u2));
+    const Vec3 normal = cross(b - a, third - a);
+    if (dot(d, normal) < 0) d = -d;
+    mid.d = norm(d) > 0.5 ? d : normalized(normal);
+  }
+  // The neighbour grid: cells of 1.5 times the radius or the mean edge, whichever is larger.
+  double length = 0;
+  for (const Midpoint& m : mids_) length += 2 * m.h;
+  const double mean = mids_.empty() ? 0 : 0.5 * length / static_cast<double>(mids_.size());
+  BBox3 bounds = boundary_.bbox();
+  grid_ = BoxGrid3(bounds, 1.5 * std::max({r, mean, 1e-9 * norm(bounds.size())}));
+  for (std::uint32_t t = 0; t < boundary_.triangles.size(); ++t) {
+    BBox3 box;
+    for (std::uint32_t v : boundary_.triangles[t]) box.add(boundary_.points[v]);
+    grid_.insert(boundary_bit | t, box);
+  }
+  for (std::uint32_t t = 0; t < triangles_.size(); ++t) grid_.insert(t, triangle_box(t));
+  seen_.assign(triangles_.size(), 0);
+  vertex_seen_.assign(points_.size(), 0);
+  std::fill(boundary_seen_.begin(), boundary_seen_.end(), 0);
+  query_ = 0;
+}
+
+BBox3 Surfaces::triangle_box(std::uint32_t t) const {
+  BBox3 box;
+  for (std::uint32_t v : triangles_[t]) box.add(points_[v]);
+  return box;
+}
+
+bool Surfaces::first_visit(std::uint32_t vertex) {
+  if (vertex_seen_[vertex] == query_) return false;
+  vertex_seen_[vertex] = query_;
+  return true;
+}
+
+Reach Surfaces::reach(const Midpoint& mid, double r) {
+  std::array<Vec3, 6> ring_at;
+  for (int i = 0; i < mid.ring_size; ++i) ring_at[i] = points_[mid.ring[i]];
+  const FanMove f{points_[mid.vertex],
+                  mid.d,
+                  {ring_at.data(), static_cast<std::size_t>(mid.ring_size)},
+                  {mid.ring.data(), static_cast<std::size_t>(mid.ring_size)},
+                  mid.closed};
+  Reach limits;
+  ++query_;
+  for (int i = 0; i < mid.fan_size; ++i) seen_[mid.fan[i]] = query_;  // the fan moves with the point
+  auto stuck = [&] {
+    return limits.positive < surface_stuck_fraction * mid.h && limits.negative < surface_stuck_fraction * mid.h;
+  };
+  auto settle = [&] {  // as in 2D: a side stopped below the stuck threshold counts as 0
+    if (limits.positive < surface_stuck_fraction * mid.h) limits.positive = 0;
+    if (limits.negative < surface_stuck_fraction * mid.h) limits.negative = 0;
+  };
+  // The fan's own static edges first: they keep it from folding onto itself.
+  const int ring_edges = mid.closed ? mid.ring_size : mid.ring_size - 1;
+  for (int i = 0; i < ring_edges; ++i) {
+    const int j = (i + 1) % mid.ring_size;
+    Obstacle own{{ring_at[i], ring_at[j], Vec3{}}, {mid.ring[i], mid.ring[j], no_vertex}, 2};
+    TermsWanted wanted;
+    wanted.corner = {first_visit(mid.ring[i]), first_visit(mid.ring[j]), false};
+    limit_fan(f, own, r, limits, wanted);
+    settle();
+  }
+  for (double t = std::max(mid.h, r);; t *= 2) {
+    BBox3 swept;
+    for (int i = 0; i < mid.ring_size; ++i) swept.add(ring_at[i]);
+    swept.add(f.m + std::min(t, limits.positive) * f.d);
+    swept.add(f.m - std::min(t, limits.negative) * f.d);
+    const BBox3 near{swept.min - Vec3::all(r), swept.max + Vec3::all(r)};
+    auto overlaps = [&](const BBox3& b) {
+      return b.min.x <= near.max.x && b.max.x >= near.min.x && b.min.y <= near.max.y && b.max.y >= near.min.y &&
+             b.min.z <= near.max.z && b.max.z >= near.min.z;
+    };
+    grid_.visit(near, [&](std::uint32_t id) {
+      if (stuck()) return;
+      if (id & boundary_bit) {
+        const std::uint32_t b = id & ~boundary_bit;
+        if (boundary_seen_[b] == query_) return;
+        const Triangle& c = boundary_.triangles[b];
+        Obstacle o{{boundary_.points[c[0]], boundary_.points[c[1]], boundary_.points[c[2]]}};
+        BBox3 box;
+        for (const Vec3& p : o.at) box.add(p);
+        if (!overlaps(box)) return;  // looked at again if the box grows
+        boundary_seen_[b] = query_;
+        limit_fan(f, o, r, limits);
+      } else {
+        if (seen_[id] == query_) return;
+        if (!overlaps(triangle_box(id))) return;
+        seen_[id] = query_;
+        const Triangle& c = triangles_[id];
+        Obstacle o{{points_[c[0]], points_[c[1]], points_[c[2]]}, {c[0], c[1], c[2]}};
+        TermsWanted wanted;
+        wanted.corner = {first_visit(c[0]), first_visit(c[1]), first_visit(c[2])};
+        limit_fan(f, o, r, limits, wanted);
+      }
+      settle();
+    });
+    if (stuck() || (limits.positive <= t && limits.negative <= t) || t > far_) return limits;
+  }
+}
+
+void Surfaces::move(std::size_t k, double r, LevelReport& report) {
+  const Midpoint& mid = mids_[k];
+  const Reach limits = reach(mid, r);
+  double t = chosen_move(limits);
+  ++report.splits;
+  if (std::abs(t) < surface_stuck_fraction * mid.h) {
+    ++report.stuck;
+    return;
+  }
+  points_[mid.vertex] = points_[mid.vertex] + t * mid.d;
+  for (int i = 0; i < mid.fan_size; ++i) grid_.insert(mid.fan[i], triangle_box(mid.fan[i]));
+}
+
+Mesh Surfaces::result() const {
+  Mesh m;
+  m.points = points_;
+  m.triangles = triangles_;
+  std::vector<std::int32_t> face_level(triangles_.size());
+  for (std::size_t t = 0; t < triangles_.size(); ++t)
+    face_level[t] = std::min({level_[triangles_[t][0]], level_[triangles_[t][1]], level_[triangles_[t][2]]});
+  m.point_fields.set(int_field("level", level_));
+  m.face_fields.set(int_field("level", std::move(face_level)));
+  m.face_fields.set(int_field("surface", surface_));
+  return m;
+}
+
+}  // namespace selfsim::exclusion

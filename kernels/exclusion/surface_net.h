@@ -1,0 +1,63 @@
+// The growing exclusion surfaces of one run (seed 004 in 3D): their points and triangles, each level's
+// midpoints with the fan of triangles around each, and every triangle of the surfaces and of the region's
+// boundary in a grid, so that a move measures only the triangles near it. exclusion_surface.cpp drives it
+// level by level; fan_reach.h measures each obstacle.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "kernels/exclusion/fan_reach.h"
+#include "kernels/exclusion/level_report.h"
+#include "kernels/geom/box_grid3.h"
+#include "kernels/geom/mesh.h"
+
+namespace selfsim::exclusion {
+
+// A point that can move less than this fraction of its half edge on both sides stays at the midpoint.
+inline constexpr double surface_stuck_fraction = 1e-6;
+
+// One midpoint of a level: its vertex, its line, and the fan of new triangles around it.
+struct Midpoint {
+  std::uint32_t vertex = 0;
+  Vec3 d;                               // the line's unit direction (its positive side)
+  double h = 0;                         // half its edge's length
+  std::array<std::uint32_t, 6> ring{};  // the fan's other corners in order around the point
+  std::array<std::uint32_t, 6> fan{};   // the fan's triangles
+  int ring_size = 0, fan_size = 0;
+  bool closed = false;  // an edge inside a surface: the ring goes all the way round
+};
+
+class Surfaces {
+ public:
+  // `boundary`: the region's closed, outward-oriented boundary; `start`: the surfaces to grow. Reserves
+  // room for `points` points and `triangles` triangles.
+  Surfaces(const Mesh& boundary, const Mesh& start, double points, double triangles);
+
+  // Splits every triangle 1 -> 4 with the new points on its edges, and lists the midpoints; cells of the
+  // neighbour grid sized for radius r.
+  void subdivide(int level, double r);
+  std::size_t midpoints() const { return mids_.size(); }
+  // Moves midpoint k as far as radius r allows.
+  void move(std::size_t k, double r, LevelReport& report);
+  Mesh result() const;
+
+ private:
+  Reach reach(const Midpoint& mid, double r);
+  BBox3 triangle_box(std::uint32_t t) const;
+  bool first_visit(std::uint32_t vertex);
+
+  const Mesh& boundary_;
+  std::vector<Vec3> points_;
+  std::vector<std::int32_t> level_;
+  std::vector<Triangle> triangles_;
+  std::vector<std::int32_t> surface_;
+  std::vector<Midpoint> mids_;
+  BoxGrid3 grid_;
+  std::uint32_t query_ = 0;
+  std::vector<std::uint32_t> seen_, boundary_seen_, vertex_seen_;  // the query that last visited each
+  double far_;  // no point moves farther than this: twice the region's diagonal
+};
+
+}  // namespace selfsim::exclusion
