@@ -16,7 +16,9 @@
 // below r where the move starts may not get any smaller (reach.h). Each term's set of t where it is too
 // small is one interval: the fan triangle (or spoke) meets the convex set of points within the radius of the
 // obstacle's piece exactly when p lies in that set's shadow from the triangle's static edge (or the spoke's
-// static end), which is convex; the interval comes in closed form from the quadratics of its pieces.
+// static end), which is convex: its points are (1 + λ)·z - λ·s for z in the convex set, s in the static
+// piece and λ >= 0, and the midpoint of two such points is another (λ the mean, z and s weighted means).
+// The interval comes in closed form from the quadratics of its pieces.
 #pragma once
 
 #include <array>
