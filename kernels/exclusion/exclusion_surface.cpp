@@ -113,6 +113,9 @@ SurfaceResult exclusion_surface(const Mesh& boundary, const Mesh& start, const S
                    " budget points with its working memory)");
   const MeshTopology region = mesh_topology(boundary);
   if (!region.closed()) throw Error("the region's boundary is not a closed surface: " + region.first_problem);
+  if (const auto pair = first_intersection(boundary, progress))
+    throw Error("the region's boundary crosses itself (its triangles " + std::to_string(pair->first + 1) + " and " +
+                std::to_string(pair->second + 1) + ")");
   const BBox3 box = boundary.bbox();
   const double side = std::max({box.size().x, box.size().y, box.size().z});
   const Normalised n{0.5 * (box.min + box.max), std::ldexp(1.0, -std::ilogb(side))};

@@ -84,9 +84,9 @@ struct Line {
     const IntervalSet inside_yp = positive_quadratic(dot(k0, n0), dot(k0, n1) + dot(k1, n0), dot(k1, n1));
     const Vec3 j0 = cross(x, wx), j1 = -cross(d, wx);  // cross(x - t·d, w - p) = cross(x - t·d, wx)
     const IntervalSet inside_px = positive_quadratic(dot(j0, n0), dot(j0, n1) + dot(j1, n0), dot(j1, n1));
-    return intersect_hull(
-        intersect(intersect(plane, inside_xy), inside_yp), intersect(inside_px, not_parallel(n0, n1, yx, x)),
-        [&](Interval part) { return point_triangle_distance(w, x, y, inner_point(part) * d) < rho * (1 + 1e-9); });
+    return intersect_hull(intersect(intersect(plane, inside_xy), inside_yp),
+                          intersect(inside_px, not_parallel(n0, n1, yx, x)),
+                          [&](Interval part) { return point_triangle_distance(w, x, y, inner_point(part) * d) < rho; });
   }
 
   // The face and the inside of two segments are products of near-cancelling terms where the point is in
@@ -126,7 +126,7 @@ struct Line {
         intersect(positive_quadratic(q0, q1, q2), positive_quadratic(nn0 - q0, nn1 - q1, nn2 - q2));
     return intersect_hull(
         intersect(near, spoke_param), intersect(segment_param, not_parallel(n0, n1, e, z)),
-        [&](Interval part) { return segment_segment_distance(u, v, z, inner_point(part) * d) < rho * (1 + 1e-9); });
+        [&](Interval part) { return segment_segment_distance(u, v, z, inner_point(part) * d) < rho; });
   }
 
   // Edge term: segment u-v within rho of the spoke from z to p(t) (z is static, and never within rho).

@@ -91,8 +91,9 @@ void Surfaces::subdivide(int level, double r) {
     level_.push_back(level);
   }
   // Each triangle c0 c1 c2 becomes its three corners' triangles (corner k's is 4t + k) and the middle one.
-  const std::vector<Triangle> old = std::move(triangles_);
-  const std::vector<std::int32_t> old_surface = std::move(surface_);
+  // Copied, not moved: the vectors keep the capacity reserved for the whole run.
+  const std::vector<Triangle> old = triangles_;
+  const std::vector<std::int32_t> old_surface = surface_;
   triangles_.clear();
   surface_.clear();
   for (std::uint32_t t = 0; t < old.size(); ++t) {

@@ -106,6 +106,14 @@ TEST(ExclusionSurface, BadStartsAndOptionsAreRefusedByName) {
       "start triangles 1 and 2 cross or touch");
   EXPECT_EQ(message(triangles({{0.2, 0.2, 0.5}, {0.8, 0.2, 0.5}, {0.5, 0.2, 0.5}}), options(1)),
             "start triangle 1 has no area");
+  Mesh crossed = cube;  // a corner pushed through the opposite face: still closed, but crossing itself
+  crossed.points[0] = {0.5, 0.5, 1.5};
+  try {
+    exclusion_surface(crossed, inside, options(1), no_progress());
+    ADD_FAILURE() << "a region crossing itself was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("the region's boundary crosses itself"), std::string::npos) << e.what();
+  }
   SurfaceOptions o = options(1);
   o.radius = 0;
   EXPECT_NE(message(inside, o).find("option 'radius'"), std::string::npos);

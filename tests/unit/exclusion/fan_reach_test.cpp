@@ -125,3 +125,22 @@ TEST(FanReach, FlatFanStopsTheRadiusShortOfAPlaneAbove) {
   EXPECT_EQ(free.positive, unbounded);  // moving off the plane only takes p away from that edge
   EXPECT_EQ(free.negative, unbounded);
 }
+
+// A point term that stays at its start distance (its nearest point is static) left rounding slivers in the
+// face piece that a loose confirmation accepted; joined with the real interval on the other side of t = 0
+// they froze the point. Found by a review's stress test; the true positive reach is about 1.373.
+TEST(FanReach, RoundingSliversDoNotFreezeACoplanarFan) {
+  const std::vector<Vec3> ring{{-0.55388356480115442, -0.47112659258704065, 0},
+                               {0.1123472124170182, -0.61308259707385893, 0},
+                               {0.57875989757757251, -0.20626512823461945, 0},
+                               {0.59574973188364089, 0.50674498591828576, 0}};
+  const std::vector<std::uint32_t> ids{0, 1, 2, 3};
+  const FanMove f{{0, 0, 0}, {-0.64791110716757583, 0.76171595572686157, 0}, ring, ids, false};
+  Obstacle o;
+  o.corners = 1;
+  o.at[0] = {-0.64618768933928994, -0.491547674188828, 0};
+  Reach reach;
+  limit_fan(f, o, 0.26894085188634215, reach);
+  EXPECT_NEAR(reach.positive, 1.373, 1e-3);
+  EXPECT_EQ(reach.negative, unbounded);
+}
