@@ -99,9 +99,6 @@ void Curves::index(double cell) {
   // vertices and segments near each other in memory.
   renumber();
   segments_.clear();
-  // This level's segments, then two for each split: no reallocation while the level runs (a no-op when the
-  // run's estimate above holds).
-  segments_.reserve(region_.edges() + 3 * at_.size());
   grid_ = SegmentGrid(region_.bbox(), cell);
   query_ = 0;
   for (std::size_t e = 0; e < region_.edges(); ++e) add(region_.edge_start(e), region_.edge_end(e));
@@ -134,10 +131,7 @@ void Curves::limit(const SplitFrame& f, std::uint32_t id, std::uint32_t self, do
   // Brute force measures every term of every segment; the grid's queries measure each vertex's once.
   const bool at_u = opt_.brute_force || first_visit(s.from), at_v = opt_.brute_force || first_visit(s.to);
   limit_exact(f, s.u, s.v, r, limits, at_u, at_v);
-  // A side stopped below the stuck threshold can only decide the split by leaving the point at the
-  // midpoint, whatever its exact value: as 0 it lets the terms that only narrow it be skipped.
-  if (limits.positive < stuck_fraction * f.h) limits.positive = 0;
-  if (limits.negative < stuck_fraction * f.h) limits.negative = 0;
+  limits.settle(f.h);
 }
 
 // The limits on both sides, from the segments near the split: those within r of where the new segments
@@ -160,8 +154,7 @@ Reach Curves::reach(const SplitFrame& f, double r, std::uint32_t v) {
   ++query_;
   for (double t = std::max(f.h, r);; t *= 2) {
     auto visit = [&](std::uint32_t id) {
-      // Once both sides are below the stuck threshold the point stays at the midpoint, whatever else is near.
-      if (limits.positive < stuck_fraction * f.h && limits.negative < stuck_fraction * f.h) return;
+      if (limits.stuck(f.h)) return;
       Segment& s = segments_[id];
       if (s.seen == query_ || apart(f, s, std::min(limits.positive, t), std::min(limits.negative, t), r)) return;
       s.seen = query_;

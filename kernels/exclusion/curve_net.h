@@ -16,9 +16,6 @@ namespace selfsim::exclusion {
 
 inline constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
 
-// A point that can move less than this fraction of its half segment on both sides stays at the midpoint.
-inline constexpr double stuck_fraction = 1e-6;
-
 struct Segment {
   Vec2 u, v;
   std::uint32_t from = none, to = none;  // the curve's vertices at u and v (none for the boundary's)

@@ -13,9 +13,23 @@
 
 namespace selfsim::exclusion {
 
+// A point that can move less than this fraction of its half segment (or half edge) on both sides stays at
+// the midpoint, and is counted as stuck.
+inline constexpr double stuck_fraction = 1e-6;
+
 // How far the point may move: t in [0, positive] along the line's direction, in [0, negative] against it.
 struct Reach {
   double positive = unbounded, negative = unbounded;
+
+  // Both sides below the stuck threshold for half length h: the point stays at the midpoint, whatever else
+  // is near.
+  bool stuck(double h) const { return positive < stuck_fraction * h && negative < stuck_fraction * h; }
+  // A side stopped below the threshold can only decide the split by leaving the point at the midpoint,
+  // whatever its exact value: as 0 it lets the terms that only narrow it be skipped.
+  void settle(double h) {
+    if (positive < stuck_fraction * h) positive = 0;
+    if (negative < stuck_fraction * h) negative = 0;
+  }
 
   // Stops both sides at the first t of `violated` (a violation around t = 0 stops both at once).
   void block(Interval violated) {

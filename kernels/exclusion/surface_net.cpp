@@ -116,7 +116,7 @@ void Surfaces::subdivide(int level, double r) {
       const int k = he.k, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
       std::array<std::uint32_t, 4> ring{c[k], mid_of[3 * he.triangle + k2], mid_of[3 * he.triangle + k1], c[k1]};
       std::array<std::uint32_t, 3> fan{4 * he.triangle + k, 4 * he.triangle + 3, 4 * he.triangle + k1};
-      if (reversed) std::reverse(ring.begin(), ring.end()), std::reverse(fan.begin(), fan.end());
+      if (reversed) std::reverse(ring.begin(), ring.end());
       return std::pair{ring, fan};
     };
     const HalfEdge& first = half[edges[e].first];
@@ -189,13 +189,6 @@ Reach Surfaces::reach(const Midpoint& mid, double r) {
   Reach limits;
   ++query_;
   for (int i = 0; i < mid.fan_size; ++i) seen_[mid.fan[i]] = query_;  // the fan moves with the point
-  auto stuck = [&] {
-    return limits.positive < surface_stuck_fraction * mid.h && limits.negative < surface_stuck_fraction * mid.h;
-  };
-  auto settle = [&] {  // as in 2D: a side stopped below the stuck threshold counts as 0
-    if (limits.positive < surface_stuck_fraction * mid.h) limits.positive = 0;
-    if (limits.negative < surface_stuck_fraction * mid.h) limits.negative = 0;
-  };
   // The fan's own static edges first: they keep it from folding onto itself.
   const int ring_edges = mid.closed ? mid.ring_size : mid.ring_size - 1;
   for (int i = 0; i < ring_edges; ++i) {
@@ -204,7 +197,7 @@ Reach Surfaces::reach(const Midpoint& mid, double r) {
     TermsWanted wanted;
     wanted.corner = {first_visit(mid.ring[i]), first_visit(mid.ring[j]), false};
     limit_fan(f, own, r, limits, wanted);
-    settle();
+    limits.settle(mid.h);
   }
   for (double t = std::max(mid.h, r);; t *= 2) {
     BBox3 swept;
@@ -217,7 +210,7 @@ Reach Surfaces::reach(const Midpoint& mid, double r) {
              b.min.z <= near.max.z && b.max.z >= near.min.z;
     };
     grid_.visit(near, [&](std::uint32_t id) {
-      if (stuck()) return;
+      if (limits.stuck(mid.h)) return;
       if (id & boundary_bit) {
         const std::uint32_t b = id & ~boundary_bit;
         if (boundary_seen_[b] == query_) return;
@@ -238,9 +231,9 @@ Reach Surfaces::reach(const Midpoint& mid, double r) {
         wanted.corner = {first_visit(c[0]), first_visit(c[1]), first_visit(c[2])};
         limit_fan(f, o, r, limits, wanted);
       }
-      settle();
+      limits.settle(mid.h);
     });
-    if (stuck() || (limits.positive <= t && limits.negative <= t) || t > far_) return limits;
+    if (limits.stuck(mid.h) || (limits.positive <= t && limits.negative <= t) || t > far_) return limits;
   }
 }
 
@@ -249,7 +242,7 @@ void Surfaces::move(std::size_t k, double r, LevelReport& report) {
   const Reach limits = reach(mid, r);
   double t = chosen_move(limits);
   ++report.splits;
-  if (std::abs(t) < surface_stuck_fraction * mid.h) {
+  if (std::abs(t) < stuck_fraction * mid.h) {
     ++report.stuck;
     return;
   }

@@ -15,9 +15,6 @@
 
 namespace selfsim::exclusion {
 
-// A point that can move less than this fraction of its half edge on both sides stays at the midpoint.
-inline constexpr double surface_stuck_fraction = 1e-6;
-
 // One midpoint of a level: its vertex, its line, and the fan of new triangles around it.
 struct Midpoint {
   std::uint32_t vertex = 0;
