@@ -146,16 +146,14 @@ void limit_fan(const FanMove& f, const Obstacle& o, double r, Reach& reach, cons
   std::array<Vec3, 3> at{};
   for (int k = 0; k < o.corners; ++k) at[k] = o.at[k] - f.m;
   const Vec3 origin{};
-  if (wanted.point) {
-    if (o.corners == 1)
-      term(reach, r, norm(at[0]), either, 0, [&](double rho) { return line.point(at[0], rho); });
-    else if (o.corners == 2)
-      term(reach, r, point_segment_distance(origin, at[0], at[1]), either, 0,
-           [&](double rho) { return line.segment(at[0], at[1], rho); });
-    else
-      term(reach, r, point_triangle_distance(origin, at[0], at[1], at[2]), either, 0,
-           [&](double rho) { return line.triangle(at[0], at[1], at[2], rho); });
-  }
+  if (o.corners == 1)
+    term(reach, r, norm(at[0]), either, 0, [&](double rho) { return line.point(at[0], rho); });
+  else if (o.corners == 2)
+    term(reach, r, point_segment_distance(origin, at[0], at[1]), either, 0,
+         [&](double rho) { return line.segment(at[0], at[1], rho); });
+  else
+    term(reach, r, point_triangle_distance(origin, at[0], at[1], at[2]), either, 0,
+         [&](double rho) { return line.triangle(at[0], at[1], at[2], rho); });
   for (int k = 0; k < o.corners; ++k) {
     if (!wanted.corner[k]) continue;
     for (std::size_t i = 0; i < triangles; ++i) {

@@ -48,10 +48,10 @@ struct Obstacle {
   int corners = 3;
 };
 
-// Which of an obstacle's terms to measure: a caller that has measured a corner or edge already (it belongs
-// to a neighbouring obstacle too) saves the work. Edge k joins corners k and k + 1.
+// Which of an obstacle's corner and edge terms to measure (its point term always is): a caller that has
+// measured a corner or edge already (it belongs to a neighbouring obstacle too) saves the work. Edge k joins
+// corners k and k + 1.
 struct TermsWanted {
-  bool point = true;
   std::array<bool, 3> corner{true, true, true}, edge{true, true, true};
 };
 
