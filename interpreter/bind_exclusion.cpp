@@ -104,7 +104,8 @@ int exclusion_discs(lua_State* L) {
 }  // namespace
 
 void open_exclusion(lua_State* L) {
-  const luaL_Reg functions[] = {{"curve", exclusion_curve}, {"discs", exclusion_discs}, {nullptr, nullptr}};
+  const luaL_Reg functions[] = {
+      {"curve", exclusion_curve}, {"discs", exclusion_discs}, {"surface", exclusion_surface}, {nullptr, nullptr}};
   luaL_newlib(L, functions);
   lua_setglobal(L, "exclusion");
 }

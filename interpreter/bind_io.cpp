@@ -16,6 +16,7 @@
 #include "interpreter/style_reader.h"
 #include "interpreter/value_types.h"
 #include "kernels/geom/check.h"
+#include "kernels/geom/level_set.h"
 #include "kernels/geom/lower_case.h"
 #include "kernels/io/colour.h"
 #include "kernels/io/csv_file.h"
@@ -66,6 +67,10 @@ io::SaveOptions read_save_options(lua_State* L, int index, const io::Format& f) 
   // marker, 1 in a blob).
   if (!s.size_unit.empty() && std::find(s.given.begin(), s.given.end(), "stroke_width") == s.given.end())
     s.stroke_width = {s.size_unit == "mm" ? 0.3 : s.size_unit == "cm" ? 0.03 : 0.3 / 25.4};
+  if (has("voxel") && o.has("voxel")) {
+    s.voxel = o.number("voxel", 0);
+    if (!(s.voxel > 0)) throw Error("option 'voxel' must be a positive number, got " + number_text(s.voxel));
+  }
   io::check_options(f, o.unread());
   o.finish();
   return s;
@@ -138,6 +143,30 @@ io::CsvRows csv_rows(lua_State* L) {
   return rows;
 }
 
+// save(volume, "file.ext", opts?): its boundary mesh at the voxel size (a .vdb: the level set of that).
+int save_volume(lua_State* L, const Volume& vol) {
+  RunContext& run = RunContext::of(L);
+  if (lua_type(L, 2) != LUA_TSTRING) throw Error("argument 2 must be a file name, got " + describe(L, 2));
+  const std::string name = text_value(L, 2, "argument 2 (the file name)");
+  const io::Format* format = io::find_format(lower_case(std::filesystem::path(name).extension().string()));
+  if (format == nullptr || !format->holds(io::ValueKind::Mesh)) {
+    std::vector<std::string> able;
+    for (const io::Format& f : io::formats())
+      if (f.holds(io::ValueKind::Mesh)) able.push_back(f.extension);
+    throw Error("cannot save a volume as '" + shown_text(std::filesystem::path(name).extension().string()) +
+                "', expected one of: " + quoted_list(able));
+  }
+  io::SaveOptions opt = read_save_options(L, 3, *format);
+  if (opt.voxel == 0) opt.voxel = vol.default_voxel();
+  const Mesh boundary = with_budget(L, [&](const PointBudget& b) { return volume_boundary(vol, opt.voxel, b, run); });
+  opt.budget = run_budget(L);
+  const std::string written = io::save(&boundary, run.config.out_dir, name, opt, run);
+  if (!run.config.quiet)
+    std::printf("wrote %s (a volume's boundary: %zu points)\n", shown_text(written, 4096).c_str(),
+                boundary.points.size());
+  return 0;
+}
+
 int save(lua_State* L) {
   return call_kernel(L, "save", [&] {
     RunContext& run = RunContext::of(L);
@@ -153,12 +182,14 @@ int save(lua_State* L) {
       push_group(L, 1);
       lua_replace(L, 1);
     }
+    if (const Held<Volume> vol = test_volume(L, 1)) return save_volume(L, *vol);
     const std::optional<AnyValue> v = test_any(L, 1);
-    if (!v) throw Error("argument 1 must be a curve, a mesh or a list of curves, got " + describe(L, 1));
+    if (!v) throw Error("argument 1 must be a curve, a mesh, a volume or a list of curves, got " + describe(L, 1));
     if (lua_type(L, 2) != LUA_TSTRING) throw Error("argument 2 must be a file name, got " + describe(L, 2));
     const std::string name = text_value(L, 2, "argument 2 (the file name)");
     const io::Format& format = io::format_for(name, io::kind_of(v->ref()));
-    const io::SaveOptions opt = read_save_options(L, 3, format);
+    io::SaveOptions opt = read_save_options(L, 3, format);
+    opt.budget = run_budget(L);
     if (format.extension == ".svg") warn_if_far(L, *std::get<const Polyline*>(v->ref()));
     if (format.extension == ".stl") warn_if_coinciding(L, *std::get<const Mesh*>(v->ref()));
     const std::string written = io::save(v->ref(), run.config.out_dir, name, opt, run);

@@ -38,25 +38,25 @@ void check_name(const std::string& name) {
 
 int load(lua_State* L) {
   return call_kernel(L, "load", [&] {
-    RunContext& run = RunContext::of(L);
     const std::string name = text_value(L, 1, "argument 1 (the file name)");
     if (lua_gettop(L) > 1) throw Error("takes one argument, the file name");
-    check_name(name);
-    // Opened without following any link, and read through that descriptor: the name cannot be swapped
-    // for a link to somewhere else between the check and the read.
-    const io::FileBeneath file(run.config.recipe.parent_path(), name);
-    std::variant<Polyline, Polyline3, Mesh> value = io::dataset_value(io::read_dataset(file.name(), name));
-    std::visit(
-        [&](auto& v) {
-          check_run_budget(L, budget_size(v), "'" + shown_text(name) + "'");
-          push_geometry(L, std::move(v));
-        },
-        value);
+    std::variant<Polyline, Polyline3, Mesh> value = load_value(L, name);
+    std::visit([&](auto& v) { push_geometry(L, std::move(v)); }, value);
     return 1;
   });
 }
 
 }  // namespace
+
+std::variant<Polyline, Polyline3, Mesh> load_value(lua_State* L, const std::string& name) {
+  check_name(name);
+  // Opened without following any link, and read through that descriptor: the name cannot be swapped
+  // for a link to somewhere else between the check and the read.
+  const io::FileBeneath file(RunContext::of(L).config.recipe.parent_path(), name);
+  std::variant<Polyline, Polyline3, Mesh> value = io::dataset_value(io::read_dataset(file.name(), name));
+  std::visit([&](auto& v) { check_run_budget(L, budget_size(v), "'" + shown_text(name) + "'"); }, value);
+  return value;
+}
 
 void open_load(lua_State* L) { lua_register(L, "load", load); }
 

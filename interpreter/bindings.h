@@ -2,10 +2,14 @@
 #pragma once
 
 #include <lua.hpp>
+#include <string>
+#include <variant>
 
 #include "interpreter/lua_support.h"
+#include "kernels/geom/polyline.h"
 #include "kernels/geom/vec2.h"
 #include "kernels/geom/vec3.h"
+#include "kernels/geom/volume.h"
 
 namespace selfsim::lsystem {
 struct Grammar;
@@ -24,9 +28,16 @@ void open_hoist(lua_State* L);       // bind_hoist.cpp: bspline{}, catmull_rom{}
 void open_develop(lua_State* L);     // bind_develop.cpp: develop()
 void open_exclusion(lua_State* L);   // bind_exclusion.cpp: exclusion.curve{}
 void open_analysis(lua_State* L);    // bind_analysis.cpp: dimension()
+void open_volume(lua_State* L);      // bind_volume.cpp: Volume, volume.box{} and the rest
 
 // bind_lsystem.cpp: the grammar at index, or null (develop() takes one as its source).
 Held<lsystem::Grammar> test_grammar(lua_State* L, int index);
+// bind_exclusion_surface.cpp: exclusion.surface{}, registered by open_exclusion.
+int exclusion_surface(lua_State* L);
+// bind_volume.cpp: the Volume at index, or null.
+Held<Volume> test_volume(lua_State* L, int index);
+// bind_load.cpp: what load(name) reads, checked against the run's budget but not yet pushed.
+std::variant<Polyline, Polyline3, Mesh> load_value(lua_State* L, const std::string& name);
 // bind_group.cpp: pushes group{...} of the list at index (save({ a, b }, ...) uses it too).
 void push_group(lua_State* L, int index);
 // bind_group.cpp: c:reverse() for Curve (V = Vec2) and Curve3 (Vec3).
@@ -47,6 +58,7 @@ inline void open_all(lua_State* L) {
   open_develop(L);
   open_exclusion(L);
   open_analysis(L);
+  open_volume(L);
 }
 
 }  // namespace selfsim::interp

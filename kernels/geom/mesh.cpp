@@ -37,4 +37,10 @@ Vec3 area_normal(const Mesh& m, const Triangle& t) {
   return cross(b - a, c - a);
 }
 
+double surface_area(const Mesh& m) {
+  double a = 0;
+  for (const Triangle& t : m.triangles) a += 0.5 * norm(area_normal(m, t));
+  return a;
+}
+
 }  // namespace selfsim

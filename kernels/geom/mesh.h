@@ -39,4 +39,7 @@ struct Mesh {
 // Outward normal of triangle t times twice its area (zero for a degenerate triangle).
 Vec3 area_normal(const Mesh& m, const Triangle& t);
 
+// The sum of the triangles' areas.
+double surface_area(const Mesh& m);
+
 }  // namespace selfsim

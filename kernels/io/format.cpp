@@ -25,6 +25,11 @@ const std::vector<Format>& formats() {
       {".stl", "binary STL: slicers for 3D printing", {M}, {}, write_stl},
       {".obj", "Wavefront OBJ: Blender, MeshLab", {M}, {}, write_obj},
       {".ply", "binary PLY: MeshLab, Blender", {M}, {}, write_ply},
+      {".vdb",
+       "OpenVDB distance grid: Blender, Houdini (a closed mesh's level set, an open one's distance)",
+       {M},
+       {"voxel"},
+       write_vdb},
   };
   return all;
 }

@@ -53,6 +53,8 @@ void SaveOptions::validate() const {
     throw Error("option 'size' takes the units mm, cm or in, got '" + shown(size_unit) + "'");
   if (!size_unit.empty() && !(size > 0 && size <= 100000))
     throw Error("option 'size' must be a positive length of at most 100000" + size_unit);
+  if (!(voxel >= 0 && voxel < 1e300))
+    throw Error("option 'voxel' must be a positive number, got " + number_text(voxel));
 }
 
 std::string save(const ValueRef& v, const std::filesystem::path& root, const std::string& name, const SaveOptions& opt,

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "kernels/geom/budget.h"
 #include "kernels/geom/progress.h"
 #include "kernels/io/format.h"
 #include "kernels/io/output_file.h"
@@ -22,11 +23,16 @@ struct SaveOptions {
   std::vector<std::string> fill;               // fill colours (or "none") with the even-odd rule; empty for none
   double size = 800;                           // .svg: width or height, whichever is larger, in size_unit
   std::string size_unit;                       // .svg: "" (pixels), "mm", "cm" or "in": a physical size for plotters
+  double voxel = 0;                            // .vdb: the voxel size; 0 for 1/128 of the mesh's longest side
+  PointBudget budget;                          // the run's, for what a writer builds on the way (a .vdb's grid)
   std::vector<std::string> given;              // the options the caller set, checked against the format's options
 
   // Throws Error naming the first bad field.
   void validate() const;
 };
+
+// The voxel size a .vdb of m is written at: opt.voxel, or 1/128 of m's longest side.
+double vdb_voxel(const Mesh& m, const SaveOptions& opt);
 
 // Writes v to `name` (a relative path) inside the folder `root` and returns the path written; throws Error
 // for an unknown extension or one that cannot hold v, an option of another format, an empty value, a value

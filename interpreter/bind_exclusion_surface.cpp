@@ -1,0 +1,125 @@
+// exclusion.surface{ region, start, radius, factor, levels } -> Mesh, report: seed 004's exclusion-radius
+// surface (kernels/exclusion/exclusion_surface.h) grown inside a Volume. The start is a Mesh or, for one
+// triangle, a table of its three points. The region's boundary is made at a voxel size half the last
+// level's radius unless the volume gives one. A thin adapter.
+#include <cmath>
+#include <string>
+
+#include "interpreter/bindings.h"
+#include "interpreter/lua_support.h"
+#include "interpreter/options_reader.h"
+#include "interpreter/point_reader.h"
+#include "interpreter/run_context.h"
+#include "interpreter/value_types.h"
+#include "kernels/exclusion/exclusion_surface.h"
+#include "kernels/geom/check.h"
+#include "kernels/geom/level_set.h"
+
+namespace selfsim::interp {
+
+namespace {
+
+// start = mesh, or start = { {x,y,z}, {x,y,z}, {x,y,z} }: one triangle.
+Mesh read_start(lua_State* L, Options& o) {
+  const int type = o.push("start");
+  Mesh m;
+  if (const Held<Mesh> given = test_geometry<Mesh>(L, -1)) {
+    m = *given;
+    m.point_fields = {};
+    m.face_fields = {};
+  } else if (type == LUA_TTABLE) {
+    m.points = read_point_list<Vec3>(L, -1, "option 'start'");
+    if (m.points.size() != 3)
+      throw Error("option 'start' must be a mesh or the three points of one triangle, got " +
+                  std::to_string(m.points.size()) + " points");
+    m.triangles = {{0, 1, 2}};
+  } else {
+    throw Error("option 'start' must be a mesh or the three points of one triangle, got " + describe(L, -1));
+  }
+  lua_pop(L, 1);
+  return m;
+}
+
+// { stuck = n, voxel = v, region_triangles = n, levels = { { triangles, moves, stuck, seconds }, ... } }
+void push_report(lua_State* L, const exclusion::SurfaceResult& r, double voxel, std::size_t region_triangles,
+                 std::size_t start_triangles) {
+  lua_createtable(L, 0, 4);
+  std::size_t stuck = 0;
+  for (const auto& l : r.levels) stuck += l.stuck;
+  lua_pushinteger(L, static_cast<lua_Integer>(stuck));
+  lua_setfield(L, -2, "stuck");
+  lua_pushnumber(L, voxel);
+  lua_setfield(L, -2, "voxel");
+  lua_pushinteger(L, static_cast<lua_Integer>(region_triangles));
+  lua_setfield(L, -2, "region_triangles");
+  lua_createtable(L, static_cast<int>(r.levels.size()), 0);
+  double triangles = static_cast<double>(start_triangles);
+  for (std::size_t i = 0; i < r.levels.size(); ++i) {
+    triangles *= 4;
+    lua_createtable(L, 0, 4);
+    lua_pushinteger(L, static_cast<lua_Integer>(triangles));
+    lua_setfield(L, -2, "triangles");
+    lua_pushinteger(L, static_cast<lua_Integer>(r.levels[i].splits));
+    lua_setfield(L, -2, "moves");
+    lua_pushinteger(L, static_cast<lua_Integer>(r.levels[i].stuck));
+    lua_setfield(L, -2, "stuck");
+    lua_pushnumber(L, r.levels[i].seconds);
+    lua_setfield(L, -2, "seconds");
+    lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+  }
+  lua_setfield(L, -2, "levels");
+}
+
+}  // namespace
+
+int exclusion_surface(lua_State* L) {
+  return call_kernel(L, "exclusion.surface", [&] {
+    if (lua_gettop(L) != 1 || !lua_istable(L, 1))
+      throw Error("takes one table of options, exclusion.surface{ region = ..., start = ..., radius = ... }");
+    Options o(L, 1);
+    o.require("region", "the volume to fill, e.g. region = volume.box{ min = {0,0,0}, max = {1,1,1} }");
+    o.require("start",
+              "the start surface, a mesh or one triangle's points, e.g. start = { {0.2,0.2,0.5}, "
+              "{0.8,0.2,0.5}, {0.5,0.8,0.5} }");
+    o.require("radius", "the first level's exclusion radius, e.g. radius = 0.1");
+    o.require("levels", "how many times every triangle is split in four, e.g. levels = 6");
+    Held<Volume> region;
+    if (o.push("region") != LUA_TNIL) {
+      region = test_volume(L, -1);
+      if (!region)
+        throw Error("option 'region' must be a volume (volume.box{}, volume.sphere{}, volume.mesh(...)), got " +
+                    describe(L, -1));
+    }
+    lua_pop(L, 1);
+    const Mesh start = o.has("start") ? read_start(L, o) : Mesh{};
+    exclusion::SurfaceOptions opt;
+    opt.radius = o.number("radius", opt.radius);
+    opt.factor = o.number("factor", opt.factor);
+    opt.levels = static_cast<int>(o.integer("levels", 1, 0, 20));
+    o.finish();
+    opt.validate();
+    // The region resolved finer than the last radius: its boundary then bends less than the radius does.
+    const double last = opt.radius * std::pow(opt.factor, std::max(opt.levels - 1, 0));
+    const double suggested = last / 2;
+    double voxel = region->voxel > 0 ? region->voxel : suggested;
+    if (region->voxel > suggested && region->kind != Volume::Kind::box && region->kind != Volume::Kind::mesh) {
+      const std::string message =
+          recipe_where(L) + "exclusion.surface: the region's voxel size " + number_text(region->voxel) +
+          " is coarse for the last level's radius " + number_text(last) +
+          " (its boundary is only as fine as a voxel); suggested voxel = " + number_text(suggested);
+      lua_warning(L, message.c_str(), 0);
+    }
+    RunContext& run = RunContext::of(L);
+    const Mesh boundary = with_budget(L, [&](const PointBudget& b) { return volume_boundary(*region, voxel, b, run); });
+    exclusion::SurfaceResult r = with_budget(L, [&](const PointBudget& b) {
+      opt.budget = b;
+      opt.budget.held += budget_size(boundary);
+      return exclusion::exclusion_surface(boundary, start, opt, run);
+    });
+    push_geometry(L, std::move(r.surface));
+    push_report(L, r, voxel, boundary.triangles.size(), start.triangles.size());
+    return 2;
+  });
+}
+
+}  // namespace selfsim::interp

@@ -1,0 +1,214 @@
+#include "kernels/geom/volume.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include "kernels/geom/box_mesh.h"
+#include "kernels/geom/check.h"
+#include "kernels/geom/mesh_intersections.h"
+
+namespace selfsim {
+
+namespace {
+
+// The first edge of m that is not shared by exactly two triangles, or a pair of triangles running along an
+// edge the same way: "its edge from point 3 to point 7 (in triangle 2) has no other triangle".
+std::string first_open_edge(const Mesh& m) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::size_t>> edges;  // (low, high) -> triangles
+  for (std::size_t t = 0; t < m.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = m.triangles[t][k], b = m.triangles[t][(k + 1) % 3];
+      edges[{std::min(a, b), std::max(a, b)}].push_back(t);
+    }
+  for (std::size_t t = 0; t < m.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = m.triangles[t][k], b = m.triangles[t][(k + 1) % 3];
+      const std::vector<std::size_t>& owners = edges[{std::min(a, b), std::max(a, b)}];
+      const std::string edge = "its edge from point " + std::to_string(a + 1) + " to point " + std::to_string(b + 1) +
+                               " (in triangle " + std::to_string(t + 1) + ")";
+      if (owners.size() == 1) return edge + " has no other triangle";
+      if (owners.size() > 2) return edge + " has " + std::to_string(owners.size()) + " triangles";
+      const std::size_t other = owners[0] == t ? owners[1] : owners[0];
+      for (int j = 0; j < 3; ++j)
+        if (m.triangles[other][j] == a && m.triangles[other][(j + 1) % 3] == b)
+          return edge + " runs the same way in triangle " + std::to_string(other + 1) +
+                 " (the triangles face opposite ways)";
+    }
+  return "";
+}
+
+double signed_volume(const Mesh& m) {
+  double v = 0;
+  for (const Triangle& t : m.triangles) v += dot(m.points[t[0]], cross(m.points[t[1]], m.points[t[2]]));
+  return v / 6;
+}
+
+std::string point_text(Vec3 p) {
+  return "{" + number_text(p.x) + ", " + number_text(p.y) + ", " + number_text(p.z) + "}";
+}
+
+}  // namespace
+
+Volume Volume::box(Vec3 lo, Vec3 hi) {
+  if (!(is_finite(lo) && is_finite(hi))) throw Error("options 'min' and 'max' must be finite points");
+  if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
+    throw Error("option 'max' must be above 'min' in every coordinate, got min = " + point_text(lo) +
+                ", max = " + point_text(hi));
+  Volume v;
+  v.kind = Kind::box;
+  v.lo = lo;
+  v.hi = hi;
+  return v;
+}
+
+Volume Volume::sphere(Vec3 centre, double radius) {
+  if (!is_finite(centre)) throw Error("option 'center' must be a finite point");
+  check_between(radius, 1e-300, 1e300, "option 'radius'");
+  Volume v;
+  v.kind = Kind::sphere;
+  v.centre = centre;
+  v.radius = radius;
+  return v;
+}
+
+Volume Volume::closed_mesh(Mesh m, Progress& progress) {
+  m.validate();
+  if (m.triangles.empty()) throw Error("the mesh has no triangles");
+  const std::string open = first_open_edge(m);
+  if (!open.empty()) throw Error("the mesh is not closed: " + open);
+  if (const auto pair = first_intersection(m, progress))
+    throw Error("the mesh crosses itself: its triangles " + std::to_string(pair->first + 1) + " and " +
+                std::to_string(pair->second + 1) + " meet near " + point_text(pair->where));
+  const double v = signed_volume(m);
+  if (!(std::abs(v) > 0)) throw Error("the mesh encloses no volume");
+  if (v < 0)
+    for (Triangle& t : m.triangles) std::swap(t[1], t[2]);
+  m.point_fields = {};
+  m.face_fields = {};
+  Volume out;
+  out.kind = Kind::mesh;
+  out.mesh = std::make_shared<const Mesh>(std::move(m));
+  return out;
+}
+
+Volume Volume::combine(Kind kind, std::vector<std::shared_ptr<const Volume>> parts) {
+  if (parts.size() < 2) throw Error("takes at least two volumes, got " + std::to_string(parts.size()));
+  Volume v;
+  v.kind = kind;
+  v.parts = std::move(parts);
+  return v;
+}
+
+BBox3 Volume::bbox() const {
+  switch (kind) {
+    case Kind::box:
+      return {lo, hi};
+    case Kind::sphere:
+      return {centre - Vec3{radius, radius, radius}, centre + Vec3{radius, radius, radius}};
+    case Kind::mesh:
+      return mesh->bbox();
+    case Kind::unite: {
+      BBox3 b;
+      for (const auto& p : parts) b.add(p->bbox());
+      return b;
+    }
+    case Kind::subtract:
+      return parts[0]->bbox();
+  }
+  return {};
+}
+
+std::size_t Volume::bytes() const {
+  std::size_t b = sizeof(Volume);
+  if (mesh) b += mesh->bytes();
+  for (const auto& p : parts) b += p->bytes();
+  return b;
+}
+
+std::string Volume::summary() const {
+  std::string s;
+  switch (kind) {
+    case Kind::box:
+      s = "box " + point_text(lo) + " to " + point_text(hi);
+      break;
+    case Kind::sphere:
+      s = "sphere at " + point_text(centre) + ", radius " + number_text(radius);
+      break;
+    case Kind::mesh:
+      s = "mesh of " + std::to_string(mesh->triangles.size()) + " triangles";
+      break;
+    case Kind::unite:
+    case Kind::subtract:
+      s = std::string(kind == Kind::unite ? "union" : "difference") + " of " + std::to_string(parts.size()) +
+          " volumes";
+      break;
+  }
+  return "Volume(" + s + (voxel > 0 ? ", voxel " + number_text(voxel) : std::string()) + ")";
+}
+
+double Volume::default_voxel() const {
+  if (voxel > 0) return voxel;
+  const Vec3 s = bbox().size();
+  return std::max({s.x, s.y, s.z}) / 128;
+}
+
+namespace {
+
+// Splits in sphere_mesh for a tolerance. A face's deepest point is its centre, which lies radius (1 - cos b)
+// inside, b the angle from the centre to a corner: a / sqrt(3) for a face of edge angle a, with a margin of
+// 1.2 because splitting makes the faces in the middle of an icosahedron's face larger than the rest. The
+// icosahedron's edges span atan(2) = 63.4 degrees, halved by each split.
+int sphere_splits(double radius, double tolerance) {
+  double angle = 1.1071487177940904;
+  int splits = 0;
+  while (splits < 7 && radius * (1 - std::cos(1.2 * angle / std::sqrt(3.0))) > tolerance) {
+    angle /= 2;
+    ++splits;
+  }
+  return splits;
+}
+
+}  // namespace
+
+double sphere_triangles(double radius, double tolerance) {
+  return 20 * std::pow(4.0, sphere_splits(radius, tolerance));
+}
+
+Mesh sphere_mesh(Vec3 centre, double radius, double tolerance) {
+  const double g = (1 + std::sqrt(5.0)) / 2;
+  std::vector<Vec3> unit{{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
+                         {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
+  for (Vec3& p : unit) p = normalized(p);
+  std::vector<Triangle> faces{{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                              {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                              {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+  for (int s = sphere_splits(radius, tolerance); s > 0; --s) {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> middle;
+    auto mid = [&](std::uint32_t a, std::uint32_t b) {
+      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+      const auto found = middle.find(key);
+      if (found != middle.end()) return found->second;
+      unit.push_back(normalized(unit[a] + unit[b]));
+      return middle[key] = static_cast<std::uint32_t>(unit.size() - 1);
+    };
+    std::vector<Triangle> finer;
+    finer.reserve(4 * faces.size());
+    for (const Triangle& t : faces) {
+      const std::uint32_t ab = mid(t[0], t[1]), bc = mid(t[1], t[2]), ca = mid(t[2], t[0]);
+      finer.push_back({t[0], ab, ca});
+      finer.push_back({t[1], bc, ab});
+      finer.push_back({t[2], ca, bc});
+      finer.push_back({ab, bc, ca});
+    }
+    faces = std::move(finer);
+  }
+  Mesh m;
+  m.triangles = std::move(faces);
+  m.points.reserve(unit.size());
+  for (Vec3 u : unit) m.points.push_back(centre + radius * u);
+  return m;
+}
+
+}  // namespace selfsim

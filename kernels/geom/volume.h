@@ -1,0 +1,54 @@
+// A closed region of space, the value `volume.box/sphere/mesh` and their union and difference make: where an
+// exclusion surface (seed 004 in 3D) grows, and what a .vdb file stores as a level set.
+//
+// A Volume keeps its description, not a grid, so that each use picks its own resolution: a run resolves the
+// region finer than the last radius it reaches (level_set.h), a .vdb file at the voxel size saved. A box, a
+// sphere and a mesh have exact boundaries (a sphere's within a quarter voxel, see sphere_mesh); a union or
+// difference gets its boundary from OpenVDB's level-set CSG at the voxel size, so it is as fine as the voxels.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "kernels/geom/bbox.h"
+#include "kernels/geom/mesh.h"
+#include "kernels/geom/progress.h"
+
+namespace selfsim {
+
+struct Volume {
+  enum class Kind { box, sphere, mesh, unite, subtract };
+  Kind kind = Kind::box;
+  Vec3 lo, hi;                                       // box: opposite corners, lo < hi
+  Vec3 centre;                                       // sphere
+  double radius = 0;                                 // sphere, > 0
+  std::shared_ptr<const Mesh> mesh;                  // mesh: closed, not crossing itself, facing outwards
+  std::vector<std::shared_ptr<const Volume>> parts;  // unite: all of them; subtract: the first less the others
+  double voxel = 0;                                  // the voxel size given by the recipe; 0: chosen by each use
+
+  // Throw Error naming what is wrong ("option 'max' must be above 'min' in every coordinate", "the mesh is not
+  // closed: its edge from point 3 to point 7 (in triangle 2) has no other triangle", ...).
+  static Volume box(Vec3 lo, Vec3 hi);
+  static Volume sphere(Vec3 centre, double radius);
+  // Turns an inward-facing mesh outwards (by its signed volume).
+  static Volume closed_mesh(Mesh m, Progress& progress);
+  static Volume combine(Kind kind, std::vector<std::shared_ptr<const Volume>> parts);
+
+  bool exact() const { return kind != Kind::unite && kind != Kind::subtract; }
+  BBox3 bbox() const;
+  // Bytes of C++ memory held (meshes included), and the description for tostring: "Volume(box, ...)".
+  std::size_t bytes() const;
+  std::string summary() const;
+  // The voxel size a use without its own choice takes: the given one, or 1/128 of the longest side.
+  double default_voxel() const;
+};
+
+// An icosphere: the icosahedron's faces split 1 -> 4 until no point lies more than `tolerance` inside the
+// sphere (at most 7 times, 327,680 triangles), corners on the sphere, facing outwards.
+Mesh sphere_mesh(Vec3 centre, double radius, double tolerance);
+
+// Triangles of sphere_mesh for `tolerance`, to predict before building.
+double sphere_triangles(double radius, double tolerance);
+
+}  // namespace selfsim

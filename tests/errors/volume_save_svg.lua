@@ -1,0 +1,1 @@
+save(volume.box { min = {0,0,0}, max = {1,1,1} }, "box.svg")

@@ -1,0 +1,1 @@
+volume.sphere { center = {0,0,0}, radius = -1 }

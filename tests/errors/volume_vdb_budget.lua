@@ -1,0 +1,2 @@
+-- args: --max-points 100000
+save(volume.box { min = {0,0,0}, max = {1,1,1} }, "box.vdb", { voxel = 0.001 })

@@ -1,0 +1,116 @@
+#include "kernels/geom/volume.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "kernels/geom/box_mesh.h"
+#include "kernels/geom/level_set.h"
+#include "kernels/geom/mesh_check.h"
+#include "kernels/geom/mesh_intersections.h"
+#include "kernels/geom/winding_number.h"
+
+namespace selfsim {
+namespace {
+
+double enclosed(const Mesh& m) {
+  double v = 0;
+  for (const Triangle& t : m.triangles) v += dot(m.points[t[0]], cross(m.points[t[1]], m.points[t[2]]));
+  return v / 6;
+}
+
+std::shared_ptr<const Volume> shared(Volume v) { return std::make_shared<const Volume>(std::move(v)); }
+
+TEST(Volume, SphereMeshIsClosedOutwardAndWithinItsTolerance) {
+  for (double tolerance : {0.1, 0.01, 0.001}) {
+    const Mesh m = sphere_mesh({1, 2, 3}, 2, tolerance);
+    EXPECT_EQ(static_cast<double>(m.triangles.size()), sphere_triangles(2, tolerance));
+    const MeshTopology t = mesh_topology(m);
+    EXPECT_TRUE(t.closed());
+    EXPECT_EQ(t.euler(), 2);
+    EXPECT_GT(enclosed(m), 0);
+    // Corners on the sphere; each face's centroid (the point farthest inside) within the tolerance.
+    for (Vec3 p : m.points) EXPECT_NEAR(norm(p - Vec3{1, 2, 3}), 2, 1e-12);
+    double deepest = 0;
+    for (const Triangle& f : m.triangles) {
+      const Vec3 c = (1.0 / 3) * (m.points[f[0]] + m.points[f[1]] + m.points[f[2]]);
+      deepest = std::max(deepest, 2 - norm(c - Vec3{1, 2, 3}));
+    }
+    EXPECT_LE(deepest, tolerance);
+    EXPECT_GT(deepest, tolerance / 20);  // not needlessly fine
+  }
+}
+
+TEST(Volume, ClosedMeshIsTurnedOutwardsAndOpenOrCrossingMeshesAreRefusedByEdge) {
+  Mesh inward = box_mesh({0, 0, 0}, {1, 1, 1});
+  for (Triangle& t : inward.triangles) std::swap(t[1], t[2]);
+  const Volume v = Volume::closed_mesh(inward, no_progress());
+  EXPECT_NEAR(enclosed(*v.mesh), 1, 1e-12);
+
+  Mesh open = box_mesh({0, 0, 0}, {1, 1, 1});
+  open.triangles.pop_back();
+  try {
+    Volume::closed_mesh(open, no_progress());
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("not closed: its edge from point"), std::string::npos) << e.what();
+  }
+  Mesh two = box_mesh({0, 0, 0}, {1, 1, 1});
+  const Mesh other = box_mesh({0.5, 0.5, 0.5}, {2, 2, 2});
+  for (Triangle t : other.triangles) two.triangles.push_back({t[0] + 8, t[1] + 8, t[2] + 8});
+  two.points.insert(two.points.end(), other.points.begin(), other.points.end());
+  EXPECT_THROW(Volume::closed_mesh(two, no_progress()), Error);
+  EXPECT_THROW(Volume::box({0, 0, 0}, {1, 0, 1}), Error);
+  EXPECT_THROW(Volume::sphere({0, 0, 0}, 0), Error);
+}
+
+TEST(Volume, UnionAndDifferenceBoundariesAreClosedAndEncloseTheRightVolume) {
+  const auto a = shared(Volume::box({0, 0, 0}, {2, 2, 1}));
+  const auto b = shared(Volume::box({1, 1, -1}, {3, 3, 2}));
+  const double voxel = 0.05;
+  const Mesh l = volume_boundary(Volume::combine(Volume::Kind::subtract, {a, b}), voxel, {}, no_progress());
+  const Mesh u = volume_boundary(Volume::combine(Volume::Kind::unite, {a, b}), voxel, {}, no_progress());
+  for (const Mesh* m : {&l, &u}) {
+    EXPECT_TRUE(mesh_topology(*m).closed());
+    EXPECT_FALSE(first_intersection(*m, no_progress()));
+  }
+  EXPECT_NEAR(enclosed(l), 3, 0.05);          // the L: 4 less the 1 x 1 x 1 notch
+  EXPECT_NEAR(enclosed(u), 4 + 12 - 1, 0.1);  // both boxes less their overlap
+  EXPECT_GT(winding_number(l, {0.5, 0.5, 0.5}), 0.5);
+  EXPECT_LT(winding_number(l, {1.5, 1.5, 0.5}), 0.5);  // the notch
+  // A sphere less a concentric smaller one: a hollow shell, two boundary surfaces.
+  const Mesh shell = volume_boundary(Volume::combine(Volume::Kind::subtract, {shared(Volume::sphere({0, 0, 0}, 1)),
+                                                                              shared(Volume::sphere({0, 0, 0}, 0.5))}),
+                                     voxel, {}, no_progress());
+  EXPECT_EQ(mesh_topology(shell).components, 2u);
+  // Both spheres' polyhedra lie up to a quarter voxel inside them, and the level sets round off a voxel's detail.
+  EXPECT_NEAR(enclosed(shell), 4 * std::numbers::pi / 3 * (1 - 0.125), 0.15);
+  // Nothing left: an error, not an empty region.
+  EXPECT_THROW(
+      volume_boundary(Volume::combine(Volume::Kind::subtract, {a, shared(Volume::box({-1, -1, -1}, {4, 4, 4}))}), voxel,
+                      {}, no_progress()),
+      Error);
+}
+
+TEST(Volume, BoundariesAreCountedAgainstTheBudgetBeforeTheyAreMade) {
+  const Volume u = Volume::combine(Volume::Kind::unite,
+                                   {shared(Volume::box({0, 0, 0}, {1, 1, 1})), shared(Volume::sphere({1, 1, 1}, 0.5))});
+  PointBudget small;
+  small.limit = boundary_size(u, 0.01) * 0.99;
+  EXPECT_THROW(volume_boundary(u, 0.01, small, no_progress()), BudgetError);
+  EXPECT_THROW(volume_boundary(u, 0, {}, no_progress()), Error);
+  EXPECT_THROW(distance_vdb(box_mesh({0, 0, 0}, {1, 1, 1}), true, 1e-7, "x", {}, no_progress()), Error);
+}
+
+TEST(Volume, DistanceFilesRepeatByteForByte) {
+  const Mesh m = sphere_mesh({0, 0, 0}, 1, 0.01);
+  const std::string a = distance_vdb(m, true, 0.05, "surface", {}, no_progress());
+  const std::string b = distance_vdb(m, true, 0.05, "surface", {}, no_progress());
+  EXPECT_EQ(a, b);
+  EXPECT_EQ(a.substr(0, 4), std::string(" BDV"));
+  EXPECT_NE(a, distance_vdb(m, true, 0.04, "surface", {}, no_progress()).substr(0, a.size()));
+}
+
+}  // namespace
+}  // namespace selfsim
