@@ -38,10 +38,11 @@ void RunContext::fraction(double done) {
   const int percent = static_cast<int>(std::clamp(done, 0.0, 1.0) * 100);
   if (percent == last_percent_) return;
   last_percent_ = percent;
-  constexpr int width = 40;
+  constexpr int width = 30;
   std::string bar(static_cast<std::size_t>(percent * width / 100), '#');
   bar.resize(width, '.');
-  std::fprintf(stderr, "\r%-16.16s [%s] %3d%%", task_.c_str(), bar.c_str(), percent);
+  std::fprintf(stderr, "\r%-24.24s [%s] %3d%% %5.0f s", task_.c_str(), bar.c_str(), percent,
+               std::chrono::duration<double>(elapsed).count());
   std::fflush(stderr);
   bar_drawn_ = true;
 }

@@ -128,7 +128,10 @@ SurfaceResult exclusion_surface(const Mesh& boundary, const Mesh& start, const S
   double r = opt.radius * n.scale;
   for (int level = 1; level <= opt.levels; ++level, r *= opt.factor) {
     const auto begun = std::chrono::steady_clock::now();
-    progress.start(("surface level " + std::to_string(level)).c_str());
+    const double triangles = static_cast<double>(local_start.triangles.size()) * std::pow(4.0, level);
+    progress.start(
+        ("surface " + std::to_string(level) + "/" + std::to_string(opt.levels) + " " + count_text(triangles) + " tri")
+            .c_str());
     progress.step(0);
     LevelReport report;
     s.subdivide(level, r);

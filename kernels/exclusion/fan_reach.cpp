@@ -137,6 +137,14 @@ struct Line {
 
 bool shared(std::uint32_t a, std::uint32_t b) { return a != no_vertex && a == b; }
 
+// The gap between the boxes of two sets of points: no point of one's hull is nearer the other's.
+double box_gap(std::initializer_list<Vec3> a, std::initializer_list<Vec3> b) {
+  Vec3 alo = Vec3::all(INFINITY), ahi = Vec3::all(-INFINITY), blo = alo, bhi = ahi;
+  for (Vec3 p : a) alo = min_each(alo, p), ahi = max_each(ahi, p);
+  for (Vec3 p : b) blo = min_each(blo, p), bhi = max_each(bhi, p);
+  return norm(max_each(max_each(alo - bhi, blo - ahi), Vec3{}));
+}
+
 }  // namespace
 
 void limit_fan(const FanMove& f, const Obstacle& o, double r, Reach& reach, const TermsWanted& wanted) {
@@ -146,6 +154,9 @@ void limit_fan(const FanMove& f, const Obstacle& o, double r, Reach& reach, cons
   std::array<Vec3, 3> at{};
   for (int k = 0; k < o.corners; ++k) at[k] = o.at[k] - f.m;
   const Vec3 origin{};
+  // A term of distance d0 cannot act before |t| = d0 - r (see term()); with d0 at least the gap between
+  // its two parts' boxes, a term whose gap is r plus the reach of both sides or more needs no distance.
+  auto out_of_reach = [&](double gap) { return gap - r >= std::max(reach.positive, reach.negative); };
   if (o.corners == 1)
     term(reach, r, norm(at[0]), either, 0, [&](double rho) { return line.point(at[0], rho); });
   else if (o.corners == 2)
@@ -159,6 +170,7 @@ void limit_fan(const FanMove& f, const Obstacle& o, double r, Reach& reach, cons
     for (std::size_t i = 0; i < triangles; ++i) {
       if (shared(o.id[k], f.ring_id[i]) || shared(o.id[k], f.ring_id[(i + 1) % n])) continue;
       const Vec3 x = ring(i), y = ring(i + 1), w = at[k];
+      if (out_of_reach(box_gap({x, y, origin}, {w}))) continue;
       term(reach, r, point_triangle_distance(w, x, y, origin), either, 0,
            [&](double rho) { return line.corner(x, y, w, rho); });
     }
@@ -170,6 +182,7 @@ void limit_fan(const FanMove& f, const Obstacle& o, double r, Reach& reach, cons
     for (std::size_t j = 0; j < n; ++j) {
       if (shared(o.id[k], f.ring_id[j]) || shared(o.id[k1], f.ring_id[j])) continue;
       const Vec3 z = ring(j), u = at[k], v = at[k1];
+      if (out_of_reach(box_gap({z, origin}, {u, v}))) continue;
       term(reach, r, segment_segment_distance(u, v, z, origin), either, 0,
            [&](double rho) { return line.edge(z, u, v, rho); });
     }

@@ -26,6 +26,7 @@
 #include <span>
 
 #include "kernels/exclusion/reach.h"
+#include "kernels/geom/bbox.h"
 #include "kernels/geom/vec3.h"
 
 namespace selfsim::exclusion {
@@ -46,6 +47,12 @@ struct Obstacle {
   std::array<Vec3, 3> at;
   std::array<std::uint32_t, 3> id{no_vertex, no_vertex, no_vertex};
   int corners = 3;
+
+  BBox3 box() const {
+    BBox3 b;
+    for (int k = 0; k < corners; ++k) b.add(at[k]);
+    return b;
+  }
 };
 
 // Which of an obstacle's corner and edge terms to measure (its point term always is): a caller that has

@@ -1,6 +1,7 @@
 #include "kernels/exclusion/surface_net.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <tuple>
 
@@ -18,6 +19,17 @@ struct HalfEdge {
   std::uint32_t lo, hi, triangle;
   int k;
 };
+
+bool overlapping(const BBox3& a, const BBox3& b) {
+  return a.min.x <= b.max.x && a.max.x >= b.min.x && a.min.y <= b.max.y && a.max.y >= b.min.y && a.min.z <= b.max.z &&
+         a.max.z >= b.min.z;
+}
+
+// The distance between two boxes: no point of one is nearer than this to a point of the other.
+double box_distance(const BBox3& a, const BBox3& b) {
+  const Vec3 gap = max_each(max_each(a.min - b.max, b.min - a.max), Vec3{});
+  return norm(gap);
+}
 
 // The unit vector from edge a-b's line towards c, square to the edge.
 Vec3 towards(Vec3 a, Vec3 b, Vec3 c) {
@@ -172,6 +184,38 @@ BBox3 Surfaces::triangle_box(std::uint32_t t) const {
   return box;
 }
 
+bool EdgeMarks::first_visit(std::uint32_t a, std::uint32_t b) {
+  const std::uint64_t key = (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
+  if (2 * (used_ + 1) > slots_.size()) grow();
+  std::size_t i = (key * 0x9e3779b97f4a7c15ull) >> shift_;
+  for (;; i = (i + 1) & (slots_.size() - 1)) {
+    Slot& s = slots_[i];
+    if (s.query != query_) {
+      s = {key, query_};
+      ++used_;
+      return true;
+    }
+    if (s.key == key) return false;
+  }
+}
+
+void EdgeMarks::next_query() {
+  used_ = 0;
+  if (++query_ == 0) {  // wrapped: forget every old mark
+    std::fill(slots_.begin(), slots_.end(), Slot{});
+    query_ = 1;
+  }
+}
+
+void EdgeMarks::grow() {
+  std::vector<Slot> old = std::move(slots_);
+  slots_.assign(std::max<std::size_t>(1024, 2 * old.size()), Slot{});
+  shift_ = 64 - std::countr_zero(slots_.size());
+  used_ = 0;
+  for (const Slot& s : old)
+    if (s.query == query_) first_visit(static_cast<std::uint32_t>(s.key >> 32), static_cast<std::uint32_t>(s.key));
+}
+
 bool Surfaces::first_visit(std::uint32_t vertex) {
   if (vertex_seen_[vertex] == query_) return false;
   vertex_seen_[vertex] = query_;
@@ -188,6 +232,7 @@ Reach Surfaces::reach(const Midpoint& mid, double r) {
                   mid.closed};
   Reach limits;
   ++query_;
+  edges_seen_.next_query();
   for (int i = 0; i < mid.fan_size; ++i) seen_[mid.fan[i]] = query_;  // the fan moves with the point
   // The fan's own static edges first: they keep it from folding onto itself.
   const int ring_edges = mid.closed ? mid.ring_size : mid.ring_size - 1;
@@ -199,42 +244,51 @@ Reach Surfaces::reach(const Midpoint& mid, double r) {
     limit_fan(f, own, r, limits, wanted);
     limits.settle(mid.h);
   }
+  // The fan where it starts: every term's distance is at least its box's distance from this box.
+  BBox3 fan_box;
+  for (int i = 0; i < mid.ring_size; ++i) fan_box.add(ring_at[i]);
+  fan_box.add(f.m);
   for (double t = std::max(mid.h, r);; t *= 2) {
-    BBox3 swept;
-    for (int i = 0; i < mid.ring_size; ++i) swept.add(ring_at[i]);
+    BBox3 swept = fan_box;
     swept.add(f.m + std::min(t, limits.positive) * f.d);
     swept.add(f.m - std::min(t, limits.negative) * f.d);
     const BBox3 near{swept.min - Vec3::all(r), swept.max + Vec3::all(r)};
-    auto overlaps = [&](const BBox3& b) {
-      return b.min.x <= near.max.x && b.max.x >= near.min.x && b.min.y <= near.max.y && b.max.y >= near.min.y &&
-             b.min.z <= near.max.z && b.max.z >= near.min.z;
-    };
+    // The obstacles near, nearest first by their boxes' distance from the fan's.
+    near_.clear();
     grid_.visit(near, [&](std::uint32_t id) {
-      if (limits.stuck(mid.h)) return;
-      if (id & boundary_bit) {
-        const std::uint32_t b = id & ~boundary_bit;
-        if (boundary_seen_[b] == query_) return;
-        const Triangle& c = boundary_.triangles[b];
-        Obstacle o{{boundary_.points[c[0]], boundary_.points[c[1]], boundary_.points[c[2]]}};
-        BBox3 box;
-        for (const Vec3& p : o.at) box.add(p);
-        if (!overlaps(box)) return;  // looked at again if the box grows
-        boundary_seen_[b] = query_;
-        limit_fan(f, o, r, limits);
-      } else {
-        if (seen_[id] == query_) return;
-        if (!overlaps(triangle_box(id))) return;
-        seen_[id] = query_;
-        const Triangle& c = triangles_[id];
-        Obstacle o{{points_[c[0]], points_[c[1]], points_[c[2]]}, {c[0], c[1], c[2]}};
-        TermsWanted wanted;
-        wanted.corner = {first_visit(c[0]), first_visit(c[1]), first_visit(c[2])};
-        limit_fan(f, o, r, limits, wanted);
-      }
-      limits.settle(mid.h);
+      std::uint32_t& seen = id & boundary_bit ? boundary_seen_[id & ~boundary_bit] : seen_[id];
+      if (seen == query_) return;
+      const BBox3 box = obstacle(id).box();
+      if (!overlapping(box, near)) return;  // looked at again if the box grows
+      seen = query_;
+      near_.push_back({box_distance(box, fan_box), id});
     });
+    std::sort(near_.begin(), near_.end());
+    for (const auto& [gap, id] : near_) {
+      // A term changes by at most |t| and may not come within its radius (r or less): none of this
+      // obstacle's terms can act before |t| = gap - r, nor any later one's.
+      if (limits.stuck(mid.h) || gap - r >= std::max(limits.positive, limits.negative)) break;
+      Obstacle o = obstacle(id);
+      TermsWanted wanted;
+      if (!(id & boundary_bit))
+        for (int k = 0; k < 3; ++k) {
+          wanted.corner[k] = first_visit(o.id[k]);
+          wanted.edge[k] = edges_seen_.first_visit(o.id[k], o.id[(k + 1) % 3]);  // a neighbour shares it
+        }
+      limit_fan(f, o, r, limits, wanted);
+      limits.settle(mid.h);
+    }
     if (limits.stuck(mid.h) || (limits.positive <= t && limits.negative <= t) || t > far_) return limits;
   }
+}
+
+Obstacle Surfaces::obstacle(std::uint32_t id) const {
+  if (id & boundary_bit) {
+    const Triangle& c = boundary_.triangles[id & ~boundary_bit];
+    return {{boundary_.points[c[0]], boundary_.points[c[1]], boundary_.points[c[2]]}};
+  }
+  const Triangle& c = triangles_[id];
+  return {{points_[c[0]], points_[c[1]], points_[c[2]]}, {c[0], c[1], c[2]}};
 }
 
 void Surfaces::move(std::size_t k, double r, LevelReport& report) {

@@ -26,6 +26,25 @@ struct Midpoint {
   bool closed = false;  // an edge inside a surface: the ring goes all the way round
 };
 
+// The edges (vertex pairs) a query has measured: an open-addressed table whose marks expire with the query.
+class EdgeMarks {
+ public:
+  // True the first time edge a-b (either way round) is seen in this query.
+  bool first_visit(std::uint32_t a, std::uint32_t b);
+  void next_query();
+
+ private:
+  struct Slot {
+    std::uint64_t key = 0;
+    std::uint32_t query = 0;
+  };
+  void grow();
+  std::vector<Slot> slots_;
+  std::uint32_t query_ = 1;
+  std::size_t used_ = 0;
+  int shift_ = 64;
+};
+
 class Surfaces {
  public:
   // `boundary`: the region's closed, outward-oriented boundary; `start`: the surfaces to grow. Reserves
@@ -42,6 +61,8 @@ class Surfaces {
 
  private:
   Reach reach(const Midpoint& mid, double r);
+  // A surface triangle, or a boundary triangle (id with boundary_bit), as an obstacle.
+  Obstacle obstacle(std::uint32_t id) const;
   BBox3 triangle_box(std::uint32_t t) const;
   bool first_visit(std::uint32_t vertex);
 
@@ -54,6 +75,8 @@ class Surfaces {
   BoxGrid3 grid_;
   std::uint32_t query_ = 0;
   std::vector<std::uint32_t> seen_, boundary_seen_, vertex_seen_;  // the query that last visited each
+  std::vector<std::pair<double, std::uint32_t>> near_;             // a query's obstacles: box gap, id
+  EdgeMarks edges_seen_;
   double far_;  // no point moves farther than this: twice the region's diagonal
 };
 
