@@ -4,7 +4,7 @@ SANITIZE_BUILD ?= build-sanitize
 JOBS       ?= $(shell nproc)
 PACKAGES   := cmake g++ make libopenvdb-dev libboost-iostreams-dev liblua5.4-dev libopenmesh-dev libvtk9-dev \
               libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev python3-vtk9 xvfb xauth libgl1-mesa-dri \
-              libglx-mesa0 librsvg2-bin clang-format ghostscript
+              libglx-mesa0 librsvg2-bin clang-format ghostscript python3-openvdb
 # Only `make fuzz` installs these (clang with libFuzzer and the sanitizer runtimes); `make test` never does.
 FUZZ_PACKAGES := clang-14 libclang-rt-14-dev
 FUZZ_BUILD ?= build-fuzz

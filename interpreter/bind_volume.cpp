@@ -26,7 +26,7 @@ void read_voxel(Options& o, Volume& v) {
   if (!o.has("voxel")) return;
   v.voxel = o.number("voxel", 0);
   if (!(v.voxel > 0 && v.voxel < 1e300))
-    throw Error("option 'voxel' must be a positive number, got " + number_text(v.voxel));
+    throw Error("option 'voxel' must be a positive number below 1e300, got " + number_text(v.voxel));
 }
 
 Vec3 required_point(Options& o, const char* key, const char* hint) {

@@ -63,6 +63,18 @@ void check_start(const Mesh& boundary, const Mesh& start, Progress& progress) {
   if (start.triangles.empty()) throw Error("the start has no triangles");
   const MeshTopology t = mesh_topology(start);
   if (!t.manifold()) throw Error("the start is not a manifold surface: " + t.first_problem);
+  // Two triangles on the same three points pass as neighbours along every edge, and lie on each other.
+  std::vector<std::pair<Triangle, std::size_t>> sorted;
+  for (std::size_t i = 0; i < start.triangles.size(); ++i) {
+    Triangle c = start.triangles[i];
+    std::sort(c.begin(), c.end());
+    sorted.push_back({c, i});
+  }
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t i = 1; i < sorted.size(); ++i)
+    if (sorted[i].first == sorted[i - 1].first)
+      throw Error("start triangles " + std::to_string(sorted[i - 1].second + 1) + " and " +
+                  std::to_string(sorted[i].second + 1) + " lie on the same three points");
   for (std::size_t i = 0; i < start.triangles.size(); ++i) {
     const Triangle& c = start.triangles[i];
     const Vec3 n = cross(start.points[c[1]] - start.points[c[0]], start.points[c[2]] - start.points[c[0]]);
@@ -122,6 +134,14 @@ SurfaceResult exclusion_surface(const Mesh& boundary, const Mesh& start, const S
   const Mesh local_boundary = moved(boundary, n), local_start = moved(start, n);
   check_start(local_boundary, local_start, progress);
   check_last_radius(opt.radius, opt.factor, opt.levels, n.scale, 1e-9);
+  // The points go back to the caller's coordinates in double precision: far from the origin their rounding
+  // would eat the radius.
+  const double far = std::max({std::abs(box.min.x), std::abs(box.min.y), std::abs(box.min.z), std::abs(box.max.x),
+                               std::abs(box.max.y), std::abs(box.max.z)});
+  const double last = opt.radius * std::pow(opt.factor, std::max(opt.levels - 1, 0));
+  if (!(far * 1e-12 < last))
+    throw Error("the region lies " + number_text(far) + " from the origin, too far for the last radius " +
+                number_text(last) + " in double precision: move it nearer the origin");
 
   Surfaces s(local_boundary, local_start, final_counts.points, final_counts.triangles);
   SurfaceResult result;

@@ -55,9 +55,64 @@ double parts_area(const Volume& v) {
   }
 }
 
-void check_voxel(double voxel) {
+// OpenVDB converts meshes in single precision and indexes voxels with 32-bit integers, and its transforms
+// refuse voxels below about 1e-5. So every conversion works in a local frame: coordinates measured from the
+// shape's lowest corner in voxels (the grid's own voxel is 1), turned back into the caller's coordinates in
+// double precision; a .vdb file's transform gets the real voxel and corner.
+struct Frame {
+  Vec3 origin;
+  double voxel;
+  openvdb::Vec3s local(Vec3 p) const {
+    const Vec3 q = (1 / voxel) * (p - origin);
+    return {static_cast<float>(q.x), static_cast<float>(q.y), static_cast<float>(q.z)};
+  }
+  Vec3 world(const openvdb::Vec3s& q) const { return origin + voxel * Vec3{q.x(), q.y(), q.z()}; }
+};
+
+// The frame for `box` at `voxel`, refusing a voxel that is not positive and finite, or a box more than 2^20
+// voxels across (float coordinates then still resolve 1/16 of a voxel).
+Frame frame_for(const BBox3& box, double voxel) {
   if (!(voxel > 0 && std::isfinite(voxel)))
-    throw Error("the voxel size must be a positive number, got " + number_text(voxel));
+    throw Error("the voxel size (given as 'voxel', or 1/128 of the longest side) must be a positive number, got " +
+                number_text(voxel));
+  const Vec3 s = box.size();
+  const double across = std::max({s.x, s.y, s.z}) / voxel;
+  if (!(across <= 1 << 20))
+    throw Error("at voxel size " + number_text(voxel) + " the shape is " + number_text(across) +
+                " voxels across, more than 2^20 (give a larger 'voxel')");
+  return {box.min, voxel};
+}
+
+// Budget points of the OpenVDB trees a conversion of shapes with these corners and this area holds: the
+// narrow band's voxels (16 bytes each with the leaves, 7 across each wall), and the two levels of inner nodes
+// (4096 and 128 voxels wide, about 270 and 34 KB each) for every cell of those widths a corner falls in or the
+// area covers, three times over for the grids held at once. Scattered small parts each need their own inner
+// nodes, which area alone would miss.
+double tree_size(const std::vector<Vec3>& corners, double area, const Frame& f) {
+  double size = 7 * area / (f.voxel * f.voxel);
+  for (const double width : {4096.0, 128.0}) {
+    std::vector<std::array<std::int64_t, 3>> cells;
+    cells.reserve(corners.size());
+    for (Vec3 p : corners) {
+      const Vec3 q = (1 / (width * f.voxel)) * (p - f.origin);
+      cells.push_back({static_cast<std::int64_t>(q.x), static_cast<std::int64_t>(q.y), static_cast<std::int64_t>(q.z)});
+    }
+    std::sort(cells.begin(), cells.end());
+    const double distinct = static_cast<double>(std::unique(cells.begin(), cells.end()) - cells.begin());
+    const double covered = 2 * area / (width * width * f.voxel * f.voxel);
+    size += (distinct + covered) * 3 * (width > 1000 ? 270e3 : 34e3) / 16;
+  }
+  return size;
+}
+
+// OpenVDB's own exceptions as one-line errors.
+template <class Body>
+auto openvdb_call(Body&& body) {
+  try {
+    return body();
+  } catch (const openvdb::Exception& e) {
+    throw Error(std::string("OpenVDB: ") + e.what());
+  }
 }
 
 // The exact boundary of a box, sphere or mesh.
@@ -74,26 +129,28 @@ Mesh exact_boundary(const Volume& v, double voxel) {
 
 using Grid = openvdb::FloatGrid;
 
-Grid::Ptr mesh_level_set(const Mesh& m, const openvdb::math::Transform& xform, Interrupter& interrupt) {
+// A mesh's level set (closed) or unsigned distance (open), in frame f with voxel 1.
+Grid::Ptr mesh_grid(const Mesh& m, bool closed, const Frame& f, Interrupter& interrupt) {
   std::vector<openvdb::Vec3s> points;
   points.reserve(m.points.size());
-  for (Vec3 p : m.points)
-    points.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z));
+  for (Vec3 p : m.points) points.push_back(f.local(p));
   std::vector<openvdb::Vec3I> triangles;
   triangles.reserve(m.triangles.size());
   for (const Triangle& t : m.triangles) triangles.emplace_back(t[0], t[1], t[2]);
-  Grid::Ptr g = openvdb::tools::meshToLevelSet<Grid>(interrupt, xform, points, triangles, 3.0f);
+  const auto unit = openvdb::math::Transform::createLinearTransform(1.0);
+  Grid::Ptr g = closed
+                    ? openvdb::tools::meshToLevelSet<Grid>(interrupt, *unit, points, triangles, 3.0f)
+                    : openvdb::tools::meshToUnsignedDistanceField<Grid>(interrupt, *unit, points, triangles, {}, 3.0f);
   if (interrupt.progress.cancelled()) throw Cancelled();
   return g;
 }
 
-// The level set of any volume: parts converted, then combined in order.
-Grid::Ptr volume_level_set(const Volume& v, double voxel, const openvdb::math::Transform& xform,
-                           Interrupter& interrupt) {
-  if (v.exact()) return mesh_level_set(exact_boundary(v, voxel), xform, interrupt);
-  Grid::Ptr result = volume_level_set(*v.parts[0], voxel, xform, interrupt);
+// The level set of any volume in frame f: parts converted, then combined in order.
+Grid::Ptr volume_level_set(const Volume& v, const Frame& f, Interrupter& interrupt) {
+  if (v.exact()) return mesh_grid(exact_boundary(v, f.voxel), true, f, interrupt);
+  Grid::Ptr result = volume_level_set(*v.parts[0], f, interrupt);
   for (std::size_t i = 1; i < v.parts.size(); ++i) {
-    Grid::Ptr next = volume_level_set(*v.parts[i], voxel, xform, interrupt);
+    Grid::Ptr next = volume_level_set(*v.parts[i], f, interrupt);
     if (v.kind == Volume::Kind::unite)
       openvdb::tools::csgUnion(*result, *next);
     else
@@ -108,15 +165,16 @@ double signed_volume(const Mesh& m) {
   return s;
 }
 
-// The zero surface of a level set as triangles facing outwards, each quad split along its shorter diagonal.
-Mesh zero_surface(const Grid& g) {
+// The zero surface of a level set in frame f as triangles facing outwards, each quad split along its
+// shorter diagonal.
+Mesh zero_surface(const Grid& g, const Frame& f) {
   std::vector<openvdb::Vec3s> points;
   std::vector<openvdb::Vec3I> triangles;
   std::vector<openvdb::Vec4I> quads;
   openvdb::tools::volumeToMesh(g, points, triangles, quads, 0.0, 0.0);
   Mesh m;
   m.points.reserve(points.size());
-  for (const auto& p : points) m.points.push_back({p.x(), p.y(), p.z()});
+  for (const auto& p : points) m.points.push_back(f.world(p));
   m.triangles.reserve(triangles.size() + 2 * quads.size());
   for (const auto& t : triangles) m.triangles.push_back({t[0], t[1], t[2]});
   for (const auto& q : quads) {
@@ -131,6 +189,19 @@ Mesh zero_surface(const Grid& g) {
   if (signed_volume(m) < 0)
     for (Triangle& t : m.triangles) std::swap(t[1], t[2]);
   return m;
+}
+
+// The corners of a volume's parts: where the level sets' trees grow.
+void part_corners(const Volume& v, std::vector<Vec3>& out) {
+  if (v.kind == Volume::Kind::mesh) {
+    out.insert(out.end(), v.mesh->points.begin(), v.mesh->points.end());
+  } else if (v.exact()) {
+    const BBox3 b = v.bbox();
+    for (int k = 0; k < 8; ++k)
+      out.push_back({k & 1 ? b.max.x : b.min.x, k & 2 ? b.max.y : b.min.y, k & 4 ? b.max.z : b.min.z});
+  } else {
+    for (const auto& p : v.parts) part_corners(*p, out);
+  }
 }
 
 // OpenVDB stamps every file with a random UUID (36 characters of text after the 21-byte magic and version
@@ -156,19 +227,24 @@ double boundary_size(const Volume& v, double voxel) {
   if (v.kind == Volume::Kind::box) return 20;
   if (v.kind == Volume::Kind::sphere) return 1.5 * sphere_triangles(v.radius, voxel / 4);
   if (v.kind == Volume::Kind::mesh) return static_cast<double>(v.mesh->points.size() + v.mesh->triangles.size());
-  const double faces = parts_area(v) / (voxel * voxel);
-  return 7 * faces + 3 * faces;  // the parts' narrow bands, then the meshed result's triangles and points
+  const Frame f = frame_for(v.bbox(), voxel);
+  std::vector<Vec3> corners;
+  part_corners(v, corners);
+  const double area = parts_area(v);
+  return tree_size(corners, area, f) + 3 * area / (voxel * voxel);  // and the meshed result's triangles and points
 }
 
 Mesh volume_boundary(const Volume& v, double voxel, const PointBudget& budget, Progress& progress) {
-  check_voxel(voxel);
+  if (v.exact()) {
+    if (v.kind == Volume::Kind::sphere) frame_for(v.bbox(), voxel);  // its voxel sets its triangles
+    check_budget(boundary_size(v, voxel), budget, "the volume's boundary at voxel size " + number_text(voxel));
+    return exact_boundary(v, voxel);
+  }
+  const Frame f = frame_for(v.bbox(), voxel);
   check_budget(boundary_size(v, voxel), budget, "the volume's boundary at voxel size " + number_text(voxel));
-  if (v.exact()) return exact_boundary(v, voxel);
   initialise_openvdb();
   Interrupter interrupt{progress};
-  const auto xform = openvdb::math::Transform::createLinearTransform(voxel);
-  const Grid::Ptr g = volume_level_set(v, voxel, *xform, interrupt);
-  Mesh m = zero_surface(*g);
+  Mesh m = openvdb_call([&] { return zero_surface(*volume_level_set(v, f, interrupt), f); });
   if (m.triangles.empty()) throw Error("the volume is empty at voxel size " + number_text(voxel));
   const MeshTopology t = mesh_topology(m);
   if (!t.closed())
@@ -178,39 +254,30 @@ Mesh volume_boundary(const Volume& v, double voxel, const PointBudget& budget, P
   return m;
 }
 
-double distance_size(double area, double voxel) { return 7 * area / (voxel * voxel); }
-
 std::string distance_vdb(const Mesh& m, bool closed, double voxel, const std::string& name, const PointBudget& budget,
                          Progress& progress) {
-  check_voxel(voxel);
-  // OpenVDB's coordinates are 32-bit integers, and a needle of no area passes any budget of area.
-  const Vec3 s = m.bbox().size();
-  if (!(std::max({s.x, s.y, s.z}) / voxel <= 1 << 20))
-    throw Error("the voxel size " + number_text(voxel) + " is too small for a mesh " +
-                number_text(std::max({s.x, s.y, s.z})) + " across (at most 2^20 voxels across)");
-  check_budget(distance_size(surface_area(m), voxel), budget,
+  const Frame f = frame_for(m.bbox(), voxel);
+  check_budget(tree_size(m.points, surface_area(m), f), budget,
                "a distance grid at voxel size " + number_text(voxel) + " (set a larger 'voxel')");
   initialise_openvdb();
   Interrupter interrupt{progress};
-  const auto xform = openvdb::math::Transform::createLinearTransform(voxel);
-  Grid::Ptr g;
-  if (closed) {
-    g = mesh_level_set(m, *xform, interrupt);
-  } else {
-    std::vector<openvdb::Vec3s> points;
-    for (Vec3 p : m.points)
-      points.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z));
-    std::vector<openvdb::Vec3I> triangles;
-    for (const Triangle& t : m.triangles) triangles.emplace_back(t[0], t[1], t[2]);
-    g = openvdb::tools::meshToUnsignedDistanceField<Grid>(interrupt, *xform, points, triangles, {}, 3.0f);
-    if (progress.cancelled()) throw Cancelled();
-    g->setGridClass(openvdb::GRID_UNKNOWN);  // a distance, not a level set: no inside
-  }
-  g->setName(name);
-  g->insertMeta("creator", openvdb::StringMetadata("selfsim"));
-  std::ostringstream bytes;
-  openvdb::io::Stream(bytes).write(openvdb::GridCPtrVec{g});
-  return with_content_uuid(bytes.str());
+  return openvdb_call([&] {
+    Grid::Ptr g = mesh_grid(m, closed, f, interrupt);
+    if (!closed) g->setGridClass(openvdb::GRID_UNKNOWN);  // a distance, not a level set: no inside
+    // Distances in the caller's units, as level sets keep them, at the real voxel size and corner (OpenVDB
+    // throws for a voxel too small for its transforms).
+    const float scale = static_cast<float>(voxel);
+    for (auto value = g->beginValueAll(); value; ++value) value.setValue(*value * scale);
+    g->tree().root().setBackground(g->background() * scale, false);
+    const auto xform = openvdb::math::Transform::createLinearTransform(voxel);
+    xform->postTranslate(openvdb::Vec3d(f.origin.x, f.origin.y, f.origin.z));
+    g->setTransform(xform);
+    g->setName(name);
+    g->insertMeta("creator", openvdb::StringMetadata("selfsim"));
+    std::ostringstream bytes;
+    openvdb::io::Stream(bytes).write(openvdb::GridCPtrVec{g});
+    return with_content_uuid(bytes.str());
+  });
 }
 
 }  // namespace selfsim

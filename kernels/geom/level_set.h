@@ -29,7 +29,4 @@ Mesh volume_boundary(const Volume& v, double voxel, const PointBudget& budget, P
 std::string distance_vdb(const Mesh& m, bool closed, double voxel, const std::string& name, const PointBudget& budget,
                          Progress& progress);
 
-// Budget points of distance_vdb's grid for a mesh of this surface area.
-double distance_size(double area, double voxel);
-
 }  // namespace selfsim

@@ -7,6 +7,7 @@
 
 #include "kernels/geom/box_mesh.h"
 #include "kernels/geom/check.h"
+#include "kernels/geom/mesh_check.h"
 #include "kernels/geom/mesh_intersections.h"
 
 namespace selfsim {
@@ -78,6 +79,8 @@ Volume Volume::closed_mesh(Mesh m, Progress& progress) {
   if (m.triangles.empty()) throw Error("the mesh has no triangles");
   const std::string open = first_open_edge(m);
   if (!open.empty()) throw Error("the mesh is not closed: " + open);
+  const MeshTopology topology = mesh_topology(m);
+  if (!topology.manifold()) throw Error("the mesh is not a manifold: " + topology.first_problem + " (counted from 0)");
   if (const auto pair = first_intersection(m, progress))
     throw Error("the mesh crosses itself: its triangles " + std::to_string(pair->first + 1) + " and " +
                 std::to_string(pair->second + 1) + " meet near " + point_text(pair->where));
