@@ -155,11 +155,7 @@ SurfaceResult exclusion_surface(const Mesh& boundary, const Mesh& start, const S
     progress.step(0);
     LevelReport report;
     s.subdivide(level, r);
-    const std::size_t moves = s.midpoints();
-    for (std::size_t k = 0; k < moves; ++k) {
-      if ((k & 255) == 0) progress.step(static_cast<double>(k) / static_cast<double>(moves));
-      s.move(k, r, report);
-    }
+    s.grow(r, report, progress);
     report.seconds = since(begun);
     result.levels.push_back(report);
   }

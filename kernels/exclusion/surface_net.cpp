@@ -1,5 +1,8 @@
 #include "kernels/exclusion/surface_net.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -63,7 +66,6 @@ Surfaces::Surfaces(const Mesh& boundary, const Mesh& start, double points, doubl
     if (n == 0) n = ++count;
     surface_.push_back(n);
   }
-  boundary_seen_.assign(boundary.triangles.size(), 0);
 }
 
 void Surfaces::subdivide(int level, double r) {
@@ -166,16 +168,13 @@ void Surfaces::subdivide(int level, double r) {
   const double mean = mids_.empty() ? 0 : 0.5 * length / static_cast<double>(mids_.size());
   BBox3 bounds = boundary_.bbox();
   grid_ = BoxGrid3(bounds, 1.5 * std::max({r, mean, 1e-9 * norm(bounds.size())}));
+  order_rounds(std::max(r, 2 * mean));
   for (std::uint32_t t = 0; t < boundary_.triangles.size(); ++t) {
     BBox3 box;
     for (std::uint32_t v : boundary_.triangles[t]) box.add(boundary_.points[v]);
     grid_.insert(boundary_bit | t, box);
   }
   for (std::uint32_t t = 0; t < triangles_.size(); ++t) grid_.insert(t, triangle_box(t));
-  seen_.assign(triangles_.size(), 0);
-  vertex_seen_.assign(points_.size(), 0);
-  std::fill(boundary_seen_.begin(), boundary_seen_.end(), 0);
-  query_ = 0;
 }
 
 BBox3 Surfaces::triangle_box(std::uint32_t t) const {
@@ -216,13 +215,32 @@ void EdgeMarks::grow() {
     if (s.query == query_) first_visit(static_cast<std::uint32_t>(s.key >> 32), static_cast<std::uint32_t>(s.key));
 }
 
-bool Surfaces::first_visit(std::uint32_t vertex) {
-  if (vertex_seen_[vertex] == query_) return false;
-  vertex_seen_[vertex] = query_;
+void Query::fit(std::size_t triangles, std::size_t boundary, std::size_t points) {
+  if (seen.size() == triangles && boundary_seen.size() == boundary && vertex_seen.size() == points) return;
+  seen.assign(triangles, 0);
+  boundary_seen.assign(boundary, 0);
+  vertex_seen.assign(points, 0);
+  stamp = 0;
+}
+
+void Query::next() {
+  edges.next_query();
+  if (++stamp == 0) {  // wrapped: forget every old mark
+    std::fill(seen.begin(), seen.end(), 0);
+    std::fill(boundary_seen.begin(), boundary_seen.end(), 0);
+    std::fill(vertex_seen.begin(), vertex_seen.end(), 0);
+    stamp = 1;
+  }
+}
+
+bool Query::first_visit(std::uint32_t vertex) {
+  if (vertex_seen[vertex] == stamp) return false;
+  vertex_seen[vertex] = stamp;
   return true;
 }
 
-Reach Surfaces::reach(const Midpoint& mid, double r) {
+Reach Surfaces::reach(const Midpoint& mid, double r, Query& q, BBox3& looked) const {
+  q.fit(triangles_.size(), boundary_.triangles.size(), points_.size());
   std::array<Vec3, 6> ring_at;
   for (int i = 0; i < mid.ring_size; ++i) ring_at[i] = points_[mid.ring[i]];
   const FanMove f{points_[mid.vertex],
@@ -231,16 +249,15 @@ Reach Surfaces::reach(const Midpoint& mid, double r) {
                   {mid.ring.data(), static_cast<std::size_t>(mid.ring_size)},
                   mid.closed};
   Reach limits;
-  ++query_;
-  edges_seen_.next_query();
-  for (int i = 0; i < mid.fan_size; ++i) seen_[mid.fan[i]] = query_;  // the fan moves with the point
+  q.next();
+  for (int i = 0; i < mid.fan_size; ++i) q.seen[mid.fan[i]] = q.stamp;  // the fan moves with the point
   // The fan's own static edges first: they keep it from folding onto itself.
   const int ring_edges = mid.closed ? mid.ring_size : mid.ring_size - 1;
   for (int i = 0; i < ring_edges; ++i) {
     const int j = (i + 1) % mid.ring_size;
     Obstacle own{{ring_at[i], ring_at[j], Vec3{}}, {mid.ring[i], mid.ring[j], no_vertex}, 2};
     TermsWanted wanted;
-    wanted.corner = {first_visit(mid.ring[i]), first_visit(mid.ring[j]), false};
+    wanted.corner = {q.first_visit(mid.ring[i]), q.first_visit(mid.ring[j]), false};
     limit_fan(f, own, r, limits, wanted);
     limits.settle(mid.h);
   }
@@ -253,18 +270,19 @@ Reach Surfaces::reach(const Midpoint& mid, double r) {
     swept.add(f.m + std::min(t, limits.positive) * f.d);
     swept.add(f.m - std::min(t, limits.negative) * f.d);
     const BBox3 near{swept.min - Vec3::all(r), swept.max + Vec3::all(r)};
+    looked.add(near);
     // The obstacles near, nearest first by their boxes' distance from the fan's.
-    near_.clear();
+    q.near.clear();
     grid_.visit(near, [&](std::uint32_t id) {
-      std::uint32_t& seen = id & boundary_bit ? boundary_seen_[id & ~boundary_bit] : seen_[id];
-      if (seen == query_) return;
+      std::uint32_t& seen = id & boundary_bit ? q.boundary_seen[id & ~boundary_bit] : q.seen[id];
+      if (seen == q.stamp) return;
       const BBox3 box = obstacle(id).box();
       if (!overlapping(box, near)) return;  // looked at again if the box grows
-      seen = query_;
-      near_.push_back({box_distance(box, fan_box), id});
+      seen = q.stamp;
+      q.near.push_back({box_distance(box, fan_box), id});
     });
-    std::sort(near_.begin(), near_.end());
-    for (const auto& [gap, id] : near_) {
+    std::sort(q.near.begin(), q.near.end());
+    for (const auto& [gap, id] : q.near) {
       // A term changes by at most |t| and may not come within its radius (r or less): none of this
       // obstacle's terms can act before |t| = gap - r, nor any later one's.
       if (limits.stuck(mid.h) || gap - r >= std::max(limits.positive, limits.negative)) break;
@@ -272,8 +290,8 @@ Reach Surfaces::reach(const Midpoint& mid, double r) {
       TermsWanted wanted;
       if (!(id & boundary_bit))
         for (int k = 0; k < 3; ++k) {
-          wanted.corner[k] = first_visit(o.id[k]);
-          wanted.edge[k] = edges_seen_.first_visit(o.id[k], o.id[(k + 1) % 3]);  // a neighbour shares it
+          wanted.corner[k] = q.first_visit(o.id[k]);
+          wanted.edge[k] = q.edges.first_visit(o.id[k], o.id[(k + 1) % 3]);  // a neighbour shares it
         }
       limit_fan(f, o, r, limits, wanted);
       limits.settle(mid.h);
@@ -291,17 +309,95 @@ Obstacle Surfaces::obstacle(std::uint32_t id) const {
   return {{points_[c[0]], points_[c[1]], points_[c[2]]}, {c[0], c[1], c[2]}};
 }
 
-void Surfaces::move(std::size_t k, double r, LevelReport& report) {
-  const Midpoint& mid = mids_[k];
-  const Reach limits = reach(mid, r);
-  double t = chosen_move(limits);
-  ++report.splits;
-  if (std::abs(t) < stuck_fraction * mid.h) {
-    ++report.stuck;
-    return;
+void Surfaces::order_rounds(double reach) {
+  // Cells of 4 times the reach a move usually has, in 8 colours by the parities of their coordinates: two
+  // cells of one colour are a cell apart, so the moves of one round rarely see each other.
+  const double cell = round_cells_ * reach;
+  const BBox3 bounds = boundary_.bbox();
+  struct Key {
+    std::uint32_t colour, rank;
+    std::uint64_t cell;
+    std::uint32_t mid;
+    bool operator<(const Key& o) const {
+      return std::tie(colour, rank, cell, mid) < std::tie(o.colour, o.rank, o.cell, o.mid);
+    }
+  };
+  std::vector<Key> keys(mids_.size());
+  for (std::uint32_t e = 0; e < mids_.size(); ++e) {
+    const Vec3 q = (1 / cell) * (points_[mids_[e].vertex] - bounds.min);
+    const auto i = static_cast<std::uint64_t>(std::clamp(q.x, 0.0, 1e6)),
+               j = static_cast<std::uint64_t>(std::clamp(q.y, 0.0, 1e6)),
+               k = static_cast<std::uint64_t>(std::clamp(q.z, 0.0, 1e6));
+    keys[e] = {static_cast<std::uint32_t>((i & 1) | (j & 1) << 1 | (k & 1) << 2), 0, (k << 40) | (j << 20) | i, e};
   }
-  points_[mid.vertex] = points_[mid.vertex] + t * mid.d;
-  for (int i = 0; i < mid.fan_size; ++i) grid_.insert(mid.fan[i], triangle_box(mid.fan[i]));
+  // Each cell's midpoints ranked in edge order.
+  std::vector<Key> by_cell = keys;
+  std::sort(by_cell.begin(), by_cell.end(),
+            [](const Key& a, const Key& b) { return std::tie(a.cell, a.mid) < std::tie(b.cell, b.mid); });
+  for (std::size_t n = 0; n < by_cell.size(); ++n)
+    keys[by_cell[n].mid].rank = n > 0 && by_cell[n - 1].cell == by_cell[n].cell ? keys[by_cell[n - 1].mid].rank + 1 : 0;
+  std::sort(keys.begin(), keys.end());
+  order_.clear();
+  rounds_.clear();
+  for (std::size_t n = 0; n < keys.size(); ++n) {
+    if (n == 0 || keys[n].colour != keys[n - 1].colour || keys[n].rank != keys[n - 1].rank) rounds_.push_back(n);
+    order_.push_back(keys[n].mid);
+  }
+  rounds_.push_back(keys.size());
+}
+
+void Surfaces::grow(double r, LevelReport& report, Progress& progress, bool speculate) {
+  struct Outcome {
+    double t;
+    BBox3 looked;  // what the move measured: no change elsewhere alters it
+  };
+  std::vector<Outcome> outcomes;
+  std::vector<BBox3> changed;  // the fans the round has moved so far, where they were and where they went
+  std::size_t done = 0;
+  for (std::size_t round = 0; round + 1 < rounds_.size(); ++round) {
+    const std::size_t begin = rounds_[round], end = rounds_[round + 1];
+    if (done >> 8 != (done + end - begin) >> 8)
+      progress.step(static_cast<double>(done) / static_cast<double>(mids_.size()));
+    done += end - begin;
+    // Every move of the round against the state before it, in parallel: nothing is written.
+    outcomes.assign(end - begin, Outcome{});
+    if (speculate)
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 4),
+                        [&](const tbb::blocked_range<std::size_t>& range) {
+                          Query& q = queries_.local();
+                          for (std::size_t n = range.begin(); n < range.end(); ++n) {
+                            if (progress.cancelled()) throw Cancelled();
+                            Outcome& o = outcomes[n - begin];
+                            o.t = chosen_move(reach(mids_[order_[n]], r, q, o.looked));
+                          }
+                        });
+    // Then in order, each as if alone: a move whose measured box meets a fan an earlier move of the round
+    // changed is measured again, so the result is the sequential one whatever the threads.
+    changed.clear();
+    for (std::size_t n = begin; n < end; ++n) {
+      const Midpoint& mid = mids_[order_[n]];
+      Outcome& o = outcomes[n - begin];
+      if (std::any_of(changed.begin(), changed.end(), [&](const BBox3& b) { return overlapping(b, o.looked); })) {
+        o.looked = {};
+        o.t = chosen_move(reach(mid, r, queries_.local(), o.looked));
+      }
+      if (!speculate) o.t = chosen_move(reach(mid, r, queries_.local(), o.looked));
+      ++report.splits;
+      if (std::abs(o.t) < stuck_fraction * mid.h) {
+        ++report.stuck;
+        continue;
+      }
+      BBox3 fan;
+      for (int i = 0; i < mid.fan_size; ++i) fan.add(triangle_box(mid.fan[i]));
+      points_[mid.vertex] = points_[mid.vertex] + o.t * mid.d;
+      for (int i = 0; i < mid.fan_size; ++i) {
+        const BBox3 box = triangle_box(mid.fan[i]);
+        grid_.insert(mid.fan[i], box);
+        fan.add(box);
+      }
+      changed.push_back(fan);
+    }
+  }
 }
 
 Mesh Surfaces::result() const {

@@ -4,6 +4,8 @@
 // level by level; fan_reach.h measures each obstacle.
 #pragma once
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -12,6 +14,7 @@
 #include "kernels/exclusion/level_report.h"
 #include "kernels/geom/box_grid3.h"
 #include "kernels/geom/mesh.h"
+#include "kernels/geom/progress.h"
 
 namespace selfsim::exclusion {
 
@@ -45,6 +48,21 @@ class EdgeMarks {
   int shift_ = 64;
 };
 
+// One move's marks (per thread): which triangles, boundary triangles, vertices and edges it has measured,
+// stamped with the move's number, and its list of obstacles near.
+struct Query {
+  std::uint32_t stamp = 0;
+  std::vector<std::uint32_t> seen, boundary_seen, vertex_seen;
+  std::vector<std::pair<double, std::uint32_t>> near;  // box gap, id
+  EdgeMarks edges;
+
+  // Sizes the marks for a level's triangles, boundary triangles and points (clearing them if they change).
+  void fit(std::size_t triangles, std::size_t boundary, std::size_t points);
+  void next();
+  // True the first time a move meets this vertex.
+  bool first_visit(std::uint32_t vertex);
+};
+
 class Surfaces {
  public:
   // `boundary`: the region's closed, outward-oriented boundary; `start`: the surfaces to grow. Reserves
@@ -55,16 +73,24 @@ class Surfaces {
   // neighbour grid sized for radius r.
   void subdivide(int level, double r);
   std::size_t midpoints() const { return mids_.size(); }
-  // Moves midpoint k as far as radius r allows.
-  void move(std::size_t k, double r, LevelReport& report);
+  // Moves every midpoint of the level as far as radius r allows, round by round (see order_rounds): the
+  // moves of a round are measured in parallel and kept in order, each measured again if an earlier one of
+  // its round changed what it measured. The same result for any number of threads, and the same as moving
+  // them one after another in that order (speculate = false, for tests).
+  void grow(double r, LevelReport& report, Progress& progress, bool speculate = true);
+  // Round cells `factor` times a move's usual reach instead of 4 (tests make rounds collide with small ones).
+  void set_round_cells(double factor) { round_cells_ = factor; }
   Mesh result() const;
 
  private:
-  Reach reach(const Midpoint& mid, double r);
+  // How far mid may move, with q's marks; `looked` grows to cover every box it measured in.
+  Reach reach(const Midpoint& mid, double r, Query& q, BBox3& looked) const;
+  // The level's order: rounds of midpoints in cells of 4 times `reach`, cells of one colour (the parities of
+  // their coordinates) together, the k-th midpoint (in edge order) of each cell in round k of its colour.
+  void order_rounds(double reach);
   // A surface triangle, or a boundary triangle (id with boundary_bit), as an obstacle.
   Obstacle obstacle(std::uint32_t id) const;
   BBox3 triangle_box(std::uint32_t t) const;
-  bool first_visit(std::uint32_t vertex);
 
   const Mesh& boundary_;
   std::vector<Vec3> points_;
@@ -73,10 +99,10 @@ class Surfaces {
   std::vector<std::int32_t> surface_;
   std::vector<Midpoint> mids_;
   BoxGrid3 grid_;
-  std::uint32_t query_ = 0;
-  std::vector<std::uint32_t> seen_, boundary_seen_, vertex_seen_;  // the query that last visited each
-  std::vector<std::pair<double, std::uint32_t>> near_;             // a query's obstacles: box gap, id
-  EdgeMarks edges_seen_;
+  std::vector<std::uint32_t> order_;  // the midpoints in the order they move
+  std::vector<std::size_t> rounds_;   // where each round starts in order_, and the end
+  double round_cells_ = 4;
+  tbb::enumerable_thread_specific<Query> queries_;
   double far_;  // no point moves farther than this: twice the region's diagonal
 };
 
