@@ -11,8 +11,9 @@
 // the owning triangle's plane; its positive side points away from the triangle.
 //
 // Order. Level by level; within a level, every triangle is first split flat (its midpoints on its edges),
-// then the midpoints move one after another in the order of their edges' first appearance (triangles in
-// order, each triangle's edges from its first corner), each move seeing every move before it. Ties go to
+// then the midpoints move one after another in rounds of spatially separate midpoints (surface_net.h,
+// order_rounds), each move seeing every move before it; rounds are measured in parallel and checked, with
+// the one-after-another result. Ties go to
 // the positive side unless the negative side reaches farther by more than one part in 10^9; a point that can
 // move less than 10^-6 of its half edge on both sides stays at the midpoint and is counted as stuck.
 #pragma once
