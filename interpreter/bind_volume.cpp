@@ -22,11 +22,13 @@ void push_volume(lua_State* L, Volume&& v) {
 }
 
 // voxel = v: the size every use of the volume takes (a run still warns when it is coarse for its radius).
-void read_voxel(Options& o, Volume& v) {
-  if (!o.has("voxel")) return;
-  v.voxel = o.number("voxel", 0);
-  if (!(v.voxel > 0 && v.voxel < 1e300))
-    throw Error("option 'voxel' must be a positive number below 1e300, got " + number_text(v.voxel));
+// 0 when absent.
+double read_voxel(Options& o) {
+  if (!o.has("voxel")) return 0;
+  const double voxel = o.number("voxel", 0);
+  if (!(voxel > 0 && voxel < 1e300))
+    throw Error("option 'voxel' must be a positive number below 1e300, got " + number_text(voxel));
+  return voxel;
 }
 
 Vec3 required_point(Options& o, const char* key, const char* hint) {
@@ -39,11 +41,9 @@ int volume_box(lua_State* L) {
     Options o(L, 1);
     const Vec3 lo = required_point(o, "min", "the lowest corner, e.g. min = {0, 0, 0}");
     const Vec3 hi = required_point(o, "max", "the highest corner, e.g. max = {1, 1, 1}");
-    Volume v;
-    read_voxel(o, v);
+    const double voxel = read_voxel(o);
     o.finish();
-    const double voxel = v.voxel;
-    v = Volume::box(lo, hi);
+    Volume v = Volume::box(lo, hi);
     v.voxel = voxel;
     push_volume(L, std::move(v));
     return 1;
@@ -56,11 +56,9 @@ int volume_sphere(lua_State* L) {
     const Vec3 centre = required_point(o, "center", "the centre, e.g. center = {0, 0, 0}");
     o.require("radius", "the radius, e.g. radius = 1");
     const double radius = o.number("radius", 0);
-    Volume v;
-    read_voxel(o, v);
+    const double voxel = read_voxel(o);
     o.finish();
-    const double voxel = v.voxel;
-    v = Volume::sphere(centre, radius);
+    Volume v = Volume::sphere(centre, radius);
     v.voxel = voxel;
     push_volume(L, std::move(v));
     return 1;
@@ -79,15 +77,14 @@ int volume_mesh(lua_State* L) {
     }
     if (!m)
       throw Error("argument 1 must be a closed mesh or its file name (.stl, .obj, .ply, .vtp), got " + describe(L, 1));
-    Volume v;
+    double voxel = 0;
     if (!lua_isnoneornil(L, 2)) {
       Options o(L, 2);
-      read_voxel(o, v);
+      voxel = read_voxel(o);
       o.finish();
     }
     check_run_budget(L, budget_size(*m), "the volume's mesh");
-    const double voxel = v.voxel;
-    v = Volume::closed_mesh(*m, RunContext::of(L));
+    Volume v = Volume::closed_mesh(*m, RunContext::of(L));
     v.voxel = voxel;
     push_volume(L, std::move(v));
     return 1;
@@ -102,8 +99,7 @@ int combine(lua_State* L, const char* fn, Volume::Kind kind) {
     const auto n = static_cast<lua_Integer>(lua_rawlen(L, 1));
     Options o(L, 1);
     o.positional(n);
-    Volume options;
-    read_voxel(o, options);
+    const double voxel = read_voxel(o);
     o.finish();
     std::vector<std::shared_ptr<const Volume>> parts;
     for (lua_Integer i = 1; i <= n; ++i) {
@@ -114,7 +110,7 @@ int combine(lua_State* L, const char* fn, Volume::Kind kind) {
       parts.push_back(std::move(part));
     }
     Volume v = Volume::combine(kind, std::move(parts));
-    v.voxel = options.voxel;
+    v.voxel = voxel;
     push_volume(L, std::move(v));
     return 1;
   });
@@ -125,12 +121,7 @@ int volume_difference(lua_State* L) { return combine(L, "volume.difference", Vol
 
 int volume_bbox(lua_State* L) {
   const Held<Volume> v = check_self<Volume>(L, volume_type, "bbox");
-  const BBox3 b = v->bbox();
-  lua_createtable(L, 0, 2);
-  push_point(L, b.min);
-  lua_setfield(L, -2, "min");
-  push_point(L, b.max);
-  lua_setfield(L, -2, "max");
+  push_bbox(L, v->bbox());
   return 1;
 }
 
@@ -141,10 +132,8 @@ int volume_boundary_method(lua_State* L) {
     double voxel = v->default_voxel();
     if (!lua_isnoneornil(L, 2)) {
       Options o(L, 2);
-      Volume given;
-      read_voxel(o, given);
+      if (const double given = read_voxel(o); given > 0) voxel = given;
       o.finish();
-      if (given.voxel > 0) voxel = given.voxel;
     }
     push_geometry(
         L, with_budget(L, [&](const PointBudget& b) { return volume_boundary(*v, voxel, b, RunContext::of(L)); }));

@@ -23,6 +23,17 @@ void push_coordinates(lua_State* L, std::initializer_list<double> xs) {
 void push_point(lua_State* L, Vec2 p) { push_coordinates(L, {p.x, p.y}); }
 void push_point(lua_State* L, Vec3 p) { push_coordinates(L, {p.x, p.y, p.z}); }
 
+template <class V>
+void push_bbox(lua_State* L, const BBox<V>& b) {
+  lua_createtable(L, 0, 2);
+  push_point(L, b.min);
+  lua_setfield(L, -2, "min");
+  push_point(L, b.max);
+  lua_setfield(L, -2, "max");
+}
+template void push_bbox(lua_State*, const BBox2&);
+template void push_bbox(lua_State*, const BBox3&);
+
 namespace {
 
 // ", level 8" (or ", generation 4") where a kernel recorded one for the whole curve.
@@ -65,12 +76,7 @@ int value_points(lua_State* L) {
 template <class T>
 int value_bbox(lua_State* L) {
   const Held<T> v = geometry_self<T>(L, "bbox");
-  const auto b = v->bbox();
-  lua_createtable(L, 0, 2);
-  push_point(L, b.min);
-  lua_setfield(L, -2, "min");
-  push_point(L, b.max);
-  lua_setfield(L, -2, "max");
+  push_bbox(L, v->bbox());
   return 1;
 }
 

@@ -70,5 +70,8 @@ void register_geometry(lua_State* L, const std::vector<luaL_Reg>& own);
 // {x, y} or {x, y, z} as a new Lua table.
 void push_point(lua_State* L, Vec2 p);
 void push_point(lua_State* L, Vec3 p);
+// {min = {...}, max = {...}}
+template <class V>
+void push_bbox(lua_State* L, const BBox<V>& b);
 
 }  // namespace selfsim::interp

@@ -12,6 +12,7 @@
 
 #include "kernels/exclusion/fan_reach.h"
 #include "kernels/exclusion/level_report.h"
+#include "kernels/exclusion/query_marks.h"
 #include "kernels/geom/box_grid3.h"
 #include "kernels/geom/mesh.h"
 #include "kernels/geom/progress.h"
@@ -27,40 +28,6 @@ struct Midpoint {
   std::array<std::uint32_t, 6> fan{};   // the fan's triangles
   int ring_size = 0, fan_size = 0;
   bool closed = false;  // an edge inside a surface: the ring goes all the way round
-};
-
-// The edges (vertex pairs) a query has measured: an open-addressed table whose marks expire with the query.
-class EdgeMarks {
- public:
-  // True the first time edge a-b (either way round) is seen in this query.
-  bool first_visit(std::uint32_t a, std::uint32_t b);
-  void next_query();
-
- private:
-  struct Slot {
-    std::uint64_t key = 0;
-    std::uint32_t query = 0;
-  };
-  void grow();
-  std::vector<Slot> slots_;
-  std::uint32_t query_ = 1;
-  std::size_t used_ = 0;
-  int shift_ = 64;
-};
-
-// One move's marks (per thread): which triangles, boundary triangles, vertices and edges it has measured,
-// stamped with the move's number, and its list of obstacles near.
-struct Query {
-  std::uint32_t stamp = 0;
-  std::vector<std::uint32_t> seen, boundary_seen, vertex_seen;
-  std::vector<std::pair<double, std::uint32_t>> near;  // box gap, id
-  EdgeMarks edges;
-
-  // Sizes the marks for a level's triangles, boundary triangles and points (clearing them if they change).
-  void fit(std::size_t triangles, std::size_t boundary, std::size_t points);
-  void next();
-  // True the first time a move meets this vertex.
-  bool first_visit(std::uint32_t vertex);
 };
 
 class Surfaces {
