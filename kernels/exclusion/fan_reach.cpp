@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "kernels/geom/distance3.h"
+#include "kernels/geom/error.h"
+#include "kernels/geom/segment2.h"
 
 namespace selfsim::exclusion {
 
@@ -56,7 +58,8 @@ struct Line {
     return hull(edges, s.hull());
   }
 
-  // w within rho of the segment from static end x to p(t): the shadow of w's ball seen from x.
+  // w within rho of the segment from static end x to p(t) but not of p(t) itself (point() adds that): the
+  // rest of the shadow of w's ball seen from x.
   Interval shadow(Vec3 x, Vec3 w, double rho) const {
     const Vec3 wx = w - x, P = cross(d, wx), Q = cross(x, wx);  // cross(t·d - x, wx) = t·P - Q
     const double r2 = rho * rho, wd = dot(wx, d), wxx = dot(wx, x);
@@ -66,7 +69,7 @@ struct Line {
     // w's foot strictly between x and p(t): 0 < dot(wx, t·d - x) < |t·d - x|².
     const IntervalSet foot_after_x = positive_linear(-wxx, wd);
     const IntervalSet foot_before_p = positive_quadratic(dot(x, x) + wxx, -(2 * dot(d, x) + wd), 1);
-    return hull(point(w, rho), intersect_hull(intersect(line, foot_after_x), foot_before_p));
+    return intersect_hull(intersect(line, foot_after_x), foot_before_p);
   }
 
   // w within rho of the inside of triangle x, y, p(t), its foot strictly inside.
@@ -103,11 +106,6 @@ struct Line {
     return positive_quadratic(dot(n0, n0) - k * dot(x, x), 2 * (dot(n0, n1) + k * dot(d, x)), dot(n1, n1) - k);
   }
 
-  // Corner term: w within rho of fan triangle x, y, p(t) (x and y are static, and never within rho).
-  Interval corner(Vec3 x, Vec3 y, Vec3 w, double rho) const {
-    return hull(face(x, y, w, rho), hull(shadow(x, w, rho), shadow(y, w, rho)));
-  }
-
   // Segment u-v within rho of the spoke from z to p(t), the nearest points inside both.
   Interval spoke_inside(Vec3 z, Vec3 u, Vec3 v, double rho) const {
     const Vec3 e = v - u, uz = u - z;
@@ -128,53 +126,157 @@ struct Line {
         intersect(near, spoke_param), intersect(segment_param, not_parallel(n0, n1, e, z)),
         [&](Interval part) { return segment_segment_distance(u, v, z, inner_point(part) * d) < rho; });
   }
-
-  // Edge term: segment u-v within rho of the spoke from z to p(t) (z is static, and never within rho).
-  Interval edge(Vec3 z, Vec3 u, Vec3 v, double rho) const {
-    return hull(hull(shadow(z, u, rho), shadow(z, v, rho)), hull(segment(u, v, rho), spoke_inside(z, u, v, rho)));
-  }
 };
 
 bool shared(std::uint32_t a, std::uint32_t b) { return a != no_vertex && a == b; }
 
-// The gap between the boxes of two sets of points: no point of one's hull is nearer the other's.
-double box_gap(std::initializer_list<Vec3> a, std::initializer_list<Vec3> b) {
-  Vec3 alo = Vec3::all(INFINITY), ahi = Vec3::all(-INFINITY), blo = alo, bhi = ahi;
-  for (Vec3 p : a) alo = min_each(alo, p), ahi = max_each(ahi, p);
-  for (Vec3 p : b) blo = min_each(blo, p), bhi = max_each(bhi, p);
-  return norm(max_each(max_each(alo - bhi, blo - ahi), Vec3{}));
+// term() for a term that is never below sqrt(least2) wherever the point goes on its line: with its radius at
+// most that, its set is empty, and neither its distance where it starts (d0()) nor its set is needed.
+template <class D0, class SetFor>
+void bounded_term(Reach& reach, double r, double least2, D0 d0, SetFor set_for) {
+  if (least2 >= r * r) return;
+  const double start = d0(), rho = term_radius(r, start);
+  if (rho > 0 && least2 >= rho * rho) return;
+  term(reach, r, start, either, 0, set_for);
 }
+
+// Coordinates in a frame square to the move's line: `flat` seen along the line, `along` on it. Boxes there
+// follow the move (which only changes `along`), where boxes on the axes are as wide as a diagonal move.
+struct Frame {
+  Vec3 e1, e2, d;
+  explicit Frame(Vec3 dir) : d(dir) {
+    const Vec3 a = std::abs(d.x) <= std::abs(d.y) && std::abs(d.x) <= std::abs(d.z) ? Vec3{1, 0, 0}
+                   : std::abs(d.y) <= std::abs(d.z)                                 ? Vec3{0, 1, 0}
+                                                                                    : Vec3{0, 0, 1};
+    e1 = normalized(cross(d, a));
+    e2 = cross(d, e1);
+  }
+  Vec2 flat(Vec3 v) const { return {dot(v, e1), dot(v, e2)}; }
+  double along(Vec3 v) const { return dot(v, d); }
+};
+
+// A box in frame coordinates.
+struct FrameBox {
+  Vec2 lo = Vec2::all(INFINITY), hi = Vec2::all(-INFINITY);
+  double alo = INFINITY, ahi = -INFINITY;
+  void add(Vec2 p, double a) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    alo = std::min(alo, a), ahi = std::max(ahi, a);
+  }
+  // The squared gap to another box: no point of one is nearer the other.
+  double gap2(const FrameBox& o) const {
+    const double x = std::max({lo.x - o.hi.x, o.lo.x - hi.x, 0.0}), y = std::max({lo.y - o.hi.y, o.lo.y - hi.y, 0.0}),
+                 z = std::max({alo - o.ahi, o.alo - ahi, 0.0});
+    return x * x + y * y + z * z;
+  }
+};
 
 }  // namespace
 
-void limit_fan(const FanMove& f, const Obstacle& o, double r, Reach& reach, const TermsWanted& wanted) {
+void limit_fan(const FanMove& f, const Obstacle& o, double r, Reach& reach, const TermsWanted& wanted,
+               const std::array<VertexPieces*, 3>& pieces) {
   const Line line{f.d};
   const std::size_t n = f.ring.size(), triangles = f.closed ? n : n - 1;
+  if (n > max_ring) throw Error("a fan of more than 6 ring points (a fault in selfsim: please report the recipe)");
   auto ring = [&](std::size_t i) { return f.ring[i % n] - f.m; };
   std::array<Vec3, 3> at{};
   for (int k = 0; k < o.corners; ++k) at[k] = o.at[k] - f.m;
   const Vec3 origin{};
-  // A term of distance d0 cannot act before |t| = d0 - r (see term()); with d0 at least the gap between
-  // its two parts' boxes, a term whose gap is r plus the reach of both sides or more needs no distance.
-  auto out_of_reach = [&](double gap) { return gap - r >= std::max(reach.positive, reach.negative); };
+  // The fan and the obstacle in a frame square to the line. A term acts only where its fan piece comes
+  // within r of its obstacle piece. While the point stays within the reach left on each side, the piece
+  // stays in the box of its static points and the point's two farthest places: where the obstacle piece's
+  // box is r or more from that one, the term needs no distance. Nor does the whole obstacle, likewise.
+  const Frame frame(f.d);
+  std::array<Vec2, max_ring> ring_flat;
+  std::array<double, max_ring> ring_along;
+  FrameBox fan_box, obstacle_box;
+  fan_box.add({}, reach.positive);
+  fan_box.add({}, -reach.negative);
+  for (std::size_t i = 0; i < n; ++i) {
+    ring_flat[i] = frame.flat(ring(i)), ring_along[i] = frame.along(ring(i));
+    fan_box.add(ring_flat[i], ring_along[i]);
+  }
+  std::array<Vec2, 3> at_flat;
+  std::array<double, 3> at_along;
+  for (int k = 0; k < o.corners; ++k) {
+    at_flat[k] = frame.flat(at[k]), at_along[k] = frame.along(at[k]);
+    obstacle_box.add(at_flat[k], at_along[k]);
+  }
+  if (fan_box.gap2(obstacle_box) >= r * r) return;
+  auto out_of_reach = [&](std::initializer_list<std::size_t> fan_static, std::initializer_list<int> piece) {
+    FrameBox a, b;
+    a.add({}, reach.positive);
+    a.add({}, -reach.negative);
+    for (std::size_t i : fan_static) a.add(ring_flat[i % n], ring_along[i % n]);
+    for (int k : piece) b.add(at_flat[k], at_along[k]);
+    return a.gap2(b) >= r * r;
+  };
+  // The pieces that several terms share, solved once at the full radius: where p comes near obstacle
+  // corner k, and where corner k comes near the spoke from ring point j (kept across the move's obstacles
+  // in the caller's pieces), and where p comes near the inside of obstacle edge k (across the spokes).
+  auto point_piece = [&](int k, double rho) {
+    VertexPieces* kept = pieces[k];
+    if (!kept || rho != r) return line.point(at[k], rho);
+    if (!(kept->known & VertexPieces::point_known)) {
+      kept->point = line.point(at[k], r);
+      kept->known |= VertexPieces::point_known;
+    }
+    return kept->point;
+  };
+  auto shadow_piece = [&](std::size_t j, int k, double rho) {
+    j %= n;
+    VertexPieces* kept = pieces[k];
+    if (!kept || rho != r || j >= kept->shadow.size()) return line.shadow(ring(j), at[k], rho);
+    if (!(kept->known & 1u << j)) {
+      kept->shadow[j] = line.shadow(ring(j), at[k], r);
+      kept->known |= 1u << j;
+    }
+    return kept->shadow[j];
+  };
+  std::array<Interval, 3> edge_inside;
+  std::array<bool, 3> edge_inside_known{};
+  auto edge_inside_piece = [&](int k, double rho) {
+    const Vec3 u = at[k], v = at[(k + 1) % o.corners];
+    if (rho != r) return line.segment_inside(u, v, rho);
+    if (!edge_inside_known[k]) edge_inside[k] = line.segment_inside(u, v, r), edge_inside_known[k] = true;
+    return edge_inside[k];
+  };
+  // The least a term can be anywhere on the line: the distance between its pieces seen along the line,
+  // where every place of a fan piece, its static points and p(t), lands in the flat piece of the static
+  // points and m. Most terms near a deep level's move never come below their radius at all: this finds them
+  // without solving.
+  const Vec2 m_flat{};
   if (o.corners == 1)
-    term(reach, r, norm(at[0]), either, 0, [&](double rho) { return line.point(at[0], rho); });
+    bounded_term(
+        reach, r, dot(at_flat[0], at_flat[0]), [&] { return norm(at[0]); },
+        [&](double rho) { return line.point(at[0], rho); });
   else if (o.corners == 2)
-    term(reach, r, point_segment_distance(origin, at[0], at[1]), either, 0,
-         [&](double rho) { return line.segment(at[0], at[1], rho); });
+    bounded_term(
+        reach, r, point_segment_distance2(m_flat, at_flat[0], at_flat[1]),
+        [&] { return point_segment_distance(origin, at[0], at[1]); },
+        [&](double rho) { return line.segment(at[0], at[1], rho); });
   else
-    term(reach, r, point_triangle_distance(origin, at[0], at[1], at[2]), either, 0,
-         [&](double rho) { return line.triangle(at[0], at[1], at[2], rho); });
+    bounded_term(
+        reach, r, point_triangle_distance2(m_flat, at_flat[0], at_flat[1], at_flat[2]),
+        [&] { return point_triangle_distance(origin, at[0], at[1], at[2]); },
+        [&](double rho) { return line.triangle(at[0], at[1], at[2], rho); });
+  // Corner terms: corner k within rho of fan triangle x, y, p(t) (x and y are static, never within rho).
   for (int k = 0; k < o.corners; ++k) {
     if (!wanted.corner[k]) continue;
     for (std::size_t i = 0; i < triangles; ++i) {
       if (shared(o.id[k], f.ring_id[i]) || shared(o.id[k], f.ring_id[(i + 1) % n])) continue;
       const Vec3 x = ring(i), y = ring(i + 1), w = at[k];
-      if (out_of_reach(box_gap({x, y, origin}, {w}))) continue;
-      term(reach, r, point_triangle_distance(w, x, y, origin), either, 0,
-           [&](double rho) { return line.corner(x, y, w, rho); });
+      if (out_of_reach({i, i + 1}, {k})) continue;
+      const double least = point_triangle_distance2(at_flat[k], ring_flat[i], ring_flat[(i + 1) % n], m_flat);
+      bounded_term(
+          reach, r, least, [&] { return point_triangle_distance(w, x, y, origin); },
+          [&](double rho) {
+            return hull(hull(line.face(x, y, w, rho), point_piece(k, rho)),
+                        hull(shadow_piece(i, k, rho), shadow_piece(i + 1, k, rho)));
+          });
     }
   }
+  // Edge terms: obstacle edge k, u-v, within rho of the spoke from z to p(t) (z is static, never within rho).
   const int edges = o.corners == 3 ? 3 : o.corners - 1;
   for (int k = 0; k < edges; ++k) {
     if (!wanted.edge[k]) continue;
@@ -182,9 +284,15 @@ void limit_fan(const FanMove& f, const Obstacle& o, double r, Reach& reach, cons
     for (std::size_t j = 0; j < n; ++j) {
       if (shared(o.id[k], f.ring_id[j]) || shared(o.id[k1], f.ring_id[j])) continue;
       const Vec3 z = ring(j), u = at[k], v = at[k1];
-      if (out_of_reach(box_gap({z, origin}, {u, v}))) continue;
-      term(reach, r, segment_segment_distance(u, v, z, origin), either, 0,
-           [&](double rho) { return line.edge(z, u, v, rho); });
+      if (out_of_reach({j}, {k, k1})) continue;
+      const double least = segment_distance2(at_flat[k], at_flat[k1], ring_flat[j], m_flat);
+      bounded_term(
+          reach, r, least, [&] { return segment_segment_distance(u, v, z, origin); },
+          [&](double rho) {
+            const Interval ends = hull(hull(point_piece(k, rho), point_piece(k1, rho)),
+                                       hull(shadow_piece(j, k, rho), shadow_piece(j, k1, rho)));
+            return hull(ends, hull(edge_inside_piece(k, rho), line.spoke_inside(z, u, v, rho)));
+          });
     }
   }
 }

@@ -33,10 +33,12 @@ namespace selfsim::exclusion {
 
 inline constexpr std::uint32_t no_vertex = 0xffffffffu;
 
+inline constexpr std::size_t max_ring = 6;  // a midpoint's fan has 4 or 6 ring points
+
 // The moving point and its fan.
 struct FanMove {
   Vec3 m, d;                               // where the point starts, and its line's unit direction
-  std::span<const Vec3> ring;              // the fan's other corners in order around p (at least 2)
+  std::span<const Vec3> ring;              // the fan's other corners in order around p (2 to max_ring)
   std::span<const std::uint32_t> ring_id;  // their vertex numbers
   bool closed = false;                     // the last and first ring points make a triangle with p too
 };
@@ -62,7 +64,19 @@ struct TermsWanted {
   std::array<bool, 3> corner{true, true, true}, edge{true, true, true};
 };
 
-// Narrows `reach` by what obstacle `o` allows the fan with radius r, exactly.
-void limit_fan(const FanMove& f, const Obstacle& o, double r, Reach& reach, const TermsWanted& wanted = {});
+// The sets of one obstacle corner w that the terms of one move share, solved once at the full radius: where
+// the point comes within r of w, and where w comes within r of the spoke from each ring point. A vertex of
+// the surface belongs to several obstacles, and each of its terms with a fan triangle or spoke needs them.
+struct VertexPieces {
+  static constexpr unsigned point_known = 1u << 7;
+  Interval point;
+  std::array<Interval, 6> shadow;  // by ring position
+  unsigned known = 0;              // bit j: shadow[j] solved; point_known: point solved
+};
+
+// Narrows `reach` by what obstacle `o` allows the fan with radius r, exactly. `pieces`: for each corner of
+// the obstacle, its shared sets for this move, filled as they are solved (null: solved afresh).
+void limit_fan(const FanMove& f, const Obstacle& o, double r, Reach& reach, const TermsWanted& wanted = {},
+               const std::array<VertexPieces*, 3>& pieces = {});
 
 }  // namespace selfsim::exclusion

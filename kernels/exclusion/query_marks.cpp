@@ -42,6 +42,8 @@ void Query::fit(std::size_t triangles, std::size_t boundary, std::size_t points)
   seen.assign(triangles, 0);
   boundary_seen.assign(boundary, 0);
   vertex_seen.assign(points, 0);
+  piece_stamp.assign(points, 0);
+  piece_slot.assign(points, 0);
   stamp = 0;
 }
 
@@ -51,14 +53,27 @@ void Query::next() {
     std::fill(seen.begin(), seen.end(), 0);
     std::fill(boundary_seen.begin(), boundary_seen.end(), 0);
     std::fill(vertex_seen.begin(), vertex_seen.end(), 0);
+    std::fill(piece_stamp.begin(), piece_stamp.end(), 0);
     stamp = 1;
   }
+  pieces.clear();
 }
 
 bool Query::first_visit(std::uint32_t vertex) {
   if (vertex_seen[vertex] == stamp) return false;
   vertex_seen[vertex] = stamp;
   return true;
+}
+
+std::array<VertexPieces*, 3> Query::pieces_of(const std::array<std::uint32_t, 3>& corners) {
+  for (std::uint32_t v : corners)
+    if (piece_stamp[v] != stamp) {
+      piece_stamp[v] = stamp;
+      piece_slot[v] = static_cast<std::uint32_t>(pieces.size());
+      pieces.emplace_back();
+    }
+  // Taken once the vector has stopped growing.
+  return {&pieces[piece_slot[corners[0]]], &pieces[piece_slot[corners[1]]], &pieces[piece_slot[corners[2]]]};
 }
 
 }  // namespace selfsim::exclusion

@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "kernels/exclusion/fan_reach.h"
+
 namespace selfsim::exclusion {
 
 // The edges (vertex pairs) a query has measured: an open-addressed table whose marks expire with the query.
@@ -29,10 +31,11 @@ class EdgeMarks {
 };
 
 // One move's marks (per thread): which triangles, boundary triangles, vertices and edges it has measured,
-// stamped with the move's number, and its list of obstacles near.
+// stamped with the move's number, its list of obstacles near, and the sets its obstacles' corners share.
 struct Query {
   std::uint32_t stamp = 0;
-  std::vector<std::uint32_t> seen, boundary_seen, vertex_seen;
+  std::vector<std::uint32_t> seen, boundary_seen, vertex_seen, piece_stamp, piece_slot;
+  std::vector<VertexPieces> pieces;                    // this move's, in piece_slot order
   std::vector<std::pair<double, std::uint32_t>> near;  // box gap, id
   EdgeMarks edges;
 
@@ -41,6 +44,8 @@ struct Query {
   void next();
   // True the first time a move meets this vertex.
   bool first_visit(std::uint32_t vertex);
+  // The shared sets of an obstacle's corners for this move (fan_reach.h), valid until the next call.
+  std::array<VertexPieces*, 3> pieces_of(const std::array<std::uint32_t, 3>& corners);
 };
 
 }  // namespace selfsim::exclusion

@@ -208,6 +208,8 @@ Reach Surfaces::reach(const Midpoint& mid, double r, Query& q, BBox3& looked) co
   BBox3 fan_box;
   for (int i = 0; i < mid.ring_size; ++i) fan_box.add(ring_at[i]);
   fan_box.add(f.m);
+  looked.add(fan_box);
+  if (limits.stuck(mid.h)) return limits;  // most moves of a deep level: nothing else can free them
   for (double t = std::max(mid.h, r);; t *= 2) {
     BBox3 swept = fan_box;
     swept.add(f.m + std::min(t, limits.positive) * f.d);
@@ -236,7 +238,7 @@ Reach Surfaces::reach(const Midpoint& mid, double r, Query& q, BBox3& looked) co
           wanted.corner[k] = q.first_visit(o.id[k]);
           wanted.edge[k] = q.edges.first_visit(o.id[k], o.id[(k + 1) % 3]);  // a neighbour shares it
         }
-      limit_fan(f, o, r, limits, wanted);
+      limit_fan(f, o, r, limits, wanted, id & boundary_bit ? std::array<VertexPieces*, 3>{} : q.pieces_of(o.id));
       limits.settle(mid.h);
     }
     if (limits.stuck(mid.h) || (limits.positive <= t && limits.negative <= t) || t > far_) return limits;

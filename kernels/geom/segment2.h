@@ -1,5 +1,6 @@
-// Distances and crossings of 2D segments: what a region's boundary and an exclusion curve (seed 004) are
-// measured with. Exact to rounding; a segment of zero length is its point.
+// Distances and crossings of 2D segments (and a point's to a triangle): what a region's boundary and an
+// exclusion curve (seed 004) are measured with, and what bounds an exclusion surface's terms seen along a
+// move. Exact to rounding; a segment of zero length is its point.
 #pragma once
 
 #include <algorithm>
@@ -35,6 +36,28 @@ inline double segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   if (segments_meet(a, b, c, d)) return 0;
   return std::min({point_segment_distance(a, c, d), point_segment_distance(b, c, d), point_segment_distance(c, a, b),
                    point_segment_distance(d, a, b)});
+}
+
+// Squared distances, for tests against a squared radius that need no root: p to segment a-b, segment a-b
+// to segment c-d, and p to triangle a, b, c (its inside counts; a flat triangle is its edges).
+inline double point_segment_distance2(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 d = b - a, w = p - a;
+  const double len2 = dot(d, d);
+  const Vec2 e = w - (len2 > 0 ? std::clamp(dot(w, d) / len2, 0.0, 1.0) : 0.0) * d;
+  return dot(e, e);
+}
+
+inline double segment_distance2(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  if (segments_meet(a, b, c, d)) return 0;
+  return std::min({point_segment_distance2(a, c, d), point_segment_distance2(b, c, d), point_segment_distance2(c, a, b),
+                   point_segment_distance2(d, a, b)});
+}
+
+inline double point_triangle_distance2(Vec2 p, Vec2 a, Vec2 b, Vec2 c) {
+  const double area = cross(b - a, c - a), s1 = cross(b - a, p - a), s2 = cross(c - b, p - b), s3 = cross(a - c, p - c);
+  if ((area > 0 && s1 >= 0 && s2 >= 0 && s3 >= 0) || (area < 0 && s1 <= 0 && s2 <= 0 && s3 <= 0)) return 0;
+  return std::min(
+      {point_segment_distance2(p, a, b), point_segment_distance2(p, b, c), point_segment_distance2(p, c, a)});
 }
 
 }  // namespace selfsim

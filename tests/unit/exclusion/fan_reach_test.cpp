@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <set>
 #include <vector>
 
 #include "kernels/geom/distance3.h"
@@ -143,4 +144,64 @@ TEST(FanReach, RoundingSliversDoNotFreezeACoplanarFan) {
   limit_fan(f, o, 0.26894085188634215, reach);
   EXPECT_NEAR(reach.positive, 1.373, 1e-3);
   EXPECT_EQ(reach.negative, unbounded);
+}
+
+// A move measures a patch of surface triangles one by one, as surface_net.cpp does: each corner's and edge's
+// terms once (with the first triangle that has it), and each corner's point and spoke pieces solved once and
+// kept across the triangles. The limits must be exactly those of solving every piece afresh, and those of
+// measuring every triangle in full (to rounding: an edge met the other way round rounds differently).
+TEST(FanReach, KeptPiecesAndMarksGiveTheLimitsOfMeasuringEverything) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> coordinate(-1, 1), radius(0.1, 0.6);
+  int kept_used = 0, blocked = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    std::vector<Vec3> ring;
+    for (int i = 0; i < 6; ++i) {
+      const double angle = i * 3.141592653589793 / 3;
+      ring.push_back(Vec3{0.3 * std::cos(angle), 0.3 * std::sin(angle), 0.05 * coordinate(random)});
+    }
+    const std::vector<std::uint32_t> ids{0, 1, 2, 3, 4, 5};
+    const FanMove f{
+        {0, 0, 0}, normalized(Vec3{0.3 * coordinate(random), 0.3 * coordinate(random), 1}), ring, ids, true};
+    // A 4 x 4 patch of points (ids 100 on) a little above or below the fan, two triangles per square.
+    const double height = 0.4 * coordinate(random);
+    std::vector<Vec3> patch;
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 4; ++i)
+        patch.push_back({-0.6 + 0.4 * i + 0.05 * coordinate(random), -0.6 + 0.4 * j + 0.05 * coordinate(random),
+                         height + 0.05 * coordinate(random)});
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    for (std::uint32_t j = 0; j < 3; ++j)
+      for (std::uint32_t i = 0; i < 3; ++i) {
+        const std::uint32_t a = 4 * j + i;
+        triangles.push_back({a, a + 1, a + 5});
+        triangles.push_back({a, a + 5, a + 4});
+      }
+    const double r = radius(random);
+    Reach everything, marked, afresh;
+    std::vector<VertexPieces> kept(patch.size());
+    std::vector<bool> corner_seen(patch.size());
+    std::set<std::pair<std::uint32_t, std::uint32_t>> edge_seen;
+    for (const auto& t : triangles) {
+      Obstacle o;
+      for (int k = 0; k < 3; ++k) o.at[k] = patch[t[k]], o.id[k] = 100 + t[k];
+      limit_fan(f, o, r, everything);
+      TermsWanted wanted;
+      for (int k = 0; k < 3; ++k) {
+        wanted.corner[k] = !corner_seen[t[k]];
+        corner_seen[t[k]] = true;
+        wanted.edge[k] = edge_seen.insert(std::minmax(t[k], t[(k + 1) % 3])).second;
+      }
+      limit_fan(f, o, r, marked, wanted, {&kept[t[0]], &kept[t[1]], &kept[t[2]]});
+      limit_fan(f, o, r, afresh, wanted);
+    }
+    EXPECT_EQ(marked.positive, afresh.positive) << trial;
+    EXPECT_EQ(marked.negative, afresh.negative) << trial;
+    for (const auto& [a, b] : {std::pair{marked.positive, everything.positive}, {marked.negative, everything.negative}})
+      EXPECT_TRUE(a == b || std::abs(a - b) < 1e-8 * std::max(1.0, a)) << trial << ": " << a << " against " << b;
+    for (const VertexPieces& p : kept) kept_used += p.known != 0;
+    blocked += std::isfinite(everything.positive) + std::isfinite(everything.negative);
+  }
+  EXPECT_GT(kept_used, 1000);  // pieces were kept and used
+  EXPECT_GT(blocked, 300);     // and the patch stopped moves
 }
