@@ -140,66 +140,44 @@ void bounded_term(Reach& reach, double r, double least2, D0 d0, SetFor set_for) 
   term(reach, r, start, either, 0, set_for);
 }
 
-// Coordinates in a frame square to the move's line: `flat` seen along the line, `along` on it. Boxes there
-// follow the move (which only changes `along`), where boxes on the axes are as wide as a diagonal move.
-struct Frame {
-  Vec3 e1, e2, d;
-  explicit Frame(Vec3 dir) : d(dir) {
-    const Vec3 a = std::abs(d.x) <= std::abs(d.y) && std::abs(d.x) <= std::abs(d.z) ? Vec3{1, 0, 0}
-                   : std::abs(d.y) <= std::abs(d.z)                                 ? Vec3{0, 1, 0}
-                                                                                    : Vec3{0, 0, 1};
-    e1 = normalized(cross(d, a));
-    e2 = cross(d, e1);
-  }
-  Vec2 flat(Vec3 v) const { return {dot(v, e1), dot(v, e2)}; }
-  double along(Vec3 v) const { return dot(v, d); }
-};
-
-// A box in frame coordinates.
-struct FrameBox {
-  Vec2 lo = Vec2::all(INFINITY), hi = Vec2::all(-INFINITY);
-  double alo = INFINITY, ahi = -INFINITY;
-  void add(Vec2 p, double a) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
-    alo = std::min(alo, a), ahi = std::max(ahi, a);
-  }
-  // The squared gap to another box: no point of one is nearer the other.
-  double gap2(const FrameBox& o) const {
-    const double x = std::max({lo.x - o.hi.x, o.lo.x - hi.x, 0.0}), y = std::max({lo.y - o.hi.y, o.lo.y - hi.y, 0.0}),
-                 z = std::max({alo - o.ahi, o.alo - ahi, 0.0});
-    return x * x + y * y + z * z;
-  }
-};
-
 }  // namespace
 
-void limit_fan(const FanMove& f, const Obstacle& o, double r, Reach& reach, const TermsWanted& wanted,
+FanView::FanView(const FanMove& f) : move(f) {
+  const Vec3 d = f.d;
+  const Vec3 a = std::abs(d.x) <= std::abs(d.y) && std::abs(d.x) <= std::abs(d.z) ? Vec3{1, 0, 0}
+                 : std::abs(d.y) <= std::abs(d.z)                                 ? Vec3{0, 1, 0}
+                                                                                  : Vec3{0, 0, 1};
+  e1 = normalized(cross(d, a));
+  e2 = cross(d, e1);
+  if (f.ring.size() > max_ring)
+    throw Error("a fan of more than 6 ring points (a fault in selfsim: please report the recipe)");
+  for (std::size_t i = 0; i < f.ring.size(); ++i) {
+    ring[i] = f.ring[i] - f.m;
+    flat[i] = flat_of(ring[i]), along[i] = along_of(ring[i]);
+    box.add(flat[i], along[i]);
+  }
+}
+
+void limit_fan(const FanView& fan, const Obstacle& o, double r, Reach& reach, const TermsWanted& wanted,
                const std::array<VertexPieces*, 3>& pieces) {
+  const FanMove& f = fan.move;
   const Line line{f.d};
   const std::size_t n = f.ring.size(), triangles = f.closed ? n : n - 1;
-  if (n > max_ring) throw Error("a fan of more than 6 ring points (a fault in selfsim: please report the recipe)");
-  auto ring = [&](std::size_t i) { return f.ring[i % n] - f.m; };
+  auto ring = [&](std::size_t i) { return fan.ring[i % n]; };
   std::array<Vec3, 3> at{};
   for (int k = 0; k < o.corners; ++k) at[k] = o.at[k] - f.m;
   const Vec3 origin{};
-  // The fan and the obstacle in a frame square to the line. A term acts only where its fan piece comes
+  // The fan and the obstacle in the frame square to the line. A term acts only where its fan piece comes
   // within r of its obstacle piece. While the point stays within the reach left on each side, the piece
   // stays in the box of its static points and the point's two farthest places: where the obstacle piece's
   // box is r or more from that one, the term needs no distance. Nor does the whole obstacle, likewise.
-  const Frame frame(f.d);
-  std::array<Vec2, max_ring> ring_flat;
-  std::array<double, max_ring> ring_along;
-  FrameBox fan_box, obstacle_box;
+  FrameBox fan_box = fan.box, obstacle_box;
   fan_box.add({}, reach.positive);
   fan_box.add({}, -reach.negative);
-  for (std::size_t i = 0; i < n; ++i) {
-    ring_flat[i] = frame.flat(ring(i)), ring_along[i] = frame.along(ring(i));
-    fan_box.add(ring_flat[i], ring_along[i]);
-  }
   std::array<Vec2, 3> at_flat;
   std::array<double, 3> at_along;
   for (int k = 0; k < o.corners; ++k) {
-    at_flat[k] = frame.flat(at[k]), at_along[k] = frame.along(at[k]);
+    at_flat[k] = fan.flat_of(at[k]), at_along[k] = fan.along_of(at[k]);
     obstacle_box.add(at_flat[k], at_along[k]);
   }
   if (fan_box.gap2(obstacle_box) >= r * r) return;
@@ -207,7 +185,7 @@ void limit_fan(const FanMove& f, const Obstacle& o, double r, Reach& reach, cons
     FrameBox a, b;
     a.add({}, reach.positive);
     a.add({}, -reach.negative);
-    for (std::size_t i : fan_static) a.add(ring_flat[i % n], ring_along[i % n]);
+    for (std::size_t i : fan_static) a.add(fan.flat[i % n], fan.along[i % n]);
     for (int k : piece) b.add(at_flat[k], at_along[k]);
     return a.gap2(b) >= r * r;
   };
@@ -267,7 +245,7 @@ void limit_fan(const FanMove& f, const Obstacle& o, double r, Reach& reach, cons
       if (shared(o.id[k], f.ring_id[i]) || shared(o.id[k], f.ring_id[(i + 1) % n])) continue;
       const Vec3 x = ring(i), y = ring(i + 1), w = at[k];
       if (out_of_reach({i, i + 1}, {k})) continue;
-      const double least = point_triangle_distance2(at_flat[k], ring_flat[i], ring_flat[(i + 1) % n], m_flat);
+      const double least = point_triangle_distance2(at_flat[k], fan.flat[i], fan.flat[(i + 1) % n], m_flat);
       bounded_term(
           reach, r, least, [&] { return point_triangle_distance(w, x, y, origin); },
           [&](double rho) {
@@ -285,7 +263,7 @@ void limit_fan(const FanMove& f, const Obstacle& o, double r, Reach& reach, cons
       if (shared(o.id[k], f.ring_id[j]) || shared(o.id[k1], f.ring_id[j])) continue;
       const Vec3 z = ring(j), u = at[k], v = at[k1];
       if (out_of_reach({j}, {k, k1})) continue;
-      const double least = segment_distance2(at_flat[k], at_flat[k1], ring_flat[j], m_flat);
+      const double least = segment_distance2(at_flat[k], at_flat[k1], fan.flat[j], m_flat);
       bounded_term(
           reach, r, least, [&] { return segment_segment_distance(u, v, z, origin); },
           [&](double rho) {

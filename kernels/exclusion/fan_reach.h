@@ -21,12 +21,14 @@
 // The interval comes in closed form from the quadratics of its pieces.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <span>
 
 #include "kernels/exclusion/reach.h"
 #include "kernels/geom/bbox.h"
+#include "kernels/geom/vec2.h"
 #include "kernels/geom/vec3.h"
 
 namespace selfsim::exclusion {
@@ -74,9 +76,45 @@ struct VertexPieces {
   unsigned known = 0;              // bit j: shadow[j] solved; point_known: point solved
 };
 
+// A box in the coordinates of a frame square to a move's line: two across it (`flat`, the line seen end
+// on), one along it. Such boxes follow the move, which only changes the coordinate along.
+struct FrameBox {
+  Vec2 lo = Vec2::all(unbounded), hi = Vec2::all(-unbounded);
+  double along_lo = unbounded, along_hi = -unbounded;
+
+  void add(Vec2 flat, double along) {
+    lo = {std::min(lo.x, flat.x), std::min(lo.y, flat.y)}, hi = {std::max(hi.x, flat.x), std::max(hi.y, flat.y)};
+    along_lo = std::min(along_lo, along), along_hi = std::max(along_hi, along);
+  }
+  // The squared gap to another box: no point of one is nearer the other.
+  double gap2(const FrameBox& o) const {
+    const double x = std::max({lo.x - o.hi.x, o.lo.x - hi.x, 0.0}), y = std::max({lo.y - o.hi.y, o.lo.y - hi.y, 0.0}),
+                 z = std::max({along_lo - o.along_hi, o.along_lo - along_hi, 0.0});
+    return x * x + y * y + z * z;
+  }
+};
+
+// A move's fan prepared once for every obstacle it meets: its ring from m, and in the frame e1, e2, d.
+struct FanView {
+  explicit FanView(const FanMove& f);  // f must outlive the view
+  Vec2 flat_of(Vec3 v) const { return {dot(v, e1), dot(v, e2)}; }
+  double along_of(Vec3 v) const { return dot(v, move.d); }
+
+  const FanMove& move;
+  Vec3 e1, e2;
+  std::array<Vec3, max_ring> ring;
+  std::array<Vec2, max_ring> flat;
+  std::array<double, max_ring> along;
+  FrameBox box;  // the ring's
+};
+
 // Narrows `reach` by what obstacle `o` allows the fan with radius r, exactly. `pieces`: for each corner of
 // the obstacle, its shared sets for this move, filled as they are solved (null: solved afresh).
-void limit_fan(const FanMove& f, const Obstacle& o, double r, Reach& reach, const TermsWanted& wanted = {},
+void limit_fan(const FanView& fan, const Obstacle& o, double r, Reach& reach, const TermsWanted& wanted = {},
                const std::array<VertexPieces*, 3>& pieces = {});
+inline void limit_fan(const FanMove& f, const Obstacle& o, double r, Reach& reach, const TermsWanted& wanted = {},
+                      const std::array<VertexPieces*, 3>& pieces = {}) {
+  limit_fan(FanView(f), o, r, reach, wanted, pieces);
+}
 
 }  // namespace selfsim::exclusion

@@ -191,6 +191,7 @@ Reach Surfaces::reach(const Midpoint& mid, double r, Query& q, BBox3& looked) co
                   {ring_at.data(), static_cast<std::size_t>(mid.ring_size)},
                   {mid.ring.data(), static_cast<std::size_t>(mid.ring_size)},
                   mid.closed};
+  const FanView view(f);
   Reach limits;
   q.next();
   for (int i = 0; i < mid.fan_size; ++i) q.seen[mid.fan[i]] = q.stamp;  // the fan moves with the point
@@ -201,7 +202,7 @@ Reach Surfaces::reach(const Midpoint& mid, double r, Query& q, BBox3& looked) co
     Obstacle own{{ring_at[i], ring_at[j], Vec3{}}, {mid.ring[i], mid.ring[j], no_vertex}, 2};
     TermsWanted wanted;
     wanted.corner = {q.first_visit(mid.ring[i]), q.first_visit(mid.ring[j]), false};
-    limit_fan(f, own, r, limits, wanted);
+    limit_fan(view, own, r, limits, wanted);
     limits.settle(mid.h);
   }
   // The fan where it starts: every term's distance is at least its box's distance from this box.
@@ -210,7 +211,7 @@ Reach Surfaces::reach(const Midpoint& mid, double r, Query& q, BBox3& looked) co
   fan_box.add(f.m);
   looked.add(fan_box);
   if (limits.stuck(mid.h)) return limits;  // most moves of a deep level: nothing else can free them
-  for (double t = std::max(mid.h, r);; t *= 2) {
+  for (double t = mid.h;; t *= 2) {
     BBox3 swept = fan_box;
     swept.add(f.m + std::min(t, limits.positive) * f.d);
     swept.add(f.m - std::min(t, limits.negative) * f.d);
@@ -238,7 +239,7 @@ Reach Surfaces::reach(const Midpoint& mid, double r, Query& q, BBox3& looked) co
           wanted.corner[k] = q.first_visit(o.id[k]);
           wanted.edge[k] = q.edges.first_visit(o.id[k], o.id[(k + 1) % 3]);  // a neighbour shares it
         }
-      limit_fan(f, o, r, limits, wanted, id & boundary_bit ? std::array<VertexPieces*, 3>{} : q.pieces_of(o.id));
+      limit_fan(view, o, r, limits, wanted, id & boundary_bit ? std::array<VertexPieces*, 3>{} : q.pieces_of(o.id));
       limits.settle(mid.h);
     }
     if (limits.stuck(mid.h) || (limits.positive <= t && limits.negative <= t) || t > far_) return limits;
@@ -255,8 +256,10 @@ Obstacle Surfaces::obstacle(std::uint32_t id) const {
 }
 
 void Surfaces::order_rounds(double reach) {
-  // Cells of 4 times the reach a move usually has, in 8 colours by the parities of their coordinates: two
-  // cells of one colour are a cell apart, so the moves of one round rarely see each other.
+  // Cells of twice the reach a move usually has, in 8 colours by the parities of their coordinates: two
+  // cells of one colour are a cell apart, so the moves of one round rarely see each other. (Larger cells
+  // see each other less but leave dense places to long runs of small rounds: at 9 levels, 4 times took
+  // 7,806 rounds and twice 2,233, with 1.7% of moves measured again.)
   const double cell = round_cells_ * reach;
   const BBox3 bounds = boundary_.bbox();
   struct Key {

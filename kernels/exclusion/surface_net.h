@@ -45,14 +45,14 @@ class Surfaces {
   // its round changed what it measured. The same result for any number of threads, and the same as moving
   // them one after another in that order (speculate = false, for tests).
   void grow(double r, LevelReport& report, Progress& progress, bool speculate = true);
-  // Round cells `factor` times a move's usual reach instead of 4 (tests make rounds collide with small ones).
+  // Round cells `factor` times a move's usual reach instead of 2 (tests make rounds collide with small ones).
   void set_round_cells(double factor) { round_cells_ = factor; }
   Mesh result() const;
 
  private:
   // How far mid may move, with q's marks; `looked` grows to cover every box it measured in.
   Reach reach(const Midpoint& mid, double r, Query& q, BBox3& looked) const;
-  // The level's order: rounds of midpoints in cells of 4 times `reach`, cells of one colour (the parities of
+  // The level's order: rounds of midpoints in cells of twice `reach`, cells of one colour (the parities of
   // their coordinates) together, the k-th midpoint (in edge order) of each cell in round k of its colour.
   void order_rounds(double reach);
   // A surface triangle, or a boundary triangle (id with boundary_bit), as an obstacle.
@@ -68,7 +68,7 @@ class Surfaces {
   BoxGrid3 grid_;
   std::vector<std::uint32_t> order_;  // the midpoints in the order they move
   std::vector<std::size_t> rounds_;   // where each round starts in order_, and the end
-  double round_cells_ = 4;
+  double round_cells_ = 2;
   tbb::enumerable_thread_specific<Query> queries_;
   double far_;  // no point moves farther than this: twice the region's diagonal
 };
