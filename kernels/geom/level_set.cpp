@@ -69,12 +69,16 @@ struct Frame {
   Vec3 world(const openvdb::Vec3s& q) const { return origin + voxel * Vec3{q.x(), q.y(), q.z()}; }
 };
 
-// The frame for `box` at `voxel`, refusing a voxel that is not positive and finite, or a box more than 2^20
-// voxels across (float coordinates then still resolve 1/16 of a voxel).
+// The frame for `box` at `voxel`, refusing a voxel that is not positive and finite or below 1e-100, or a box
+// more than 2^20 voxels across (float coordinates then still resolve 1/16 of a voxel).
 Frame frame_for(const BBox3& box, double voxel) {
   if (!(voxel > 0 && std::isfinite(voxel)))
     throw Error("the voxel size (given as 'voxel', or 1/128 of the longest side) must be a positive number, got " +
                 number_text(voxel));
+  // Areas and volumes in voxels square and cube it: below 1e-100 they would underflow.
+  if (voxel < 1e-100)
+    throw Error("the voxel size " + number_text(voxel) +
+                " is too small for double precision (below 1e-100): scale the shape up");
   const Vec3 s = box.size();
   const double across = std::max({s.x, s.y, s.z}) / voxel;
   if (!(across <= 1 << 20))

@@ -30,6 +30,42 @@ double boundary_distance(const Mesh& boundary, Vec3 p) {
   return d;
 }
 
+// The distance between two triangles: the least of their corners' distances to the other and their edges'.
+double triangle_distance(const Mesh& m, const Triangle& a, const Triangle& b) {
+  double d = INFINITY;
+  for (int pass = 0; pass < 2; ++pass) {
+    const Triangle& s = pass == 0 ? a : b;
+    const Triangle& t = pass == 0 ? b : a;
+    for (std::uint32_t v : s)
+      d = std::min(d, point_triangle_distance(m.points[v], m.points[t[0]], m.points[t[1]], m.points[t[2]]));
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      d = std::min(d, segment_segment_distance(m.points[a[i]], m.points[a[(i + 1) % 3]], m.points[b[j]],
+                                               m.points[b[(j + 1) % 3]]));
+  return d;
+}
+
+// A closed surface or a fold grown in the cube: a manifold of the start's topology without crossings, every
+// point inside and the last radius from the walls.
+void expect_grown_like_its_start(const Mesh& cube, const Mesh& start, const SurfaceOptions& o) {
+  const SurfaceResult r = exclusion_surface(cube, start, o, no_progress());
+  EXPECT_EQ(r.surface.faces(), start.faces() << (2 * o.levels));
+  const MeshTopology before = mesh_topology(start), after = mesh_topology(r.surface);
+  EXPECT_TRUE(after.manifold()) << after.first_problem;
+  EXPECT_EQ(after.boundary_loops, before.boundary_loops);
+  EXPECT_EQ(after.euler(), before.euler());
+  EXPECT_FALSE(first_intersection(r.surface, no_progress()).has_value());
+  const double last = o.radius * std::pow(o.factor, o.levels - 1);
+  for (Vec3 p : r.surface.points) {
+    EXPECT_GT(winding_number(cube, p), 0.5);
+    EXPECT_GE(boundary_distance(cube, p), last * (1 - 1e-6));
+  }
+  std::size_t moved = 0;
+  for (const LevelReport& l : r.levels) moved += l.splits - l.stuck;
+  EXPECT_GT(moved, r.levels.back().splits / 10);  // it grew, not only split
+}
+
 SurfaceOptions options(int levels) {
   SurfaceOptions o;
   o.radius = 0.1;
@@ -81,6 +117,43 @@ TEST(ExclusionSurface, TwoSurfacesGrowWithoutMeetingAndKeepTheirNumbers) {
   EXPECT_EQ(surface->at(0), 1);
   EXPECT_EQ(surface->at(r.surface.faces() - 1), 2);
   EXPECT_EQ(mesh_topology(r.surface).components, 2u);
+  // The two share no point, so every triangle of one keeps the last radius from every triangle of the other
+  // (their starts are 0.4 apart, more than the first radius, so no term starts within it).
+  const double last = 0.1 * std::pow(0.8, 3);
+  double closest = INFINITY;
+  for (std::size_t a = 0; a < r.surface.faces(); ++a)
+    for (std::size_t b = 0; b < r.surface.faces(); ++b)
+      if (surface->at(a) == 1 && surface->at(b) == 2)
+        closest = std::min(closest, triangle_distance(r.surface, r.surface.triangles[a], r.surface.triangles[b]));
+  EXPECT_GE(closest, last * (1 - 1e-6));
+  EXPECT_LT(closest, 0.2);  // and they grew towards each other
+}
+
+// A closed start, a tetrahedron, stays a closed surface of genus 0 (Euler characteristic 2).
+TEST(ExclusionSurface, AClosedStartStaysClosed) {
+  const Mesh cube = box_mesh({0, 0, 0}, {1, 1, 1});
+  Mesh tetrahedron;
+  tetrahedron.points = {{0.4, 0.4, 0.4}, {0.6, 0.4, 0.4}, {0.5, 0.6, 0.4}, {0.5, 0.5, 0.6}};
+  tetrahedron.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
+  SurfaceOptions o = options(3);
+  o.radius = 0.05;
+  expect_grown_like_its_start(cube, tetrahedron, o);
+}
+
+// Two triangles folded 30 degrees apart about their shared edge: the sharp dihedral angle's bisector moves
+// the fold's midpoints out of the narrow wedge, and the wedge's sides never meet.
+TEST(ExclusionSurface, ASharpFoldDoesNotCloseOnItself) {
+  const Mesh cube = box_mesh({0, 0, 0}, {1, 1, 1});
+  const double angle = 30 * 3.141592653589793 / 180;
+  Mesh fold;
+  fold.points = {{0.5, 0.3, 0.5},
+                 {0.5, 0.7, 0.5},
+                 {0.8, 0.5, 0.5},
+                 {0.5 + 0.3 * std::cos(angle), 0.5, 0.5 + 0.3 * std::sin(angle)}};
+  fold.triangles = {{0, 1, 2}, {1, 0, 3}};
+  SurfaceOptions o = options(4);
+  o.radius = 0.02;
+  expect_grown_like_its_start(cube, fold, o);
 }
 
 TEST(ExclusionSurface, BadStartsAndOptionsAreRefusedByName) {
