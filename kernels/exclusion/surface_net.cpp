@@ -211,11 +211,14 @@ Reach Surfaces::reach(const Midpoint& mid, double r, Query& q, BBox3& looked) co
   fan_box.add(f.m);
   looked.add(fan_box);
   if (limits.stuck(mid.h)) return limits;  // most moves of a deep level: nothing else can free them
-  for (double t = mid.h;; t *= 2) {
+  // The neighbours within a few edges first: most moves a large radius stops are stuck by them, and
+  // collecting the whole radius at once would take in all of a small surface for every move.
+  double margin = std::min(r, 4 * mid.h);
+  for (double t = mid.h;;) {
     BBox3 swept = fan_box;
     swept.add(f.m + std::min(t, limits.positive) * f.d);
     swept.add(f.m - std::min(t, limits.negative) * f.d);
-    const BBox3 near{swept.min - Vec3::all(r), swept.max + Vec3::all(r)};
+    const BBox3 near{swept.min - Vec3::all(margin), swept.max + Vec3::all(margin)};
     looked.add(near);
     // The obstacles near, nearest first by their boxes' distance from the fan's.
     q.near.clear();
@@ -242,7 +245,13 @@ Reach Surfaces::reach(const Midpoint& mid, double r, Query& q, BBox3& looked) co
       limit_fan(view, o, r, limits, wanted, id & boundary_bit ? std::array<VertexPieces*, 3>{} : q.pieces_of(o.id));
       limits.settle(mid.h);
     }
-    if (limits.stuck(mid.h) || (limits.positive <= t && limits.negative <= t) || t > far_) return limits;
+    if (limits.stuck(mid.h)) return limits;
+    if (margin < r) {
+      margin = r;  // the rest of the radius, before the move may go farther
+      continue;
+    }
+    if ((limits.positive <= t && limits.negative <= t) || t > far_) return limits;
+    t *= 2;
   }
 }
 
