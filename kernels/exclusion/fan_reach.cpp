@@ -204,7 +204,7 @@ void limit_fan(const FanView& fan, const Obstacle& o, double r, Reach& reach, co
   auto shadow_piece = [&](std::size_t j, int k, double rho) {
     j %= n;
     VertexPieces* kept = pieces[k];
-    if (!kept || rho != r || j >= kept->shadow.size()) return line.shadow(ring(j), at[k], rho);
+    if (!kept || rho != r) return line.shadow(ring(j), at[k], rho);
     if (!(kept->known & 1u << j)) {
       kept->shadow[j] = line.shadow(ring(j), at[k], r);
       kept->known |= 1u << j;

@@ -72,8 +72,8 @@ struct TermsWanted {
 struct VertexPieces {
   static constexpr unsigned point_known = 1u << 7;
   Interval point;
-  std::array<Interval, 6> shadow;  // by ring position
-  unsigned known = 0;              // bit j: shadow[j] solved; point_known: point solved
+  std::array<Interval, max_ring> shadow;  // by ring position
+  unsigned known = 0;                     // bit j: shadow[j] solved; point_known: point solved
 };
 
 // A box in the coordinates of a frame square to a move's line: two across it (`flat`, the line seen end
