@@ -7,6 +7,7 @@
 
 #include "interpreter/bindings.h"
 #include "interpreter/curve_value.h"
+#include "interpreter/level_reports.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
 #include "interpreter/run_context.h"
@@ -34,17 +35,7 @@ void push_report(lua_State* L, const exclusion::CurveResult& r) {
   lua_createtable(L, 0, 2);
   lua_pushinteger(L, static_cast<lua_Integer>(r.stuck()));
   lua_setfield(L, -2, "stuck");
-  lua_createtable(L, static_cast<int>(r.levels.size()), 0);
-  for (std::size_t i = 0; i < r.levels.size(); ++i) {
-    lua_createtable(L, 0, 3);
-    lua_pushinteger(L, static_cast<lua_Integer>(r.levels[i].splits));
-    lua_setfield(L, -2, "splits");
-    lua_pushinteger(L, static_cast<lua_Integer>(r.levels[i].stuck));
-    lua_setfield(L, -2, "stuck");
-    lua_pushnumber(L, r.levels[i].seconds);
-    lua_setfield(L, -2, "seconds");
-    lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
-  }
+  push_level_reports(L, r.levels, "splits");
   lua_setfield(L, -2, "levels");
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "interpreter/bindings.h"
+#include "interpreter/level_reports.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
 #include "interpreter/point_reader.h"
@@ -44,29 +45,13 @@ Mesh read_start(lua_State* L, Options& o) {
 void push_report(lua_State* L, const exclusion::SurfaceResult& r, double voxel, std::size_t region_triangles,
                  std::size_t start_triangles) {
   lua_createtable(L, 0, 4);
-  std::size_t stuck = 0;
-  for (const auto& l : r.levels) stuck += l.stuck;
-  lua_pushinteger(L, static_cast<lua_Integer>(stuck));
+  lua_pushinteger(L, static_cast<lua_Integer>(exclusion::total_stuck(r.levels)));
   lua_setfield(L, -2, "stuck");
   lua_pushnumber(L, voxel);
   lua_setfield(L, -2, "voxel");
   lua_pushinteger(L, static_cast<lua_Integer>(region_triangles));
   lua_setfield(L, -2, "region_triangles");
-  lua_createtable(L, static_cast<int>(r.levels.size()), 0);
-  double triangles = static_cast<double>(start_triangles);
-  for (std::size_t i = 0; i < r.levels.size(); ++i) {
-    triangles *= 4;
-    lua_createtable(L, 0, 4);
-    lua_pushinteger(L, static_cast<lua_Integer>(triangles));
-    lua_setfield(L, -2, "triangles");
-    lua_pushinteger(L, static_cast<lua_Integer>(r.levels[i].splits));
-    lua_setfield(L, -2, "moves");
-    lua_pushinteger(L, static_cast<lua_Integer>(r.levels[i].stuck));
-    lua_setfield(L, -2, "stuck");
-    lua_pushnumber(L, r.levels[i].seconds);
-    lua_setfield(L, -2, "seconds");
-    lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
-  }
+  push_level_reports(L, r.levels, "moves", start_triangles);
   lua_setfield(L, -2, "levels");
 }
 

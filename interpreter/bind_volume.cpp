@@ -31,6 +31,18 @@ double read_voxel(Options& o) {
   return voxel;
 }
 
+// Reads `voxel` and refuses options left over, then pushes the volume make() builds with that voxel: the
+// end of every constructor that takes an options table.
+template <class Make>
+int push_made(lua_State* L, Options& o, Make make) {
+  const double voxel = read_voxel(o);
+  o.finish();
+  Volume v = make();
+  v.voxel = voxel;
+  push_volume(L, std::move(v));
+  return 1;
+}
+
 Vec3 required_point(Options& o, const char* key, const char* hint) {
   o.require(key, hint);
   return o.point3(key).value_or(Vec3{});
@@ -41,12 +53,7 @@ int volume_box(lua_State* L) {
     Options o(L, 1);
     const Vec3 lo = required_point(o, "min", "the lowest corner, e.g. min = {0, 0, 0}");
     const Vec3 hi = required_point(o, "max", "the highest corner, e.g. max = {1, 1, 1}");
-    const double voxel = read_voxel(o);
-    o.finish();
-    Volume v = Volume::box(lo, hi);
-    v.voxel = voxel;
-    push_volume(L, std::move(v));
-    return 1;
+    return push_made(L, o, [&] { return Volume::box(lo, hi); });
   });
 }
 
@@ -56,12 +63,7 @@ int volume_sphere(lua_State* L) {
     const Vec3 centre = required_point(o, "center", "the centre, e.g. center = {0, 0, 0}");
     o.require("radius", "the radius, e.g. radius = 1");
     const double radius = o.number("radius", 0);
-    const double voxel = read_voxel(o);
-    o.finish();
-    Volume v = Volume::sphere(centre, radius);
-    v.voxel = voxel;
-    push_volume(L, std::move(v));
-    return 1;
+    return push_made(L, o, [&] { return Volume::sphere(centre, radius); });
   });
 }
 
@@ -99,20 +101,17 @@ int combine(lua_State* L, const char* fn, Volume::Kind kind) {
     const auto n = static_cast<lua_Integer>(lua_rawlen(L, 1));
     Options o(L, 1);
     o.positional(n);
-    const double voxel = read_voxel(o);
-    o.finish();
-    std::vector<std::shared_ptr<const Volume>> parts;
-    for (lua_Integer i = 1; i <= n; ++i) {
-      lua_rawgeti(L, 1, i);
-      Held<Volume> part = test_volume(L, -1);
-      if (!part) throw Error("entry " + std::to_string(i) + " must be a volume, got " + describe(L, -1));
-      lua_pop(L, 1);
-      parts.push_back(std::move(part));
-    }
-    Volume v = Volume::combine(kind, std::move(parts));
-    v.voxel = voxel;
-    push_volume(L, std::move(v));
-    return 1;
+    return push_made(L, o, [&] {
+      std::vector<std::shared_ptr<const Volume>> parts;
+      for (lua_Integer i = 1; i <= n; ++i) {
+        lua_rawgeti(L, 1, i);
+        Held<Volume> part = test_volume(L, -1);
+        if (!part) throw Error("entry " + std::to_string(i) + " must be a volume, got " + describe(L, -1));
+        lua_pop(L, 1);
+        parts.push_back(std::move(part));
+      }
+      return Volume::combine(kind, std::move(parts));
+    });
   });
 }
 

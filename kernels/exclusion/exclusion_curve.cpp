@@ -91,11 +91,7 @@ void CurveOptions::validate() const {
   check_range(levels, 0, 40, "option 'levels'");
 }
 
-std::size_t CurveResult::stuck() const {
-  std::size_t s = 0;
-  for (const LevelReport& l : levels) s += l.stuck;
-  return s;
-}
+std::size_t CurveResult::stuck() const { return total_stuck(levels); }
 
 double curve_size(const Polyline& start, int levels) {
   double points = 0;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 namespace selfsim::exclusion {
 
@@ -10,5 +11,12 @@ struct LevelReport {
   std::size_t splits = 0, stuck = 0;
   double seconds = 0;
 };
+
+// Points that could not move, over all levels.
+inline std::size_t total_stuck(const std::vector<LevelReport>& levels) {
+  std::size_t s = 0;
+  for (const LevelReport& l : levels) s += l.stuck;
+  return s;
+}
 
 }  // namespace selfsim::exclusion
