@@ -13,14 +13,24 @@
 #include "interpreter/run_context.h"
 #include "kernels/exclusion/discs.h"
 #include "kernels/exclusion/exclusion_curve.h"
+#include "kernels/geom/check.h"
 
 namespace selfsim::interp {
 
 namespace {
 
+// A region's rings are closed curves (each path ends at its first point, as polygon{} makes them): an open
+// polyline is refused rather than closed silently with an edge the recipe never drew.
 Region region_of(const Polyline& c) {
   std::vector<std::vector<Vec2>> rings;
-  for (std::size_t i = 0; i < c.paths(); ++i) rings.emplace_back(c.path(i).begin(), c.path(i).end());
+  for (std::size_t i = 0; i < c.paths(); ++i) {
+    const auto path = c.path(i);
+    if (path.size() > 1 && path.front() != path.back())
+      throw Error("option 'region': " + (c.paths() > 1 ? "path " + std::to_string(i + 1) : std::string("the curve")) +
+                  " is open (it ends at {" + number_text(path.back().x) + ", " + number_text(path.back().y) +
+                  "}, not at its first point): a region is closed; write polygon { ... }, which closes itself");
+    rings.emplace_back(path.begin(), path.end());
+  }
   try {
     return Region(std::move(rings));
   } catch (const BudgetError&) {

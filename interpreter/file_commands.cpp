@@ -3,12 +3,14 @@
 #include <cstdio>
 #include <exception>
 #include <new>
+#include <optional>
 
 #include "interpreter/commands.h"
 #include "interpreter/lua_support.h"
 #include "kernels/analysis/dataset_diff.h"
 #include "kernels/geom/error.h"
 #include "kernels/geom/mesh_check.h"
+#include "kernels/geom/mesh_intersections.h"
 #include "kernels/io/dataset_values.h"
 #include "kernels/io/read.h"
 
@@ -46,13 +48,20 @@ void print_surface(const io::Dataset& d) {
     return;
   }
   const MeshTopology t = mesh_topology(m);
-  std::printf("triangles: %zu\nsurface: %s, %zu component%s, %zu boundary loop%s, Euler characteristic %lld\n", t.faces,
+  // A manifold by its connectivity can still pass through itself: a slicer would not print that.
+  Progress quiet;
+  const std::optional<TrianglePair> crossing = t.manifold() ? first_intersection(m, quiet) : std::nullopt;
+  std::printf("triangles: %zu\nsurface: %s%s, %zu component%s, %zu boundary loop%s, Euler characteristic %lld\n",
+              t.faces,
               t.closed()     ? "closed manifold"
               : t.manifold() ? "manifold with boundary"
                              : "not manifold",
-              t.components, t.components == 1 ? "" : "s", t.boundary_loops, t.boundary_loops == 1 ? "" : "s",
-              t.euler());
+              crossing ? " that crosses itself" : "", t.components, t.components == 1 ? "" : "s", t.boundary_loops,
+              t.boundary_loops == 1 ? "" : "s", t.euler());
   if (!t.manifold()) std::printf("first problem: %s\n", t.first_problem.c_str());
+  if (crossing)
+    std::printf("first crossing: triangles %u and %u meet near [%.9g, %.9g, %.9g]\n", crossing->first + 1,
+                crossing->second + 1, crossing->where.x, crossing->where.y, crossing->where.z);
 }
 
 }  // namespace

@@ -143,7 +143,74 @@ std::string type_word(const char* type) {
 
 void hold_points(lua_State* L, double points) { RunContext::of(L).held_points += points; }
 
-PointBudget run_budget(lua_State* L) { return RunContext::of(L).budget(); }
+PointBudget run_budget(lua_State* L) {
+  RunContext& run = RunContext::of(L);
+  if (run.values.sweep_due) sweep_values(L);
+  return run.budget();
+}
+
+namespace {
+
+constexpr const char* live_key = "selfsim.live";
+
+// Pushes the registry's table id -> userdata, whose values are weak: a collected userdata leaves its slot.
+void push_live_table(lua_State* L) {
+  if (lua_getfield(L, LUA_REGISTRYINDEX, live_key) == LUA_TTABLE) return;
+  lua_pop(L, 1);
+  lua_createtable(L, 0, 0);
+  lua_createtable(L, 0, 1);
+  lua_pushliteral(L, "v");
+  lua_setfield(L, -2, "__mode");
+  lua_setmetatable(L, -2);
+  lua_pushvalue(L, -1);
+  lua_setfield(L, LUA_REGISTRYINDEX, live_key);
+}
+
+}  // namespace
+
+std::uint64_t adopt_value(lua_State* L, std::shared_ptr<const void> value, double points, std::size_t bytes) {
+  RunContext& run = RunContext::of(L);
+  if (run.values.sweep_due) sweep_values(L);
+  hold_memory(L, static_cast<double>(bytes));
+  return run.values.add({std::move(value), points, bytes});
+}
+
+void hold_value(lua_State* L, std::uint64_t id) {
+  RunContext& run = RunContext::of(L);
+  push_live_table(L);
+  lua_pushvalue(L, -2);
+  lua_rawseti(L, -2, static_cast<lua_Integer>(id));
+  lua_pop(L, 1);
+  if (LiveValue* v = run.values.find(id)) {
+    v->held = true;
+    run.held_points += v->points;
+  }
+}
+
+std::shared_ptr<const void> live_value(lua_State* L, std::uint64_t id) {
+  const LiveValue* v = RunContext::of(L).values.find(id);
+  return v ? v->value : nullptr;
+}
+
+void release_value(lua_State* L, std::uint64_t id) {
+  RunContext& run = RunContext::of(L);
+  const LiveValue v = run.values.take(id);
+  if (v.held) run.held_points -= v.points;
+  hold_external(run.memory, -static_cast<double>(v.bytes));
+}
+
+void sweep_values(lua_State* L) {
+  RunContext& run = RunContext::of(L);
+  run.values.sweep_due = false;
+  push_live_table(L);
+  std::vector<std::uint64_t> gone;
+  run.values.each_held([&](std::uint64_t id) {
+    if (lua_rawgeti(L, -1, static_cast<lua_Integer>(id)) == LUA_TNIL) gone.push_back(id);
+    lua_pop(L, 1);
+  });
+  lua_pop(L, 1);
+  for (const std::uint64_t id : gone) release_value(L, id);
+}
 
 void hold_memory(lua_State* L, double bytes) {
   LuaMemory& m = RunContext::of(L).memory;

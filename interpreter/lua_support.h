@@ -2,6 +2,7 @@
 // called the kernel, and userdata values with a metatable per type. Only interpreter/ includes Lua.
 #pragma once
 
+#include <cstdint>
 #include <lua.hpp>
 #include <memory>
 #include <new>
@@ -81,19 +82,29 @@ int call_kernel(lua_State* L, const char* fn, Body&& body) {
   return lua_error(L);
 }
 
-// A C++ value in a Lua userdata. The finalizer empties `value` but Lua frees the block only later, so a
-// value resurrected by a recipe's own finalizer stays a valid, recognisably dead object, never freed memory.
+// A C++ value in a Lua userdata: the userdata holds the value's id in the run's LiveValues (live_values.h),
+// which owns it, so that a userdata freed without its finalizer cannot leak it. The finalizer releases the
+// id; a recipe's own finalizer that resurrects the userdata then finds a recognisably dead value.
 // Values are shared: a binding holds its own reference for the whole call, so a finalizer that runs while
 // the call is back in Lua (an options table's __index, a garbage collection) cannot free it under the call.
 template <class T>
 using Held = std::shared_ptr<const T>;
 
-template <class T>
 struct Box {
-  Held<T> value;
-  double points = 0;      // counted against the run's --max-points budget while alive
-  std::size_t bytes = 0;  // C++ memory counted against --max-memory while alive (a grammar's rules)
+  std::uint64_t id;
 };
+
+// Takes ownership of a new value for the userdata about to be made (counting its bytes against
+// --max-memory, which throws Error when they do not fit) and returns its id.
+std::uint64_t adopt_value(lua_State* L, std::shared_ptr<const void> value, double points, std::size_t bytes);
+// Records the userdata on top of the stack as the holder of value `id` and counts its points.
+void hold_value(lua_State* L, std::uint64_t id);
+// The value of `id`, or null once released.
+std::shared_ptr<const void> live_value(lua_State* L, std::uint64_t id);
+// Releases value `id` and what it counted (a finalizer; nothing when it was released already).
+void release_value(lua_State* L, std::uint64_t id);
+// Releases every value whose userdata has been collected without its finalizer having run.
+void sweep_values(lua_State* L);
 
 // The value's type name without the "selfsim." prefix: "Curve".
 std::string type_word(const char* type);
@@ -114,6 +125,7 @@ auto with_budget(lua_State* L, Make&& make) {
     if (run_budget(L).held == 0) throw;
   }
   lua_gc(L, LUA_GCCOLLECT);
+  sweep_values(L);  // values whose finalizers could not run
   return make(run_budget(L));
 }
 
@@ -134,21 +146,21 @@ void hold_memory(lua_State* L, double bytes);
 // budget and `bytes` against its memory limit.
 template <class T>
 void push_value(lua_State* L, const char* type, T&& value, double points = 0, std::size_t bytes = 0) {
-  hold_memory(L, static_cast<double>(bytes));
-  Held<T> held = std::make_shared<const T>(std::forward<T>(value));
-  new (lua_newuserdatauv(L, sizeof(Box<T>), 0)) Box<T>{std::move(held), points, bytes};
+  const std::uint64_t id = adopt_value(L, std::make_shared<const T>(std::forward<T>(value)), points, bytes);
+  new (lua_newuserdatauv(L, sizeof(Box), 0)) Box{id};
   luaL_setmetatable(L, type);
-  hold_points(L, points);
+  hold_value(L, id);
 }
 
 // The value at index if it is a userdata of `type`, else null. Throws Error for a value of that type whose
 // finalizer has run ("Curve used after it was freed"). Keep the result for as long as the value is used.
 template <class T>
 Held<T> test_value(lua_State* L, int index, const char* type) {
-  auto* box = static_cast<Box<T>*>(luaL_testudata(L, index, type));
+  auto* box = static_cast<Box*>(luaL_testudata(L, index, type));
   if (box == nullptr) return nullptr;
-  if (!box->value) throw Error(type_word(type) + " used after it was freed (kept alive by a finalizer)");
-  return box->value;
+  std::shared_ptr<const void> v = live_value(L, box->id);
+  if (!v) throw Error(type_word(type) + " used after it was freed (kept alive by a finalizer)");
+  return std::static_pointer_cast<const T>(std::move(v));
 }
 
 // The method's receiver (argument 1), or a recipe error that points at the usual slip, a '.' written for
@@ -185,12 +197,8 @@ void register_type(lua_State* L, const char* type, const luaL_Reg* methods, lua_
   lua_pushcclosure(
       L,
       [](lua_State* S) {
-        auto* box = static_cast<Box<T>*>(luaL_testudata(S, 1, lua_tostring(S, lua_upvalueindex(1))));
-        if (box != nullptr && box->value) {
-          box->value.reset();
-          hold_points(S, -box->points);
-          hold_memory(S, -static_cast<double>(box->bytes));
-        }
+        if (auto* box = static_cast<Box*>(luaL_testudata(S, 1, lua_tostring(S, lua_upvalueindex(1)))))
+          release_value(S, box->id);
         return 0;
       },
       1);

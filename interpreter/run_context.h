@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "interpreter/live_values.h"
 #include "interpreter/lua_memory.h"
 #include "kernels/geom/budget.h"
 #include "kernels/geom/progress.h"
@@ -46,12 +47,15 @@ class RunContext : public Progress {
   bool ended = false;                 // the recipe has returned or failed: nothing more may be written
   std::atomic<bool> reported{false};  // the run's error line is printed: the watchdog adds none
   LuaMemory memory;                   // the Lua state's allocator and its --max-memory limit
+  LiveValues values;                  // the C++ values the recipe's Lua values stand for
+  std::string pending_warning;        // a warning Lua is still sending in pieces
 
   // What the run's values may still make: --max-points less what live values hold.
   PointBudget budget() const { return {config.max_points, held_points}; }
 
   // Progress: a bar on stderr when it is a terminal and the task runs over a second.
   void start(const char* what) override;
+  void rename(const char* what) override { task_ = what; }
   void fraction(double done) override;
   bool cancelled() override;
   // Why the run is being stopped ("--timeout of 2 s reached", "interrupted"), or empty.

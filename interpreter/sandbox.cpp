@@ -160,13 +160,20 @@ int panic(lua_State* L) {
   std::_Exit(1);
 }
 
-// warn() and errors in finalizers, one line each: "selfsim: warning: ...". "@on"/"@off" are ignored.
+// warn() and errors in finalizers, one line each: "selfsim: warning: ...". "@on"/"@off" are ignored. A
+// finalizer that failed may have left a value unreleased: the next budget check sweeps them. Finalizers
+// fail by the thousand at the C-stack limit, where every call fails; the run's own error says so once, and
+// those warnings are dropped.
 void warning(void* ud, const char* message, int to_continue) {
-  auto& pending = *static_cast<std::string*>(ud);
+  auto& run = *static_cast<RunContext*>(ud);
+  std::string& pending = run.pending_warning;
   if (pending.empty() && !to_continue && message[0] == '@') return;
   pending += message;
   if (to_continue && pending.size() < 4096) return;
-  std::fprintf(stderr, "selfsim: warning: %s\n", shown_text(pending, 500).c_str());
+  const bool finalizer = pending.rfind("error in __gc", 0) == 0;
+  if (finalizer) run.values.sweep_due = true;
+  if (!(finalizer && pending.find("stack overflow") != std::string::npos))
+    std::fprintf(stderr, "selfsim: warning: %s\n", shown_text(pending, 500).c_str());
   pending.clear();
 }
 
@@ -179,8 +186,7 @@ lua_State* new_sandbox(RunContext& run) {
   if (L == nullptr) return nullptr;
   run.memory.L = L;
   lua_atpanic(L, panic);
-  static std::string pending_warning;
-  lua_setwarnf(L, warning, &pending_warning);
+  lua_setwarnf(L, warning, &run);
   const luaL_Reg libs[] = {{LUA_GNAME, luaopen_base},        {LUA_TABLIBNAME, luaopen_table},
                            {LUA_STRLIBNAME, luaopen_string}, {LUA_MATHLIBNAME, luaopen_math},
                            {LUA_UTF8LIBNAME, luaopen_utf8},  {LUA_COLIBNAME, luaopen_coroutine}};

@@ -200,6 +200,7 @@ NearOrigin near_origin(std::span<const Polyline* const> levels) {
 Mesh develop_surface(std::span<const Polyline* const> given, const DevelopOptions& opt, Progress& progress,
                      std::vector<std::string>* warnings) {
   opt.validate();
+  progress.start("developing surface");
   check_stack(given);
   const NearOrigin near = near_origin(given);
   const std::span<const Polyline* const> levels = near.levels;

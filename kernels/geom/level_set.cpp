@@ -18,6 +18,7 @@
 #include "kernels/geom/box_mesh.h"
 #include "kernels/geom/check.h"
 #include "kernels/geom/mesh_check.h"
+#include "kernels/geom/mesh_intersections.h"
 
 namespace selfsim {
 
@@ -163,12 +164,6 @@ Grid::Ptr volume_level_set(const Volume& v, const Frame& f, Interrupter& interru
   return result;
 }
 
-double signed_volume(const Mesh& m) {
-  double s = 0;
-  for (const Triangle& t : m.triangles) s += dot(m.points[t[0]], cross(m.points[t[1]], m.points[t[2]]));
-  return s;
-}
-
 // The zero surface of a level set in frame f as triangles facing outwards, each quad split along its
 // shorter diagonal.
 Mesh zero_surface(const Grid& g, const Frame& f) {
@@ -190,9 +185,33 @@ Mesh zero_surface(const Grid& g, const Frame& f) {
       m.triangles.push_back({q[1], q[2], q[3]});
     }
   }
-  if (signed_volume(m) < 0)
+  if (enclosed_volume(m) < 0)
     for (Triangle& t : m.triangles) std::swap(t[1], t[2]);
   return m;
+}
+
+// Where a shape's surface passes exactly through lattice points (a sphere of radius 1 at voxel 0.04, a box's
+// corner), the mesher puts several points at one place and makes zero-area triangles that cross their
+// neighbours. The boundary is then meshed again with the lattice moved by a fraction of a voxel: the first
+// placement is the shape's lowest corner; the others are moved by amounts no simple shape lines up with.
+constexpr Vec3 lattice_shifts[] = {{0, 0, 0},
+                                   {0.3819660113, 0.2360679775, 0.1458980338},
+                                   {0.7071067812, 0.5773502692, 0.4472135955},
+                                   {0.1415926536, 0.7182818285, 0.4142135624}};
+
+// Why a closed mesh from the mesher is not a valid boundary ("has a triangle of zero area (triangle 12)",
+// "crosses itself (triangles 3 and 40 meet near {...})"), or empty when it is valid.
+std::string degenerate_surface(const Mesh& m, Progress& progress) {
+  const BBox3 box = m.bbox();
+  const double size = norm(box.max - box.min);
+  for (std::size_t i = 0; i < m.triangles.size(); ++i)
+    if (!(norm(area_normal(m, m.triangles[i])) > 1e-18 * size * size))
+      return "has a triangle of zero area (triangle " + std::to_string(i + 1) + ")";
+  if (const auto pair = first_intersection(m, progress))
+    return "crosses itself (triangles " + std::to_string(pair->first + 1) + " and " + std::to_string(pair->second + 1) +
+           " meet near {" + number_text(pair->where.x) + ", " + number_text(pair->where.y) + ", " +
+           number_text(pair->where.z) + "})";
+  return "";
 }
 
 // The corners of a volume's parts: where the level sets' trees grow.
@@ -244,23 +263,36 @@ Mesh volume_boundary(const Volume& v, double voxel, const PointBudget& budget, P
     check_budget(boundary_size(v, voxel), budget, "the volume's boundary at voxel size " + number_text(voxel));
     return exact_boundary(v, voxel);
   }
-  const Frame f = frame_for(v.bbox(), voxel);
+  const Frame first = frame_for(v.bbox(), voxel);
   check_budget(boundary_size(v, voxel), budget, "the volume's boundary at voxel size " + number_text(voxel));
   initialise_openvdb();
   Interrupter interrupt{progress};
-  Mesh m = openvdb_call([&] { return zero_surface(*volume_level_set(v, f, interrupt), f); });
-  if (m.triangles.empty()) throw Error("the volume is empty at voxel size " + number_text(voxel));
-  const MeshTopology t = mesh_topology(m);
-  if (!t.closed())
-    throw Error("the volume's boundary at voxel size " + number_text(voxel) +
-                " is not a closed surface (a part thinner than a voxel, or parts touching?): " + t.first_problem +
-                "; give a smaller voxel");
-  return m;
+  std::string problem;
+  for (const Vec3 shift : lattice_shifts) {
+    const Frame f{first.origin - voxel * shift, voxel};
+    Mesh m = openvdb_call([&] { return zero_surface(*volume_level_set(v, f, interrupt), f); });
+    if (m.triangles.empty()) throw Error("the volume is empty at voxel size " + number_text(voxel));
+    const MeshTopology t = mesh_topology(m);
+    if (!t.closed())
+      throw Error("the volume's boundary at voxel size " + number_text(voxel) +
+                  " is not a closed surface (a part thinner than a voxel, or parts touching?): " + t.first_problem +
+                  "; give a smaller voxel");
+    problem = degenerate_surface(m, progress);
+    if (problem.empty()) return m;
+  }
+  throw Error("the volume's boundary at voxel size " + number_text(voxel) + " " + problem +
+              " at every placement of the voxel lattice tried; give another voxel size");
 }
 
 std::string distance_vdb(const Mesh& m, bool closed, double voxel, const std::string& name, const PointBudget& budget,
                          Progress& progress) {
   const Frame f = frame_for(m.bbox(), voxel);
+  // OpenVDB's transforms, written into the file and rebuilt by every reader, refuse a voxel whose cube is
+  // below 3e-15: no .vdb can hold a finer grid, whatever writes it.
+  if (voxel * voxel * voxel < 3.0 * openvdb::math::Tolerance<double>::value())
+    throw Error("a .vdb cannot hold voxels smaller than " + number_text(min_vdb_voxel) + ", got " + number_text(voxel) +
+                " (OpenVDB's limit; the default voxel is 1/128 of the longest side): give " +
+                "'voxel' of at least that, or scale the shape up (a part measured in metres: use millimetres)");
   check_budget(tree_size(m.points, surface_area(m), f), budget,
                "a distance grid at voxel size " + number_text(voxel) + " (set a larger 'voxel')");
   initialise_openvdb();

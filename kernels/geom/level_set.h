@@ -23,9 +23,12 @@ double boundary_size(const Volume& v, double voxel);
 // voxel size that is not positive and finite or for a combination that is empty at this voxel size.
 Mesh volume_boundary(const Volume& v, double voxel, const PointBudget& budget, Progress& progress);
 
+// The smallest voxel a .vdb file can hold: OpenVDB's transforms refuse a voxel whose cube is below 3e-15.
+inline constexpr double min_vdb_voxel = 1.4423e-5;
+
 // The signed distance to a closed mesh's surface (negative inside), or the unsigned distance to an open
 // one, in a narrow band 3 voxels either side, as a .vdb file's bytes: one float grid named `name`, class
-// "level set" for a closed mesh. Throws BudgetError over the budget.
+// "level set" for a closed mesh. Throws BudgetError over the budget, Error for a voxel below min_vdb_voxel.
 std::string distance_vdb(const Mesh& m, bool closed, double voxel, const std::string& name, const PointBudget& budget,
                          Progress& progress);
 

@@ -43,4 +43,12 @@ double surface_area(const Mesh& m) {
   return a;
 }
 
+double enclosed_volume(const Mesh& m) {
+  const BBox3 b = m.bbox();
+  const Vec3 o = 0.5 * (b.min + b.max);
+  double v = 0;
+  for (const Triangle& t : m.triangles) v += dot(m.points[t[0]] - o, cross(m.points[t[1]] - o, m.points[t[2]] - o));
+  return v / 6;
+}
+
 }  // namespace selfsim

@@ -30,7 +30,10 @@ struct HalfEdge {
   auto key() const { return std::pair{lo, hi}; }
 };
 
-std::string edge_text(const HalfEdge& e) { return "(" + std::to_string(e.lo) + ", " + std::to_string(e.hi) + ")"; }
+// Points and faces in messages count from 1, as Mesh::validate and every other message does.
+std::string edge_text(const HalfEdge& e) {
+  return "(" + std::to_string(std::size_t{e.lo} + 1) + ", " + std::to_string(std::size_t{e.hi} + 1) + ")";
+}
 
 }  // namespace
 
@@ -69,8 +72,9 @@ MeshTopology mesh_topology(const Mesh& m) {
       faces.join(half[i].face, half[i + 1].face);
       if (half[i].forward == half[i + 1].forward) {
         ++t.misoriented_edges;
-        problem("faces " + std::to_string(half[i].face) + " and " + std::to_string(half[i + 1].face) +
-                " traverse edge " + edge_text(half[i]) + " in the same direction (inconsistent orientation)");
+        problem("faces " + std::to_string(std::size_t{half[i].face} + 1) + " and " +
+                std::to_string(std::size_t{half[i + 1].face} + 1) + " traverse edge " + edge_text(half[i]) +
+                " in the same direction (inconsistent orientation)");
       }
     } else {
       ++t.nonmanifold_edges;
@@ -110,7 +114,7 @@ MeshTopology mesh_topology(const Mesh& m) {
     for (std::uint32_t k = 0; k < fs.size(); ++k) fans += fan.root(k) == k;
     if (fans > 1) {
       ++t.nonmanifold_vertices;
-      problem("vertex " + std::to_string(v) + " joins " + std::to_string(fans) +
+      problem("vertex " + std::to_string(std::size_t{v} + 1) + " joins " + std::to_string(fans) +
               " fans of faces that share no edge through it (a bowtie)");
     }
   }

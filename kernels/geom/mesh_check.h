@@ -32,7 +32,7 @@ struct MeshTopology {
   bool closed() const { return manifold() && boundary_edges == 0 && faces > 0; }
 };
 
-// The topology of m. Point indices in first_problem are 0-based. O(F log F).
+// The topology of m. Points and faces in first_problem count from 1. O(F log F).
 MeshTopology mesh_topology(const Mesh& m);
 
 }  // namespace selfsim

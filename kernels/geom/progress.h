@@ -13,6 +13,8 @@ class Progress {
   virtual ~Progress() = default;
   // A new task begins; `what` is a short name for display ("dragon level 26").
   virtual void start(const char* /*what*/) {}
+  // The same task goes on under another name ("thickening" within "developing surface").
+  virtual void rename(const char* /*what*/) {}
   // Fraction done in [0, 1].
   virtual void fraction(double /*done*/) {}
   // True when the run should stop as soon as possible.
@@ -25,12 +27,13 @@ class Progress {
   }
 };
 
-// One stage of a kernel with several: reports its own progress [0, 1] as [begin, end] of the parent's,
-// under the parent's task name; cancellation is the parent's.
+// One stage of a kernel with several: reports its own progress [0, 1] as [begin, end] of the parent's;
+// the task it starts renames the parent's; cancellation is the parent's.
 class ProgressStage : public Progress {
  public:
   ProgressStage(Progress& parent, double begin, double end) : parent_(parent), begin_(begin), end_(end) {}
-  void start(const char*) override {}
+  void start(const char* what) override { parent_.rename(what); }
+  void rename(const char* what) override { parent_.rename(what); }
   void fraction(double done) override { parent_.fraction(begin_ + done * (end_ - begin_)); }
   bool cancelled() override { return parent_.cancelled(); }
 

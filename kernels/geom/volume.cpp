@@ -40,12 +40,6 @@ std::string first_open_edge(const Mesh& m) {
   return "";
 }
 
-double signed_volume(const Mesh& m) {
-  double v = 0;
-  for (const Triangle& t : m.triangles) v += dot(m.points[t[0]], cross(m.points[t[1]], m.points[t[2]]));
-  return v / 6;
-}
-
 std::string point_text(Vec3 p) {
   return "{" + number_text(p.x) + ", " + number_text(p.y) + ", " + number_text(p.z) + "}";
 }
@@ -80,11 +74,11 @@ Volume Volume::closed_mesh(Mesh m, Progress& progress) {
   const std::string open = first_open_edge(m);
   if (!open.empty()) throw Error("the mesh is not closed: " + open);
   const MeshTopology topology = mesh_topology(m);
-  if (!topology.manifold()) throw Error("the mesh is not a manifold: " + topology.first_problem + " (counted from 0)");
+  if (!topology.manifold()) throw Error("the mesh is not a manifold: " + topology.first_problem);
   if (const auto pair = first_intersection(m, progress))
     throw Error("the mesh crosses itself: its triangles " + std::to_string(pair->first + 1) + " and " +
                 std::to_string(pair->second + 1) + " meet near " + point_text(pair->where));
-  const double v = signed_volume(m);
+  const double v = enclosed_volume(m);
   if (!(std::abs(v) > 0)) throw Error("the mesh encloses no volume");
   if (v < 0)
     for (Triangle& t : m.triangles) std::swap(t[1], t[2]);

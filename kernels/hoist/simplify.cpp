@@ -13,12 +13,15 @@ namespace selfsim::hoist {
 
 namespace {
 
-// Distance from p to the segment a–b (to a when a = b: a closed path's own chord).
+// Distance from p to the segment a–b (to a when a = b: a closed path's own chord). The projection is
+// taken in units of the segment's larger coordinate difference: squared lengths of a curve 1e155 across
+// overflow, and its points would all seem to project onto a.
 double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 d = b - a;
-  const double len2 = dot(d, d);
-  if (!(len2 > 0)) return norm(p - a);
-  const double w = std::clamp(dot(p - a, d) / len2, 0.0, 1.0);
+  const double unit = std::max(std::abs(d.x), std::abs(d.y));
+  if (!(unit > 0)) return norm(p - a);
+  const Vec2 du{d.x / unit, d.y / unit}, pu{(p.x - a.x) / unit, (p.y - a.y) / unit};
+  const double w = std::clamp(dot(pu, du) / dot(du, du), 0.0, 1.0);
   return norm(p - (a + w * d));
 }
 

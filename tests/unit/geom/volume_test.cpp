@@ -14,12 +14,6 @@
 namespace selfsim {
 namespace {
 
-double enclosed(const Mesh& m) {
-  double v = 0;
-  for (const Triangle& t : m.triangles) v += dot(m.points[t[0]], cross(m.points[t[1]], m.points[t[2]]));
-  return v / 6;
-}
-
 std::shared_ptr<const Volume> shared(Volume v) { return std::make_shared<const Volume>(std::move(v)); }
 
 TEST(Volume, SphereMeshIsClosedOutwardAndWithinItsTolerance) {
@@ -29,7 +23,7 @@ TEST(Volume, SphereMeshIsClosedOutwardAndWithinItsTolerance) {
     const MeshTopology t = mesh_topology(m);
     EXPECT_TRUE(t.closed());
     EXPECT_EQ(t.euler(), 2);
-    EXPECT_GT(enclosed(m), 0);
+    EXPECT_GT(enclosed_volume(m), 0);
     // Corners on the sphere; each face's centroid (the point farthest inside) within the tolerance.
     for (Vec3 p : m.points) EXPECT_NEAR(norm(p - Vec3{1, 2, 3}), 2, 1e-12);
     double deepest = 0;
@@ -46,7 +40,7 @@ TEST(Volume, ClosedMeshIsTurnedOutwardsAndOpenOrCrossingMeshesAreRefusedByEdge) 
   Mesh inward = box_mesh({0, 0, 0}, {1, 1, 1});
   for (Triangle& t : inward.triangles) std::swap(t[1], t[2]);
   const Volume v = Volume::closed_mesh(inward, no_progress());
-  EXPECT_NEAR(enclosed(*v.mesh), 1, 1e-12);
+  EXPECT_NEAR(enclosed_volume(*v.mesh), 1, 1e-12);
 
   Mesh open = box_mesh({0, 0, 0}, {1, 1, 1});
   open.triangles.pop_back();
@@ -75,8 +69,8 @@ TEST(Volume, UnionAndDifferenceBoundariesAreClosedAndEncloseTheRightVolume) {
     EXPECT_TRUE(mesh_topology(*m).closed());
     EXPECT_FALSE(first_intersection(*m, no_progress()));
   }
-  EXPECT_NEAR(enclosed(l), 3, 0.05);          // the L: 4 less the 1 x 1 x 1 notch
-  EXPECT_NEAR(enclosed(u), 4 + 12 - 1, 0.1);  // both boxes less their overlap
+  EXPECT_NEAR(enclosed_volume(l), 3, 0.05);          // the L: 4 less the 1 x 1 x 1 notch
+  EXPECT_NEAR(enclosed_volume(u), 4 + 12 - 1, 0.1);  // both boxes less their overlap
   EXPECT_GT(winding_number(l, {0.5, 0.5, 0.5}), 0.5);
   EXPECT_LT(winding_number(l, {1.5, 1.5, 0.5}), 0.5);  // the notch
   // A sphere less a concentric smaller one: a hollow shell, two boundary surfaces.
@@ -85,12 +79,66 @@ TEST(Volume, UnionAndDifferenceBoundariesAreClosedAndEncloseTheRightVolume) {
                                      voxel, {}, no_progress());
   EXPECT_EQ(mesh_topology(shell).components, 2u);
   // Both spheres' polyhedra lie up to a quarter voxel inside them, and the level sets round off a voxel's detail.
-  EXPECT_NEAR(enclosed(shell), 4 * std::numbers::pi / 3 * (1 - 0.125), 0.15);
+  EXPECT_NEAR(enclosed_volume(shell), 4 * std::numbers::pi / 3 * (1 - 0.125), 0.15);
   // Nothing left: an error, not an empty region.
   EXPECT_THROW(
       volume_boundary(Volume::combine(Volume::Kind::subtract, {a, shared(Volume::box({-1, -1, -1}, {4, 4, 4}))}), voxel,
                       {}, no_progress()),
       Error);
+}
+
+// Where a surface passes exactly through lattice points (a radius-1 sphere at voxels that divide 1, a
+// tetrahedron's corners on a box's lattice), the mesher's first output has points at one place and zero-area
+// triangles that cross their neighbours (issue 21: refused as "crosses itself" at most voxel sizes).
+TEST(Volume, CsgBoundariesAreValidWhereTheSurfacePassesThroughLatticePoints) {
+  const Volume shell = Volume::combine(Volume::Kind::subtract,
+                                       {shared(Volume::sphere({0, 0, 0}, 1)), shared(Volume::sphere({0, 0, 0}, 0.5))});
+  Mesh tet;
+  tet.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  tet.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
+  const Volume joined = Volume::combine(Volume::Kind::unite, {shared(Volume::closed_mesh(tet, no_progress())),
+                                                              shared(Volume::box({0.5, 0.5, 0.5}, {1.5, 1.5, 1.5}))});
+  // Each of these fails at the first placement (the issue also lists the shell at 0.01, 0.008, 0.005).
+  for (const auto& [v, voxel] : {std::pair{&shell, 0.04}, {&shell, 0.02}, {&joined, 0.025}}) {
+    try {
+      const Mesh m = volume_boundary(*v, voxel, {}, no_progress());
+      EXPECT_TRUE(mesh_topology(m).closed()) << voxel;
+      for (const Triangle& t : m.triangles) ASSERT_GT(norm(area_normal(m, t)), 0) << voxel;
+      EXPECT_FALSE(first_intersection(m, no_progress())) << voxel;
+    } catch (const Error& e) {
+      ADD_FAILURE() << "voxel " << voxel << ": " << e.what();
+    }
+  }
+}
+
+// Inside and outside agree with the boundary wherever the shape is: a box with a square hole at 1e6 (its
+// signed volume summed from the origin cancelled to noise and turned the boundary inside out), and two
+// boxes 2e-6 across at (1, 1, 1).
+TEST(Volume, CsgBoundariesFaceOutwardsFarFromTheOriginAndAtAnyScale) {
+  for (const double o : {0.0, 1e6, -3e7}) {
+    const Vec3 c{o, o, o};
+    const Volume holed =
+        Volume::combine(Volume::Kind::subtract, {shared(Volume::box(c - Vec3{1, 1, 1}, c + Vec3{1, 1, 1})),
+                                                 shared(Volume::box(c - Vec3{0.3, 0.3, 2}, c + Vec3{0.3, 0.3, 2}))});
+    const Mesh m = volume_boundary(holed, 0.05, {}, no_progress());
+    EXPECT_NEAR(enclosed_volume(m), 8 - 0.36 * 2, 0.05) << o;
+    EXPECT_GT(winding_number(m, c + Vec3{0.6, -0.6, 0}), 0.5) << o;
+    EXPECT_LT(winding_number(m, c), 0.5) << o;  // the hole
+  }
+  const double s = 1e-6;
+  const Volume tiny =
+      Volume::combine(Volume::Kind::unite, {shared(Volume::box({1, 1, 1}, {1 + 2 * s, 1 + 2 * s, 1 + s})),
+                                            shared(Volume::box({1, 1, 1 + s / 2}, {1 + s, 1 + s, 1 + 2 * s}))});
+  const Mesh m = volume_boundary(tiny, s / 20, {}, no_progress());
+  EXPECT_GT(enclosed_volume(m), 0);
+  EXPECT_GT(winding_number(m, {1 + 1.5 * s, 1 + 1.5 * s, 1 + 0.5 * s}), 0.5);
+}
+
+// OpenVDB's transforms refuse voxels whose cube is below 3e-15, in writing and in every reader.
+TEST(Volume, DistanceFilesRefuseVoxelsNoVdbCanHold) {
+  const Mesh mm = box_mesh({0, 0, 0}, {1e-3, 1e-3, 1e-3});
+  EXPECT_THROW(distance_vdb(mm, true, 1e-3 / 128, "surface", {}, no_progress()), Error);
+  EXPECT_EQ(distance_vdb(mm, true, min_vdb_voxel, "surface", {}, no_progress()).substr(0, 4), std::string(" BDV"));
 }
 
 TEST(Volume, BoundariesAreCountedAgainstTheBudgetBeforeTheyAreMade) {

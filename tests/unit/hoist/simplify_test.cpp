@@ -62,3 +62,19 @@ TEST(Simplify, AClosedPathKeepsATriangle) {
   EXPECT_EQ(s.points.size(), 4u);
   EXPECT_EQ(s.points.front(), s.points.back());
 }
+
+namespace selfsim {
+namespace {
+
+// The same zigzag at any scale keeps the same points (issue 21: from 1e155 the squared lengths overflowed
+// and every point seemed to lie on its chord's first end).
+TEST(Simplify, KeepsTheSamePointsAtAnyScale) {
+  for (const double scale : {1e-300, 1e-150, 1.0, 1e150, 1e155, 1e300}) {
+    const Polyline c = Polyline::single({{0, 0}, {scale, scale}, {2 * scale, 0}, {3 * scale, 0.5 * scale}});
+    const Polyline s = hoist::simplify(c, 0.1 * scale, no_progress());
+    EXPECT_EQ(s.points.size(), 4u) << scale;
+  }
+}
+
+}  // namespace
+}  // namespace selfsim
