@@ -28,7 +28,7 @@ void push_dimension(lua_State* L, const char* method, const analysis::Dimension&
   set_number(L, "dimension", d.dimension);
   set_number(L, "slope", d.fit.slope);
   set_number(L, "intercept", d.fit.intercept);
-  set_number(L, "error", d.fit.error);
+  if (d.fit.has_error) set_number(L, "error", d.fit.error);  // absent from two points: undefined
   lua_createtable(L, static_cast<int>(d.steps.size()), 0);
   for (std::size_t i = 0; i < d.steps.size(); ++i) {
     lua_createtable(L, 0, 3);
@@ -41,12 +41,15 @@ void push_dimension(lua_State* L, const char* method, const analysis::Dimension&
   lua_setfield(L, -2, "points");
 }
 
-// The default last box step: boxes no smaller than the curve's mean segment, at most 2^11 a side.
+// The default last box step: boxes no smaller than the curve's mean segment, at most 2^11 a side. An extent
+// or length that overflows gives no ratio (the kernel then refuses the extent): the step after `from`.
 int default_last_box(const Polyline& c, int from) {
   const double side = std::max(c.bbox().size().x, c.bbox().size().y);
   const double mean = c.segments() > 0 ? c.length() / static_cast<double>(c.segments()) : side;
-  const double steps = mean > 0 ? std::floor(std::log2(side / mean)) : 11;
-  return static_cast<int>(std::clamp(steps, from + 1.0, 11.0));
+  const double ratio = side / mean;
+  const double steps = mean > 0 && std::isfinite(ratio) ? std::floor(std::log2(ratio)) : 11;
+  if (!std::isfinite(side)) return std::min(from + 1, 11);
+  return static_cast<int>(std::min(std::max(steps, from + 1.0), 11.0));
 }
 
 int dimension(lua_State* L) {

@@ -76,6 +76,8 @@ int develop(lua_State* L) {
       throw Error("option 'thickness_rate' must be in [1e-06, 1], got 0 (leave it out for the curve's own rate)");
     opt.corner_shift = o.number("corner_shift", 0);
     opt.size = o.number("size", 0);
+    if (o.has("size") && opt.size == 0)
+      throw Error("option 'size' must be a number in [1e-09, 1e+09], got 0 (leave it out to keep the curve's size)");
     opt.size_level = static_cast<int>(o.integer("size_level", -1, -1, lsystem::max_level));
     opt.check = o.boolean("check", true);
     o.finish();

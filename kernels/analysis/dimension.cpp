@@ -28,6 +28,7 @@ LineFit fit_line(std::vector<double> x, std::vector<double> y) {
       residuals += e * e;
     }
     f.error = std::sqrt(residuals / static_cast<double>(n - 2) / sxx);
+    f.has_error = true;
   }
   f.x = std::move(x);
   f.y = std::move(y);

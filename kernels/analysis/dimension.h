@@ -15,11 +15,12 @@
 
 namespace selfsim::analysis {
 
-// A least-squares line y = slope·x + intercept through the points, with the slope's standard error
-// (zero for two points).
+// A least-squares line y = slope·x + intercept through the points, with the slope's standard error. Two
+// points leave no residual degree of freedom: the error is undefined, and `has_error` false.
 struct LineFit {
   std::vector<double> x, y;
   double slope = 0, intercept = 0, error = 0;
+  bool has_error = false;
 };
 
 // Fits a line to at least two points with distinct x; throws Error otherwise.

@@ -75,7 +75,9 @@ Mesh scaled(Mesh m, std::span<const Polyline* const> levels, const DevelopOption
 void DevelopOptions::validate() const {
   check_range(smooth, 0, 12, "option 'smooth'");
   if (resolution != 0) check_range(resolution, 1, 64, "option 'resolution'");
-  check_between(thickness, 0, 1e6, "option 'thickness'");
+  // In the curve's units: its upper limit is relative to the surface's size (develop_surface).
+  if (!(thickness >= 0 && std::isfinite(thickness)))
+    throw Error("option 'thickness' must be a finite number, 0 or more, got " + number_text(thickness));
   if (thickness_rate != 0) check_between(thickness_rate, 1e-6, 1, "option 'thickness_rate'");
   if (size != 0) check_between(size, 1e-9, 1e9, "option 'size'");
   // Options that would otherwise be ignored without a word.
@@ -234,6 +236,10 @@ Mesh develop_surface(std::span<const Polyline* const> given, const DevelopOption
   if (opt.method == Method::bezier) set_thickness(m, levels, opt);
   const auto t = m.point_fields.find("thickness")->reals();
   const double thinnest = *std::min_element(t.begin(), t.end()), size = norm(m.bbox().size());
+  // Thickness is in the curve's units, so its limit is relative: a stack 1e150 across needs a thick one.
+  if (*std::max_element(t.begin(), t.end()) > 1e6 * size)
+    throw Error("option 'thickness' gives sheets up to " + number_text(*std::max_element(t.begin(), t.end())) +
+                " apart, more than 1e6 times the surface's size " + number_text(size));
   ProgressStage thick(progress, built, 0.8);
   Mesh solid = thicken(m, thick);
   for (Vec3& p : solid.points) p = p + back;

@@ -23,7 +23,8 @@ int arc_segments(double phi, int samples) {
 void round_corner(Vec2 prev, Vec2 p, Vec2 next, int samples, std::size_t path_begin, PointArray<Vec2>& out) {
   const Vec2 in = p - prev, to = next - p;
   const double a = norm(in), b = norm(to);
-  const Vec2 u = (1 / a) * in, v = (1 / b) * to;
+  // Divided, not multiplied by 1 / a: for a curve 1e-320 across that reciprocal overflows.
+  const Vec2 u{in.x / a, in.y / a}, v{to.x / b, to.y / b};
   const double phi = std::atan2(std::abs(cross(u, v)), dot(u, v));  // turning angle in [0, π]
   if (phi < 1e-9 || phi > std::numbers::pi - 1e-9) {
     out.push_back(p);  // straight on, or a U-turn: no arc

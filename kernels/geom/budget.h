@@ -29,12 +29,19 @@ struct BudgetError : Error {
 
 // Throws BudgetError when `predicted` more points do not fit: "<what> would make N points, over the limit
 // of L (raise it with --max-points)".
+// A size that overflows, or more than the flag's own highest value could ever allow, cannot be raised to:
+// the message says so instead of pointing at the flag.
 inline void check_budget(double predicted, const PointBudget& b, const std::string& what) {
-  if (!(predicted <= b.left()))
-    throw BudgetError(
-        what + " would make " + count_text(predicted) + " points, over the limit of " + count_text(b.limit) +
-        (b.held > 0 ? " with " + count_text(b.held) + " held by the recipe's other values" : std::string()) +
-        " (raise it with --max-points)");
+  if (predicted <= b.left()) return;
+  if (!(predicted < 1e300))
+    throw BudgetError(what + " would make more points than can be counted (its size overflows): lower the request");
+  if (predicted > highest_max_points)
+    throw BudgetError(what + " would make " + count_text(predicted) + " points, more than --max-points can allow on " +
+                      "any machine (" + count_text(highest_max_points) + "): lower the request");
+  throw BudgetError(
+      what + " would make " + count_text(predicted) + " points, over the limit of " + count_text(b.limit) +
+      (b.held > 0 ? " with " + count_text(b.held) + " held by the recipe's other values" : std::string()) +
+      " (raise it with --max-points)");
 }
 
 }  // namespace selfsim

@@ -81,6 +81,8 @@ Frame frame_for(const BBox3& box, double voxel) {
     throw Error("the voxel size " + number_text(voxel) +
                 " is too small for double precision (below 1e-100): scale the shape up");
   const Vec3 s = box.size();
+  if (!std::isfinite(std::max({s.x, s.y, s.z})))
+    throw Error("the shape's extent overflows double precision (no side may reach about 1.8e308)");
   const double across = std::max({s.x, s.y, s.z}) / voxel;
   if (!(across <= 1 << 20))
     throw Error("at voxel size " + number_text(voxel) + " the shape is " + number_text(across) +
@@ -271,7 +273,9 @@ Mesh volume_boundary(const Volume& v, double voxel, const PointBudget& budget, P
   for (const Vec3 shift : lattice_shifts) {
     const Frame f{first.origin - voxel * shift, voxel};
     Mesh m = openvdb_call([&] { return zero_surface(*volume_level_set(v, f, interrupt), f); });
-    if (m.triangles.empty()) throw Error("the volume is empty at voxel size " + number_text(voxel));
+    if (m.triangles.empty())
+      throw Error("the volume is empty at voxel size " + number_text(voxel) +
+                  " (parts thinner than about a voxel vanish: give a smaller 'voxel' if they are there)");
     const MeshTopology t = mesh_topology(m);
     if (!t.closed())
       throw Error("the volume's boundary at voxel size " + number_text(voxel) +

@@ -148,7 +148,12 @@ std::string Volume::summary() const {
 double Volume::default_voxel() const {
   if (voxel > 0) return voxel;
   const Vec3 s = bbox().size();
-  return std::max({s.x, s.y, s.z}) / 128;
+  const double side = std::max({s.x, s.y, s.z});
+  if (!std::isfinite(side))
+    throw Error(
+        "the volume's extent overflows double precision (no side may reach about 1.8e308), so it has no "
+        "voxel size");
+  return side / 128;
 }
 
 namespace {

@@ -79,14 +79,19 @@ Polyline multiply(const Polyline& c, const MultiplyOptions& opt, Progress& progr
         const double w = step > 0 ? (cut - walked) / step : 1;
         const double tf = back ? 1 - t[from] : t[from];
         tail.push_back(map(lerp(pts[from], pts[j], w)));
-        tail_t.push_back((whole + tf + w * (tj - tf)) / m);
+        tail_t.push_back(whole + tf + w * (tj - tf));
         break;
       }
       walked += step;
       tail.push_back(map(pts[j]));
-      tail_t.push_back((whole + tj) / m);
+      tail_t.push_back(whole + tj);
     }
   }
+  // t runs from 0 to 1 over the copies: (copy + C's t) / span. The cut falls at a fraction of C's
+  // arclength, where C's own t (a spline's parameter) may be more or less than that fraction, so the span
+  // is the t reached at the cut, not m: dividing by m gave values past 1.
+  const double span = tail_t.empty() ? m : tail_t.back();
+  for (double& v : tail_t) v /= span;
   // Back onto (0,0)–(1,0): by 1/m for whole m (exactly), by the similarity taking the end to (1,0) otherwise.
   const Vec2 end = tail.empty() ? Vec2{m, 0} : tail.back();
   // Scaling back an end that lies almost where the curve starts would blow the curve up by as much.
@@ -131,7 +136,7 @@ Polyline multiply(const Polyline& c, const MultiplyOptions& opt, Progress& progr
           const auto& [map, back] = maps[i];
           const std::size_t j = back ? n - 1 - step : step;
           out.points[k] = a * map(pts[j]);
-          out_t[k] = (static_cast<double>(i) + (back ? 1 - t[j] : t[j])) / m;
+          out_t[k] = (static_cast<double>(i) + (back ? 1 - t[j] : t[j])) / span;
         }
       },
       tbb::simple_partitioner());

@@ -1,15 +1,17 @@
-// Reading SVG path data back (selfsim diff / info): the absolute M/L/Z path data that write_svg produces, one
-// polyline cell per subpath, from every <path d="..."> element.
+// Reading SVG back (selfsim diff / info, load): one polyline cell per subpath of every drawn <path d="...">
+// element, in selfsim's coordinates (y up), each path's points mapped through its own transform and its
+// ancestors'. What is drawn, namespaces and coordinates: svg_element.h; path data: svg_path_data.h.
 //
 // The file is streamed in 64 KiB chunks (a regular file only, read up to its size when opened: see
 // regular_file.h), so memory grows with the points read, never with the file's text, and a FIFO or
-// /dev/zero is refused at once. A small tokenizer checks as it goes that the XML is well formed, that the
-// root is <svg> and that the file is complete: a file cut short is an error, never a dataset with fewer
-// points. Path data must be absolute M and L commands with an even number of finite numbers per subpath;
-// anything else (relative or curved commands, NaN, infinity, overflow) is an error rather than a guess.
-#include <cctype>
-#include <charconv>
-#include <cmath>
+// /dev/zero is refused at once. A small tokenizer checks as it goes that the XML is well formed (no
+// attribute twice in one tag), that the root is SVG's <svg> and that the file is complete: a file cut short
+// is an error, never a dataset with fewer points. Path data streams into the dataset before the rest of its
+// tag is known (transform, display or xmlns may follow d), so when the tag ends its points are transformed
+// in place, or removed again if the path is not drawn. Errors in the path data of a path that is not drawn
+// do not count; a malformed transform of a drawn path or of an element whose content may be drawn does. A
+// transformed point that is not finite is an error.
+#include <set>
 #include <string>
 #include <vector>
 
@@ -18,13 +20,17 @@
 #include "kernels/io/read.h"
 #include "kernels/io/read_error.h"
 #include "kernels/io/regular_file.h"
+#include "kernels/io/svg_element.h"
+#include "kernels/io/svg_path_data.h"
 #include "kernels/io/xml_text.h"
 
 namespace selfsim::io {
 
 namespace {
 
-constexpr std::size_t max_name = 256, max_depth = 256, max_number = 64;
+constexpr std::size_t max_name = 256, max_depth = 256, max_attributes = 1024;
+constexpr std::size_t max_value = std::size_t{1} << 16;  // a transform, style, display, visibility or xmlns value
+constexpr std::string_view svg_namespace = "http://www.w3.org/2000/svg";
 
 bool space(char c) { return xml_space(c); }
 bool name_char(char c) {
@@ -36,126 +42,22 @@ std::string local(const std::string& name) {
   return colon == std::string::npos ? name : name.substr(colon + 1);
 }
 
-// The numbers of one d="..." attribute, parsed as they stream past.
-class PathData {
- public:
-  explicit PathData(Dataset& d) : d_(d) {}
+// The attribute values an element's meaning depends on, kept while its tag is read.
+enum class Keep { none, transform, style, display, visibility, xmlns };
+Keep kept(const std::string& attribute) {
+  if (attribute == "transform") return Keep::transform;
+  if (attribute == "style") return Keep::style;
+  if (attribute == "display") return Keep::display;
+  if (attribute == "visibility") return Keep::visibility;
+  if (attribute == "xmlns" || (attribute.size() > 6 && attribute.compare(0, 6, "xmlns:") == 0)) return Keep::xmlns;
+  return Keep::none;
+}
 
-  void start() {
-    number_.clear();
-    open_ = pending_ = false;
-    points_in_subpath_ = 0;
-  }
-
-  void put(char c) {
-    const bool letter = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
-    if (!word_.empty()) {  // "nan", "inf", "infinity": names of numbers, never commands
-      if (letter && word_.size() < 16) return word_.push_back(c);
-      end_word();
-    }
-    if (c == 'n' || c == 'N' || c == 'i' || c == 'I') {
-      if (number_ == "-" || number_ == "+") number_.clear();
-      end_number();
-      word_.assign(1, c);
-      return;
-    }
-    const bool sign = c == '+' || c == '-';
-    const bool exponent =
-        (c == 'e' || c == 'E') && !number_.empty() && number_.find_first_of("eE") == std::string::npos;
-    if ((c >= '0' && c <= '9') || c == '.' || sign || exponent) {
-      if (sign && !number_.empty() && number_.back() != 'e' && number_.back() != 'E')
-        end_number();  // "1-2" is 1 and -2
-      if (number_.size() >= max_number)
-        throw Error("a number in the path data is longer than " + std::to_string(max_number) + " characters");
-      number_ += c;
-      return;
-    }
-    end_number();
-    if (space(c) || c == ',') return;
-    if (c == 'M') {
-      end_subpath();
-      open_ = true;
-    } else if (c == 'L') {
-      if (!open_) throw Error("the path data does not start with M");
-    } else if (c == 'Z' || c == 'z') {  // closes the subpath: back to its first point
-      if (!open_) throw Error("the path data does not start with M");
-      if (pending_) throw Error("the path data has an odd number of coordinates in a subpath");
-      if (points_in_subpath_ == 0) throw Error("the path data closes a subpath without coordinates");
-      d_.cell_points.push_back(d_.points.size());
-      d_.points.push_back(d_.points[subpath_first_]);
-      ++points_in_subpath_;
-      end_subpath();
-    } else if (letter) {
-      throw Error(std::string("unsupported path command '") + c + "' (only absolute M, L and Z are read)");
-    } else {
-      throw Error("unexpected character '" + one_line(std::string(1, c)) + "' in the path data");
-    }
-  }
-
-  void finish() {
-    if (!word_.empty()) end_word();
-    end_number();
-    end_subpath();
-  }
-
- private:
-  void end_word() {
-    std::string w = word_;
-    word_.clear();
-    for (char& ch : w) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    if (w == "nan" || w == "inf" || w == "infinity")
-      throw Error("the path data holds a non-finite number ('" + w + "')");
-    if (w.size() == 1) throw Error("unsupported path command '" + w + "' (only absolute M, L and Z are read)");
-    throw Error("unexpected text '" + one_line(w) + "' in the path data");
-  }
-
-  void end_number() {
-    if (number_.empty()) return;
-    const char* begin = number_.data() + (number_[0] == '+' ? 1 : 0);
-    const char* end = number_.data() + number_.size();
-    double v = 0;
-    const auto r = std::from_chars(begin, end, v);
-    if (r.ec == std::errc::result_out_of_range)
-      throw Error("the number '" + number_ + "' in the path data is out of range");
-    if (r.ec != std::errc() || r.ptr != end) throw Error("malformed number '" + number_ + "' in the path data");
-    if (!std::isfinite(v)) throw Error("the path data holds a non-finite number");
-    if (!open_) throw Error("the path data does not start with M");
-    number_.clear();
-    if (!pending_) {
-      x_ = v;
-      pending_ = true;
-      return;
-    }
-    pending_ = false;
-    if (d_.points.size() >= read_budget_bytes() / 40)
-      throw Error("the path data holds more points than the reading limit");
-    if (points_in_subpath_ == 0) subpath_first_ = d_.points.size();
-    d_.cell_points.push_back(d_.points.size());
-    d_.points.push_back({x_, v, 0});
-    ++points_in_subpath_;
-  }
-
-  void end_subpath() {
-    if (!open_) return;
-    if (pending_) throw Error("the path data has an odd number of coordinates in a subpath");
-    if (points_in_subpath_ == 0) throw Error("the path data has an M command without coordinates");
-    d_.cell_ends.push_back(d_.cell_points.size());
-    open_ = false;
-    points_in_subpath_ = 0;
-  }
-
-  Dataset& d_;
-  std::string number_, word_;
-  bool open_ = false, pending_ = false;  // a subpath started; an x waits for its y
-  std::size_t subpath_first_ = 0;        // index of the current subpath's first point
-  double x_ = 0;
-  std::size_t points_in_subpath_ = 0;
-};
-
-// A streaming, checking XML tokenizer that hands path data to PathData.
+// A streaming, checking XML tokenizer that hands path data to PathData and each complete start tag to
+// SvgScopes.
 class SvgParser {
  public:
-  explicit SvgParser(Dataset& d) : path_(d) {}
+  explicit SvgParser(Dataset& d) : d_(d), path_(d) {}
 
   void feed(std::string_view chunk) {
     for (char c : chunk) {
@@ -219,7 +121,7 @@ class SvgParser {
         else if (c == '/')
           name_.clear(), state_ = State::end_name;
         else if (name_char(c))
-          name_.assign(1, c), state_ = State::tag_name;
+          begin_tag(c);
         else
           fail("'<' not followed by a name");
         return;
@@ -249,7 +151,6 @@ class SvgParser {
         return;
       case State::tag_name:
         if (name_char(c)) return append(name_, c);
-        is_path_ = local(name_) == "path";
         if (space(c))
           state_ = State::in_tag;
         else if (c == '>')
@@ -279,38 +180,38 @@ class SvgParser {
         if (space(c))
           state_ = State::after_attr_name;
         else if (c == '=')
-          state_ = State::before_value;
+          begin_attribute();
         else
           fail("bad character in an attribute name");
         return;
       case State::after_attr_name:
         if (space(c)) return;
         if (c != '=') fail("an attribute without a value");
-        state_ = State::before_value;
+        begin_attribute();
         return;
       case State::before_value:
         if (space(c)) return;
         if (c != '"' && c != '\'') fail("an attribute value without quotes");
         quote_ = c;
-        if (is_path_ && attr_ == "d") {
-          path_.start();
-          state_ = State::path_data;
-        } else {
-          state_ = State::value;
-        }
+        begin_value();
         return;
       case State::value:
-        if (c == quote_)
-          state_ = State::in_tag;
-        else if (c == '<')
-          fail("'<' in an attribute value");
+        if (c == quote_) return end_value();
+        if (c == '<') fail("'<' in an attribute value");
+        if (keep_ == Keep::none) return;
+        if (value_.size() >= max_value)
+          throw Error("the '" + shown(attr_) + "' attribute is longer than " + std::to_string(max_value) + " bytes");
+        value_ += c;
         return;
       case State::path_data:
-        if (c == quote_) {
-          path_.finish();
+        if (c == '<') fail("'<' in an attribute value");
+        try {
+          if (c != quote_) return path_.put(c);
           state_ = State::in_tag;
-        } else {
-          path_.put(c);
+          path_.finish();
+        } catch (const Error& e) {  // counts only if the path is drawn (end_path)
+          path_error_ = e.what();
+          if (c != quote_) state_ = State::value, keep_ = Keep::none;
         }
         return;
       case State::end_name:
@@ -336,18 +237,93 @@ class SvgParser {
     state_ = State::skip;
   }
 
+  void begin_tag(char c) {
+    name_.assign(1, c);
+    state_ = State::tag_name;
+    tag_ = SvgTag{};
+    attributes_.clear();
+    path_read_ = false;
+    path_error_.clear();
+  }
+
+  void begin_attribute() {
+    state_ = State::before_value;
+    if (attributes_.size() >= max_attributes)
+      throw Error("an element has more than " + std::to_string(max_attributes) + " attributes");
+    if (!attributes_.insert(attr_).second)
+      throw Error("malformed XML: the attribute '" + shown(attr_) + "' appears twice in <" + shown(name_) + ">");
+  }
+
+  // Where an attribute's value goes: path data into the dataset, values that decide drawing into tag_ (only
+  // where something may be drawn), the rest nowhere.
+  void begin_value() {
+    const bool content = scopes_.content_drawn();
+    if (content && attr_ == "d" && local(name_) == "path") {
+      marks_ = {d_.points.size(), d_.cell_points.size(), d_.cell_ends.size()};
+      path_read_ = true;
+      path_.start();
+      state_ = State::path_data;
+      return;
+    }
+    keep_ = content ? kept(attr_) : Keep::none;
+    value_.clear();
+    state_ = State::value;
+  }
+
+  void end_value() {
+    state_ = State::in_tag;
+    if (keep_ == Keep::none) return;
+    std::string v = xml_unescaped(value_, attr_);
+    switch (keep_) {
+      case Keep::transform:
+        tag_.transform = std::move(v);
+        break;
+      case Keep::style:
+        tag_.style = std::move(v);
+        break;
+      case Keep::display:
+        tag_.display = std::move(v);
+        break;
+      case Keep::visibility:
+        tag_.visibility = std::move(v);
+        break;
+      default:
+        tag_.namespaces.emplace_back(attr_ == "xmlns" ? "" : attr_.substr(6), v == svg_namespace);
+    }
+    keep_ = Keep::none;
+  }
+
   void open_element(bool self_closing) {
     state_ = State::text;
+    if (root_seen_ && stack_.empty()) throw Error("an element after </svg>");
+    const SvgElement e = scopes_.open(name_, tag_);
     if (!root_seen_) {
-      if (local(name_) != "svg") throw Error("not an SVG file (the root element is <" + shown(name_) + ">)");
+      if (e.local != "svg") throw Error("not an SVG file (the root element is <" + shown(name_) + ">)");
+      if (!e.svg) throw Error("not an SVG file (the root <" + shown(name_) + "> is not in the SVG namespace)");
       root_seen_ = true;
-    } else if (stack_.empty()) {
-      throw Error("an element after </svg>");
     }
+    if (path_read_) end_path(e);
     if (self_closing) return;
     if (stack_.size() >= max_depth)
       throw Error("the XML is nested deeper than " + std::to_string(max_depth) + " levels");
     stack_.push_back(name_);
+    scopes_.push(e, tag_);
+  }
+
+  // The tag of a path whose data was read is complete: keep its points, transformed, or remove them.
+  void end_path(const SvgElement& e) {
+    if (!(e.svg && e.local == "path" && e.drawn && e.visible)) {
+      d_.points.resize(marks_.points);
+      d_.cell_points.resize(marks_.cell_points);
+      d_.cell_ends.resize(marks_.cells);
+      return;
+    }
+    if (!path_error_.empty()) throw Error(path_error_);
+    for (std::size_t i = marks_.points; i < d_.points.size(); ++i) {
+      const Vec2 p = e.to_selfsim.apply({d_.points[i][0], d_.points[i][1]});
+      if (!is_finite(p)) throw Error("a point of a path is not finite once transformed");
+      d_.points[i] = {p.x, p.y, 0};
+    }
   }
 
   void close_element() {
@@ -356,13 +332,27 @@ class SvgParser {
       throw Error("malformed XML: </" + shown(name_) + "> closes " +
                   (stack_.empty() ? std::string("nothing") : "<" + shown(stack_.back()) + ">"));
     stack_.pop_back();
+    scopes_.pop();
   }
 
+  struct Marks {
+    std::size_t points = 0, cell_points = 0, cells = 0;
+  };
+
+  Dataset& d_;
   PathData path_;
+  SvgScopes scopes_;
   State state_ = State::text;
   std::string name_, attr_;
   std::vector<std::string> stack_;
-  bool root_seen_ = false, is_path_ = false;
+  SvgTag tag_;                        // the start tag being read
+  std::set<std::string> attributes_;  // its attribute names so far
+  Keep keep_ = Keep::none;
+  std::string value_;       // a kept attribute value so far
+  bool path_read_ = false;  // the tag has path data, from marks_ on in the dataset
+  Marks marks_;
+  std::string path_error_;  // what was wrong with that path data
+  bool root_seen_ = false;
   char quote_ = '"';
   std::string_view skip_end_;
   std::size_t matched_ = 0;

@@ -22,6 +22,9 @@ TEST(Dimension, LineFitSlopeAndStandardError) {
   EXPECT_NEAR(noisy.slope, 1.0, 1e-12);
   EXPECT_NEAR(noisy.error, std::sqrt(0.4), 1e-12);
   EXPECT_THROW(fit_line({1, 1}, {0, 2}), Error);
+  EXPECT_TRUE(noisy.has_error);
+  // Two points: a line through both, no residual degree of freedom, no error (issue 21: it said 0).
+  EXPECT_FALSE(fit_line({0, 1}, {0, 2}).has_error);
 }
 
 TEST(Dimension, LengthScalingReadsEachLevelFromTheLevelField) {

@@ -68,3 +68,15 @@ TEST(RoundedCorners, Errors) {
   small.budget.limit = 10;
   EXPECT_THROW(rounded_corners(c, small, no_progress()), BudgetError);
 }
+
+// A curve 1e-320 across (subnormal numbers) rounds as one of size 1 does, scaled (issue 21: it was called
+// "too large to round", its reciprocal lengths overflowing).
+TEST(RoundedCorners, TinyCurvesRoundToo) {
+  const double s = 1e-320;
+  const Polyline r =
+      rounded_corners(Polyline::single({{0, 0}, {2 * s, 0}, {2 * s, 2 * s}}), {.samples = 8}, no_progress());
+  ASSERT_EQ(r.points.size(), 11u);
+  EXPECT_TRUE(r.finite());
+  EXPECT_NEAR(r.points[1].x, s, 0.01 * s);
+  EXPECT_NEAR(r.points[9].y, s, 0.01 * s);
+}

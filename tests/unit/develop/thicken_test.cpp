@@ -109,3 +109,24 @@ TEST(Develop, SizeIsPredictedExactlyBeforeAnyWork) {
           << closed << " " << opt.smooth << " " << opt.thickness;
     }
 }
+
+// Thickness is in the curve's units: a stack 1e150 across is thickened as one of size 1 is (issue 21: an
+// absolute cap of 1e6 refused it, while a stack 1e-150 across could be thickened).
+TEST(Thicken, ThicknessIsRelativeToTheSurfacesSize) {
+  for (const double scale : {1e-150, 1.0, 1e150}) {
+    std::vector<Polyline> levels;
+    for (int l = 0; l <= 3; ++l) {
+      Polyline c = lsystem::turtle2d(table1::dragon(), {.level = l}, no_progress());
+      for (Vec2& p : c.points) p = scale * p;
+      levels.push_back(std::move(c));
+    }
+    std::vector<const Polyline*> p;
+    for (const Polyline& c : levels) p.push_back(&c);
+    DevelopOptions opt;
+    opt.thickness = 0.02 * scale;
+    const Mesh m = develop_surface(p, opt, no_progress());
+    EXPECT_TRUE(mesh_topology(m).closed()) << scale;
+    opt.thickness = 1e7 * scale;
+    EXPECT_THROW(develop_surface(p, opt, no_progress()), Error) << scale;
+  }
+}

@@ -204,6 +204,21 @@ TEST(Multiply, NonIntegerMultiplicityEndsWithPartOfACopyTurnedBackOntoTheAxis) {
   EXPECT_LT(norm(c.points[1] - apex), 1e-15);
 }
 
+// A fractional multiplicity of a curve whose t is not its arclength fraction (a spline's parameter): the cut
+// falls at a fraction of the arclength, and t still runs from 0 to 1, increasing (issue 21: past 1).
+TEST(Multiply, FractionalMultiplicityKeepsTInZeroToOne) {
+  Polyline c = tent();
+  std::vector<double> t{0, 0.8, 1};  // the apex at t = 0.8, halfway along the arclength
+  c.point_fields.set(real_field("t", t));
+  for (const double m : {1.5, 2.25, 2.5, 3.7}) {
+    const Polyline r = multiply(c, {.multiplicity = m}, no_progress());
+    const Field* f = r.point_fields.find("t");
+    EXPECT_EQ(f->at(0), 0) << m;
+    EXPECT_EQ(f->at(r.points.size() - 1), 1) << m;
+    for (std::size_t i = 1; i < r.points.size(); ++i) EXPECT_GT(f->at(i), f->at(i - 1)) << m << " at " << i;
+  }
+}
+
 TEST(Multiply, Errors) {
   EXPECT_THROW(multiply(tent(), {.multiplicity = 0.5}, no_progress()), Error);
   EXPECT_THROW(multiply(tent(), {.multiplicity = NAN}, no_progress()), Error);

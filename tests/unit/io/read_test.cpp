@@ -355,7 +355,8 @@ TEST(ReadSvg, PathDataMustBeFiniteAbsolutePairs) {
   TempDir dir;
   auto svg = [&](const std::string& d, const std::string& tail = "</svg>\n") {
     write(dir.path / "x.svg",
-          "<?xml version=\"1.0\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"><g><path d=\"" + d + "\"/></g>" + tail);
+          "<?xml version=\"1.0\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"><g transform=\"scale(1,-1)\"><path d=\"" +
+              d + "\"/></g>" + tail);
     return dir.path / "x.svg";
   };
   const io::Dataset d = io::read_dataset(svg("M0 0L1 1 2,2M-1-2 3e1 4"));
@@ -374,7 +375,7 @@ TEST(ReadSvg, PathDataMustBeFiniteAbsolutePairs) {
   expect_read_error(svg("M0 0l1 1"), "unsupported path command 'l'");
   expect_read_error(svg("M0 0C1 1 2 2 3 3"), "unsupported path command 'C'");
   expect_read_error(svg("0 0L1 1"), "does not start with M");
-  expect_read_error(svg("M0 0L1.2.3 4 5"), "malformed number");
+  expect_read_error(svg("M0 0L1.2e 4 5"), "malformed number");  // "1.2.3" is 1.2 and .3, as SVG reads it
   expect_read_error(svg("M0 0L1 1", ""), "truncated");
   expect_read_error(svg("M0 0L1 1", "</g></svg>"), "malformed XML");
   write(dir.path / "html.svg", "<html><path d=\"M0 0\"/></html>");
