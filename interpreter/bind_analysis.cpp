@@ -10,6 +10,7 @@
 #include "interpreter/options_reader.h"
 #include "interpreter/run_context.h"
 #include "kernels/analysis/dimension.h"
+#include "kernels/geom/check.h"
 
 namespace selfsim::interp {
 
@@ -52,6 +53,27 @@ int default_last_box(const Polyline& c, int from) {
   return static_cast<int>(std::min(std::max(steps, from + 1.0), 11.0));
 }
 
+// Length scaling reads `level` as exclusion.curve writes it: the level each point was made at, from 0 at the
+// start. L-system curves carry a `level` too, of another meaning (the level the whole curve was drawn at):
+// the kernel would find no start and say only that level 0 has no length, so such a curve is named here.
+void check_point_levels(const Polyline& c) {
+  const Field* field = c.point_fields.find("level");
+  if (field == nullptr || c.points.empty()) return;  // the kernel names a missing field
+  double lo = field->at(0), hi = lo;
+  for (std::size_t i = 1; i < field->stored(); ++i) {
+    lo = std::min(lo, field->at(i));
+    hi = std::max(hi, field->at(i));
+  }
+  if (!(lo > 0)) return;
+  const std::string found =
+      lo == hi ? "is " + number_text(lo) + " at every point (as an L-system curve's is: the level it was drawn at)"
+               : "runs from " + number_text(lo) + " to " + number_text(hi) + " with no point at level 0";
+  throw Error(
+      "length scaling needs exclusion.curve's point field 'level' (the level each point was made at, 0 for the "
+      "start); this curve's 'level' " +
+      found + ": use method = \"box\"");
+}
+
 int dimension(lua_State* L) {
   return call_kernel(L, "dimension", [&] {
     const Held<Polyline> c = held_curve(L, 1, "argument 1 (the curve)");
@@ -62,6 +84,7 @@ int dimension(lua_State* L) {
         o.integer("to", method == 0 ? -1 : default_last_box(*c, from), method == 0 ? -1 : 0, method == 0 ? 40 : 11));
     o.finish();
     if (method == 0) {
+      check_point_levels(*c);
       push_dimension(L, "length", analysis::length_scaling(*c, from, to));
     } else {
       push_dimension(L, "box", analysis::box_counting(*c, from, to, RunContext::of(L)));

@@ -66,8 +66,9 @@ struct Members {
   std::vector<Fields> styles;
 };
 
-// Entry i (on top of the stack): a curve, or { curve, stroke = ..., stroke_width = ..., fill = ... }.
-void read_member(lua_State* L, lua_Integer i, Members& m) {
+// Entry i (on top of the stack): a curve, or { curve, stroke = ..., stroke_width = ..., fill = ... }. The
+// list is at `list`, with n entries; `into` names it in messages.
+void read_member(lua_State* L, lua_Integer i, Members& m, int list, lua_Integer n, const std::string& into) {
   const std::string what = "member " + std::to_string(i) + " of the group";
   if (auto c = test_any_curve(L, -1)) {
     m.curves.push_back(*c);
@@ -91,6 +92,13 @@ void read_member(lua_State* L, lua_Integer i, Members& m) {
       m.curves.push_back(*c);
       return;
     }
+  }
+  // The last entry, a table of named entries after a value: the second result of a call, spread.
+  if (i == n && i > 1) {
+    lua_rawgeti(L, list, i - 1);
+    const std::string advice = spread_report_advice(L, -2, -1, into);
+    lua_pop(L, 1);
+    if (!advice.empty()) throw Error("member " + std::to_string(i) + " is a table " + advice);
   }
   throw Error(what + " must be a curve, or { curve, stroke = ..., stroke_width = ..., fill = ... }, got " +
               describe(L, -1));
@@ -128,7 +136,7 @@ PolylineT<V> group_of(const Members& m, Progress& progress) {
 
 }  // namespace
 
-void push_group(lua_State* L, int index) {
+void push_group(lua_State* L, int index, const char* into) {
   index = lua_absindex(L, index);
   if (lua_type(L, index) != LUA_TTABLE) throw Error("expected a list of curves, got " + describe(L, index));
   const lua_Integer n =
@@ -139,7 +147,7 @@ void push_group(lua_State* L, int index) {
   double points = 0;
   for (lua_Integer i = 1; i <= n; ++i) {
     lua_rawgeti(L, index, i);
-    read_member(L, i, m);
+    read_member(L, i, m, index, n, into);
     lua_pop(L, 1);
     points += std::visit([](const auto& c) { return static_cast<double>(c->points.size()); }, m.curves.back());
   }
@@ -192,6 +200,9 @@ int make_concat(lua_State* L) {
     }
     std::vector<Held<Polyline>> held;
     for (int i = 1; i <= n; ++i) {
+      if (i == n && i > 1)
+        if (const std::string advice = spread_report_advice(L, i, i - 1, "concat(...)"); !advice.empty())
+          throw Error("argument " + std::to_string(i) + " is a table " + advice);
       held.push_back(held_curve(L, i, "argument " + std::to_string(i)));
     }
     return push_concat<Vec2>(L, held);

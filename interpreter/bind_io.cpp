@@ -1,10 +1,13 @@
 // save(value, "file.ext", opts?) and param(name, default): the recipe's only ways out and in.
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <tuple>
 #include <vector>
 
@@ -143,6 +146,70 @@ io::CsvRows csv_rows(lua_State* L) {
   return rows;
 }
 
+// Saving two values under one name would silently keep the last: the second save is an error naming the
+// line of the first, and the first file stays as it was. Two names are one output when they are the same
+// path inside the output folder once made lexically normal ("./a.svg", "sub//a.svg"), or when the second
+// opens the very file the first wrote: "A.svg" after "a.svg" where the filesystem ignores case (macOS,
+// Windows), though not on Linux, where they are two files.
+std::string normal_name(const std::string& name) {
+  std::string normal = std::filesystem::path(name).lexically_normal().generic_string();
+  while (normal.size() > 1 && normal.back() == '/') normal.pop_back();
+  return normal;
+}
+
+// The identity of the file `name` names in the output folder, if there is one (a link is not followed).
+std::optional<std::pair<unsigned long long, unsigned long long>> file_identity(const RunContext& run,
+                                                                               const std::string& name) {
+  struct stat st {};
+  if (::lstat((run.config.out_dir / name).c_str(), &st) != 0) return std::nullopt;
+  return std::pair<unsigned long long, unsigned long long>{st.st_dev, st.st_ino};
+}
+
+// "line 3 of this run", or "helper.lua:3 in this run" for a save in another file, from locations such as
+// "dragon.lua:3: ".
+std::string earlier_line(const std::string& earlier, const std::string& now) {
+  auto split = [](const std::string& where) {
+    const std::string trimmed = where.substr(0, where.size() >= 2 ? where.size() - 2 : 0);
+    const std::size_t colon = trimmed.rfind(':');
+    if (colon == std::string::npos) return std::pair<std::string, std::string>{trimmed, ""};
+    return std::pair<std::string, std::string>{trimmed.substr(0, colon), trimmed.substr(colon + 1)};
+  };
+  const auto [file, line] = split(earlier);
+  if (line.empty()) return "an earlier save of this run";
+  if (earlier == now) return "this same line earlier in the run (in a loop? put the loop's variable in the name)";
+  if (file == split(now).first) return "line " + line + " of this run";
+  return file + ":" + line + " in this run";
+}
+
+// Throws Error when this run has already written the file `name` names.
+void check_not_saved(lua_State* L, const std::string& name) {
+  const RunContext& run = RunContext::of(L);
+  auto it = run.saved.find(normal_name(name));
+  bool same_file = false;  // found by the file's identity, not by its name
+  if (it == run.saved.end()) {
+    const auto id = file_identity(run, name);
+    const auto file = id ? run.saved_files.find(*id) : run.saved_files.end();
+    if (file == run.saved_files.end()) return;
+    it = run.saved.find(file->second);
+    if (it == run.saved.end()) return;
+    same_file = true;
+  }
+  const auto& [first_name, first_where] = it->second;
+  const std::string as = first_name == name ? ""
+                         : same_file        ? " (as '" + shown_text(first_name) + "', the same file here)"
+                                            : " (as '" + shown_text(first_name) + "')";
+  throw Error("'" + shown_text(name) + "' was already written by " + earlier_line(first_where, recipe_where(L)) + as +
+              "; give another name");
+}
+
+// Records a file written by save().
+void record_saved(lua_State* L, const std::string& name) {
+  RunContext& run = RunContext::of(L);
+  const std::string normal = normal_name(name);
+  run.saved.try_emplace(normal, name, recipe_where(L));
+  if (const auto id = file_identity(run, name)) run.saved_files.insert_or_assign(*id, normal);
+}
+
 // save(volume, "file.ext", opts?): its boundary mesh at the voxel size (a .vdb: the level set of that).
 int save_volume(lua_State* L, const Volume& vol) {
   RunContext& run = RunContext::of(L);
@@ -157,10 +224,12 @@ int save_volume(lua_State* L, const Volume& vol) {
                 "', expected one of: " + quoted_list(able));
   }
   io::SaveOptions opt = read_save_options(L, 3, *format);
+  check_not_saved(L, name);
   if (opt.voxel == 0) opt.voxel = vol.default_voxel();
   const Mesh boundary = with_budget(L, [&](const PointBudget& b) { return volume_boundary(vol, opt.voxel, b, run); });
   opt.budget = run_budget(L);
   const std::string written = io::save(&boundary, run.config.out_dir, name, opt, run);
+  record_saved(L, name);
   if (!run.config.quiet)
     std::printf("wrote %s (a volume's boundary: %zu points)\n", shown_text(written, 4096).c_str(),
                 boundary.points.size());
@@ -173,13 +242,15 @@ int save(lua_State* L) {
     if (lua_type(L, 2) == LUA_TSTRING &&
         lower_case(std::filesystem::path(lua_tostring(L, 2)).extension().string()) == ".csv") {
       const io::CsvRows rows = csv_rows(L);
-      const std::string written =
-          io::save_csv(run.config.out_dir, text_value(L, 2, "argument 2 (the file name)"), rows);
+      const std::string name = text_value(L, 2, "argument 2 (the file name)");
+      check_not_saved(L, name);
+      const std::string written = io::save_csv(run.config.out_dir, name, rows);
+      record_saved(L, name);
       if (!run.config.quiet) std::printf("wrote %s (%zu rows)\n", shown_text(written, 4096).c_str(), rows.size());
       return 0;
     }
     if (lua_type(L, 1) == LUA_TTABLE) {  // save({ a, b }, ...): the group of the list
-      push_group(L, 1);
+      push_group(L, 1, "save({...}, ...)");
       lua_replace(L, 1);
     }
     if (const Held<Volume> vol = test_volume(L, 1)) return save_volume(L, *vol);
@@ -189,10 +260,12 @@ int save(lua_State* L) {
     const std::string name = text_value(L, 2, "argument 2 (the file name)");
     const io::Format& format = io::format_for(name, io::kind_of(v->ref()));
     io::SaveOptions opt = read_save_options(L, 3, format);
+    check_not_saved(L, name);
     opt.budget = run_budget(L);
     if (format.extension == ".svg") warn_if_far(L, *std::get<const Polyline*>(v->ref()));
     if (format.extension == ".stl") warn_if_coinciding(L, *std::get<const Mesh*>(v->ref()));
     const std::string written = io::save(v->ref(), run.config.out_dir, name, opt, run);
+    record_saved(L, name);
     // Said as each file is committed, in order with the recipe's own print output: when a later error fails
     // the run, the files it did write were already reported.
     if (!run.config.quiet) std::printf("wrote %s (%zu points)\n", shown_text(written, 4096).c_str(), v->points());

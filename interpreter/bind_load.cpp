@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "interpreter/bindings.h"
+#include "interpreter/folder_check.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
 #include "interpreter/run_context.h"
@@ -36,6 +37,25 @@ void check_name(const std::string& name) {
                 "': expected one of: " + quoted_list({std::begin(loadable), std::end(loadable)}));
 }
 
+// Throws Error when `name` is not there: where load looked (the recipe's folder, as the recipe names it,
+// never this machine's absolute path) and the likeliest file meant among the loadable ones beside it.
+void check_found(const std::filesystem::path& folder, const std::string& name) {
+  const std::filesystem::path rel(name);
+  std::error_code ec;
+  const auto status = std::filesystem::symlink_status(folder / rel, ec);
+  if (status.type() != std::filesystem::file_type::not_found) return;  // anything else: FileBeneath decides
+  const std::filesystem::path sub = rel.parent_path();
+  const std::vector<std::string> files = files_in(folder / sub, {std::begin(loadable), std::end(loadable)});
+  std::string near;
+  const std::string leaf = rel.filename().string();
+  for (const std::string& f : files)  // "Torus.STL" for "torus.stl"
+    if (lower_case(f) == lower_case(leaf)) near = f;
+  if (near.empty()) near = suggestion(leaf, files);
+  const std::string meant = near.empty() ? "" : (sub / near).generic_string();
+  throw Error("'" + shown_text(name) + "' not found in the recipe's folder" +
+              (meant.empty() ? "" : " (did you mean '" + shown_text(meant) + "'?)"));
+}
+
 int load(lua_State* L) {
   return call_kernel(L, "load", [&] {
     const std::string name = text_value(L, 1, "argument 1 (the file name)");
@@ -50,6 +70,7 @@ int load(lua_State* L) {
 
 std::variant<Polyline, Polyline3, Mesh> load_value(lua_State* L, const std::string& name) {
   check_name(name);
+  check_found(RunContext::of(L).config.recipe.parent_path(), name);
   // Opened without following any link, and read through that descriptor: the name cannot be swapped
   // for a link to somewhere else between the check and the read.
   const io::FileBeneath file(RunContext::of(L).config.recipe.parent_path(), name);

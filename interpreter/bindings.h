@@ -38,8 +38,9 @@ int exclusion_surface(lua_State* L);
 Held<Volume> test_volume(lua_State* L, int index);
 // bind_load.cpp: what load(name) reads, checked against the run's budget but not yet pushed.
 std::variant<Polyline, Polyline3, Mesh> load_value(lua_State* L, const std::string& name);
-// bind_group.cpp: pushes group{...} of the list at index (save({ a, b }, ...) uses it too).
-void push_group(lua_State* L, int index);
+// bind_group.cpp: pushes group{...} of the list at index (save({ a, b }, ...) uses it too, naming the list
+// `into` in messages).
+void push_group(lua_State* L, int index, const char* into = "group{...}");
 // bind_group.cpp: c:reverse() for Curve (V = Vec2) and Curve3 (Vec3).
 template <class V>
 int curve_reverse(lua_State* L);

@@ -24,4 +24,8 @@ double number_argument(const std::string& flag, const std::string& text, double 
 // Parses the arguments after `selfsim run`. Throws UsageError.
 RunConfig parse_run_arguments(const std::vector<std::string>& args);
 
+// "selfsim run a.lua --set 'name=two words'": the command line of `args`, quoted for a POSIX shell where
+// needed, for messages that suggest the command meant.
+std::string shell_command(const std::vector<std::string>& args);
+
 }  // namespace selfsim::interp

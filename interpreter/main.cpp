@@ -1,5 +1,6 @@
 // The `selfsim` executable: dispatches to run / diff / info.
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -81,6 +82,14 @@ int main(int argc, char** argv) {
       }
       if (files.size() != 2) throw UsageError("diff expects two files");
       return diff_command(files[0], files[1], tol);
+    }
+    // A recipe given without `run` (selfsim dragon.lua, or selfsim dragon for dragon.lua): the command meant.
+    std::error_code ec;
+    const bool lua = command.size() > 4 && command.compare(command.size() - 4, 4, ".lua") == 0;
+    if (lua || (!command.empty() && command[0] != '-' && std::filesystem::is_regular_file(command + ".lua", ec))) {
+      std::vector<std::string> line{"run", lua ? command : command + ".lua"};
+      line.insert(line.end(), rest.begin(), rest.end());
+      throw UsageError("unknown command '" + command + "'; to run a recipe: " + shell_command(line));
     }
     const std::string near = suggestion(command, {"run", "diff", "info", "--help", "--version"});
     throw UsageError("unknown command '" + command + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));

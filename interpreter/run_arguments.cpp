@@ -1,8 +1,10 @@
 // Parsing `selfsim run` arguments: RECIPE.lua [-o DIR] [--set key=value]... [--max-points N]
 // [--max-memory SIZE] [--timeout S] [--seed N] [--threads N] [-q].
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <string_view>
 
 #include "interpreter/commands.h"
 #include "interpreter/options_reader.h"
@@ -17,6 +19,25 @@ double number_argument(const std::string& flag, const std::string& text, double 
     throw UsageError(flag + " expects a number in [" + count_text(lo) + ", " + count_text(hi) + "], got '" + text +
                      "'");
   return *v;
+}
+
+std::string shell_command(const std::vector<std::string>& args) {
+  std::string line = "selfsim";
+  for (const std::string& a : args) {
+    const bool plain = !a.empty() && std::all_of(a.begin(), a.end(), [](char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) ||
+             std::string_view("_-.,/=:+@%").find(c) != std::string_view::npos;
+    });
+    line += ' ';
+    if (plain) {
+      line += a;
+      continue;
+    }
+    line += '\'';
+    for (char c : a) line += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    line += '\'';
+  }
+  return line;
 }
 
 namespace {
@@ -46,6 +67,7 @@ const std::vector<std::string>& run_flags() {
 RunConfig parse_run_arguments(const std::vector<std::string>& args) {
   RunConfig c;
   bool have_recipe = false;
+  std::size_t recipe_at = 0;  // its index in args
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&]() -> const std::string& {
@@ -87,11 +109,23 @@ RunConfig parse_run_arguments(const std::vector<std::string>& args) {
     else {
       c.recipe = a;
       have_recipe = true;
+      recipe_at = i;
     }
   }
   if (!have_recipe) throw UsageError("run expects a recipe file");
-  // A file where the output folder should be is the command line's mistake: say so before the recipe runs.
+  // `selfsim run dragon` for dragon.lua: say the command meant.
   std::error_code ec;
+  if (c.recipe.extension() != ".lua" && !std::filesystem::exists(std::filesystem::symlink_status(c.recipe, ec))) {
+    const std::filesystem::path meant = c.recipe.string() + ".lua";
+    if (std::filesystem::is_regular_file(meant, ec)) {
+      std::vector<std::string> line{"run"};
+      line.insert(line.end(), args.begin(), args.end());
+      line[recipe_at + 1] = meant.string();
+      throw UsageError("cannot open recipe '" + c.recipe.string() + "': no such file; to run " + meant.string() + ": " +
+                       shell_command(line));
+    }
+  }
+  // A file where the output folder should be is the command line's mistake: say so before the recipe runs.
   if (std::filesystem::exists(c.out_dir, ec) && !std::filesystem::is_directory(c.out_dir, ec))
     throw UsageError("-o '" + c.out_dir.string() + "' is a file, not a folder");
   return c;

@@ -49,6 +49,11 @@ class RunContext : public Progress {
   LuaMemory memory;                   // the Lua state's allocator and its --max-memory limit
   LiveValues values;                  // the C++ values the recipe's Lua values stand for
   std::string pending_warning;        // a warning Lua is still sending in pieces
+  // The files save() has written in this run (bind_io.cpp): by their name inside the output folder, made
+  // lexically normal, the name as written and the recipe location ("dragon.lua:3: ") that wrote it; and
+  // by their identity (device, inode), the normal name, for names that differ but open the same file.
+  std::map<std::string, std::pair<std::string, std::string>> saved;
+  std::map<std::pair<unsigned long long, unsigned long long>, std::string> saved_files;
 
   // What the run's values may still make: --max-points less what live values hold.
   PointBudget budget() const { return {config.max_points, held_points}; }

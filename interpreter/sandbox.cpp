@@ -9,6 +9,7 @@
 
 #include "interpreter/folder_check.h"
 #include "interpreter/lua_support.h"
+#include "interpreter/options_reader.h"
 
 namespace selfsim::interp {
 
@@ -21,6 +22,39 @@ bool valid_module_name(const std::string& name) {
   for (char c : name)
     if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.')) return false;
   return name.find("..") == std::string::npos;
+}
+
+// The module most likely meant by `name`, which neither folder holds: modules beside it in either folder
+// ("selfsim.curve" for "selfsim.curves"), or of the DSL's library ("curves" for "selfsim.curves"); the
+// recipe itself is not one. Empty when none is close.
+std::string module_meant(const RunContext& run, const std::string& name) {
+  const std::size_t dot = name.rfind('.');
+  const std::string prefix = dot == std::string::npos ? "" : name.substr(0, dot + 1);
+  std::string sub = prefix;
+  std::replace(sub.begin(), sub.end(), '.', '/');
+  std::vector<std::string> modules;
+  auto add = [&](const std::filesystem::path& folder, const std::string& module_prefix) {
+    for (const std::string& file : files_in(folder, {".lua"})) {
+      const std::string module = module_prefix + std::filesystem::path(file).stem().string();
+      if (valid_module_name(module) && std::find(modules.begin(), modules.end(), module) == modules.end())
+        modules.push_back(module);
+    }
+  };
+  const std::filesystem::path recipe_dir = run.config.recipe.parent_path();
+  add(run.scripts_dir / sub, prefix);
+  add(run.scripts_dir / "selfsim", "selfsim.");
+  add(recipe_dir / sub, prefix);
+  if (prefix.empty()) std::erase(modules, run.config.recipe.stem().string());
+  std::string near = suggestion(name, modules);
+  if (!near.empty()) return near;
+  // The last part alone: "curves" for "selfsim.curves".
+  auto last = [](const std::string& m) { return m.substr(m.rfind('.') + 1); };
+  std::vector<std::string> lasts;
+  for (const std::string& m : modules) lasts.push_back(last(m));
+  near = suggestion(last(name), lasts);
+  for (const std::string& m : modules)
+    if (!near.empty() && last(m) == near) return m;
+  return "";
 }
 
 // Loads module `name` (scripts/ first, then the recipe's folder; text chunks only) and leaves its value on
@@ -82,8 +116,16 @@ bool load_module(lua_State* L, const std::string& name) {
     lua_setfield(L, -3, module);  // cache it
     return true;
   }
-  lua_pushfstring(L, "%srequire: module '%s' not found in scripts/ or the recipe's folder", recipe_where(L).c_str(),
-                  shown_text(name).c_str());
+  // Where it looked, in words that hold on any machine, and the likeliest module meant.
+  std::string near;
+  try {
+    near = module_meant(run, name);
+  } catch (const std::exception&) {  // out of memory: no suggestion
+  }
+  const std::string message = recipe_where(L) + "require: module '" + shown_text(name) + "' not found: looked for " +
+                              shown_text(rel) + " in the DSL's scripts/ folder and in the recipe's folder" +
+                              (near.empty() ? "" : " (did you mean '" + near + "'?)");
+  lua_pushlstring(L, message.data(), message.size());
   return false;
 }
 

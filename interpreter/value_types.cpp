@@ -197,4 +197,33 @@ std::optional<AnyValue> test_any(lua_State* L, int index) {
   return std::nullopt;
 }
 
+std::string spread_report_advice(lua_State* L, int index, int before, const std::string& into) {
+  index = lua_absindex(L, index);
+  if (lua_type(L, index) != LUA_TTABLE || lua_type(L, before) != LUA_TUSERDATA) return "";
+  if (lua_getmetatable(L, index) != 0) {  // a table with a metatable of its own is not a report
+    lua_pop(L, 1);
+    return "";
+  }
+  // Named entries only: no list entry 1, and at least one key.
+  const bool listed = lua_rawgeti(L, index, 1) != LUA_TNIL;
+  lua_pop(L, 1);
+  lua_pushnil(L);
+  const bool empty = lua_next(L, index) == 0;
+  if (!empty) lua_pop(L, 2);
+  if (listed || empty) return "";
+  // exclusion.curve and exclusion.surface return { stuck = n, levels = { ... }, ... } after their value.
+  auto has = [&](const char* key) {
+    const bool present = lua_getfield(L, index, key) != LUA_TNIL;
+    lua_pop(L, 1);
+    return present;
+  };
+  // A style without its curve ({ stroke = "red" }) is the recipe's own table, not a report.
+  if (has("stroke") || has("stroke_width") || has("fill")) return "";
+  std::string call = " to keep its first value only";
+  if (has("stuck") && has("levels"))
+    call = test_geometry<Mesh>(L, before) ? ", (exclusion.surface{...})" : ", (exclusion.curve{...})";
+  return "(the report of a call that returns two values, spread into " + into + "?): wrap the call in parentheses" +
+         call;
+}
+
 }  // namespace selfsim::interp

@@ -63,6 +63,14 @@ struct AnyValue {
 // The geometry value at index, or nothing if it is not one.
 std::optional<AnyValue> test_any(lua_State* L, int index);
 
+// Lua spreads every result of a call that ends a table constructor or an argument list, so
+// group{ a, exclusion.curve{...} } holds a, the curve and its report. When the value at `index` is a table
+// of named entries only (a report, not a list or a styled member) and a value (userdata) comes just before
+// it at `before`, returns the advice for the message, naming the call when the table is a report selfsim
+// knows ("(the report of a call that returns two values, spread into group{...}?): wrap the call in
+// parentheses, (exclusion.curve{...})"); otherwise "". `into` names the list: "group{...}", "concat(...)".
+std::string spread_report_advice(lua_State* L, int index, int before, const std::string& into);
+
 // Registers T's metatable with the common methods and T's own.
 template <class T>
 void register_geometry(lua_State* L, const std::vector<luaL_Reg>& own);

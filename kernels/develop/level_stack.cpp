@@ -65,13 +65,6 @@ int refinement_branching(std::span<const Polyline* const> levels) {
   return branching;
 }
 
-bool closed_path(std::span<const Vec2> p) {
-  if (p.size() < 3) return false;
-  BBox2 box;
-  for (Vec2 q : p) box.add(q);
-  return norm(p.back() - p.front()) <= 1e-9 * std::max(1e-300, norm(box.size()));
-}
-
 bool closed_levels(std::span<const Polyline* const> levels) {
   return std::all_of(levels.begin(), levels.end(), [](const Polyline* c) { return closed_path(c->path(0)); });
 }

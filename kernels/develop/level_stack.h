@@ -25,10 +25,6 @@ int refinement_branching(std::span<const Polyline* const> levels);
 // True when every level is a closed loop (back at its start): the stack is then an annulus, not a disk.
 bool closed_levels(std::span<const Polyline* const> levels);
 
-// True when a path of at least three points ends where it starts, to a billionth of its size (a turtle's
-// loop ends a rounding error away from its start).
-bool closed_path(std::span<const Vec2> path);
-
 // Throws Error naming the first thing that keeps a stack from developing: fewer than two levels, a level
 // that is not one path, has no segment, a non-finite point or a zero-length segment, open levels mixed with
 // closed ones, a closed level of fewer than 3 segments. Returns whether the levels are closed.

@@ -9,6 +9,7 @@
 #include <variant>
 #include <vector>
 
+#include "kernels/geom/cancellable_sort.h"
 #include "kernels/geom/check.h"
 #include "kernels/geom/error.h"
 #include "kernels/geom/mesh_check.h"
@@ -25,7 +26,7 @@ struct Edges {
   std::vector<std::uint32_t> a, b, c, d;  // ends a < b; opposite points c (first face), d (second or none)
   std::vector<std::array<std::uint32_t, 3>> of_face;
 
-  explicit Edges(const Mesh& m) {
+  Edges(const Mesh& m, Progress& progress) {
     struct Side {
       std::uint32_t lo, hi, face, corner;  // corner: which edge of the face (0: v0v1, 1: v1v2, 2: v2v0)
     };
@@ -36,8 +37,10 @@ struct Edges {
         const std::uint32_t u = m.triangles[f][k], v = m.triangles[f][(k + 1) % 3];
         sides.push_back({std::min(u, v), std::max(u, v), f, k});
       }
-    std::sort(sides.begin(), sides.end(),
-              [](const Side& x, const Side& y) { return std::tie(x.lo, x.hi, x.face) < std::tie(y.lo, y.hi, y.face); });
+    cancellable_sort(
+        sides.begin(), sides.end(),
+        [](const Side& x, const Side& y) { return std::tie(x.lo, x.hi, x.face) < std::tie(y.lo, y.hi, y.face); },
+        progress);
     of_face.resize(m.faces());
     for (std::size_t i = 0; i < sides.size();) {
       std::size_t j = i + 1;
@@ -108,7 +111,8 @@ void add_bounded_edge(Stencils& s, std::uint32_t v, std::uint32_t u, const std::
   for (std::size_t j = 0; j < n; ++j) s.add(ring[j], share * mask.ring[(j + n - i) % n]);
 }
 
-Stencils stencils(const Mesh& m, const Edges& e, const std::vector<std::uint32_t>& corners, bool bounded) {
+Stencils stencils(const Mesh& m, const Edges& e, const std::vector<std::uint32_t>& corners, bool bounded,
+                  Progress& progress) {
   const std::size_t n = m.points.size();
   std::vector<char> corner(n, 0);
   for (std::uint32_t v : corners)
@@ -130,6 +134,7 @@ Stencils stencils(const Mesh& m, const Edges& e, const std::vector<std::uint32_t
   std::vector<EdgeMask> masks;
   Stencils s;
   for (std::uint32_t v = 0; v < n; ++v) {
+    if ((v & 0xffff) == 0xffff && progress.cancelled()) throw Cancelled();
     if (!boundary[v].empty() && (faces_at[v] == 1 || corner[v])) {
       s.add(v, 1);  // a corner stays
     } else if (!boundary[v].empty()) {
@@ -145,6 +150,7 @@ Stencils stencils(const Mesh& m, const Edges& e, const std::vector<std::uint32_t
     s.close();
   }
   for (std::size_t i = 0; i < e.size(); ++i) {
+    if ((i & 0xffff) == 0xffff && progress.cancelled()) throw Cancelled();
     if (e.d[i] == none) {
       s.add(e.a[i], 0.5);
       s.add(e.b[i], 0.5);
@@ -164,8 +170,8 @@ Stencils stencils(const Mesh& m, const Edges& e, const std::vector<std::uint32_t
 }
 
 Mesh one_round(const Mesh& m, const LoopOptions& opt, Progress& progress) {
-  const Edges e(m);
-  const Stencils s = stencils(m, e, opt.corners, opt.bounded);
+  const Edges e(m, progress);
+  const Stencils s = stencils(m, e, opt.corners, opt.bounded, progress);
   const std::size_t points = m.points.size() + e.size();
   Mesh out;
   out.points.resize(points);
@@ -179,6 +185,7 @@ Mesh one_round(const Mesh& m, const LoopOptions& opt, Progress& progress) {
     std::vector<double> values(points * static_cast<std::size_t>(f.components));
     for (std::size_t p = 0; p < points; ++p)
       for (int c = 0; c < f.components; ++c) {
+        if ((p & 0xffff) == 0 && c == 0 && progress.cancelled()) throw Cancelled();
         double sum = 0;
         for (std::size_t k = s.begin[p]; k < s.begin[p + 1]; ++k) sum += s.weight[k] * f.at(s.source[k], c);
         values[p * static_cast<std::size_t>(f.components) + static_cast<std::size_t>(c)] = sum;
@@ -190,6 +197,7 @@ Mesh one_round(const Mesh& m, const LoopOptions& opt, Progress& progress) {
   const auto base = static_cast<std::uint32_t>(m.points.size());
   out.triangles.reserve(4 * m.faces());
   for (std::size_t f = 0; f < m.faces(); ++f) {
+    if ((f & 0xffff) == 0 && progress.cancelled()) throw Cancelled();
     const Triangle& t = m.triangles[f];
     const std::uint32_t e01 = base + e.of_face[f][0], e12 = base + e.of_face[f][1], e20 = base + e.of_face[f][2];
     out.triangles.push_back({t[0], e01, e20});
@@ -200,7 +208,7 @@ Mesh one_round(const Mesh& m, const LoopOptions& opt, Progress& progress) {
   // The four children of face f are faces 4f .. 4f + 3, each with f's fields.
   std::vector<std::uint32_t> parent(4 * m.faces());
   for (std::size_t k = 0; k < parent.size(); ++k) parent[k] = static_cast<std::uint32_t>(k / 4);
-  out.face_fields = picked_fields<std::uint32_t>(m.face_fields, parent);
+  out.face_fields = picked_fields<std::uint32_t>(m.face_fields, parent, progress);
   return out;
 }
 
@@ -268,7 +276,7 @@ double loop_size(const Mesh& m, int steps) {
 Mesh loop_subdivide(const Mesh& m, const LoopOptions& opt, Progress& progress) {
   opt.validate();
   m.validate();
-  const MeshTopology t = mesh_topology(m);
+  const MeshTopology t = mesh_topology(m, progress);
   if (!t.manifold()) throw Error("Loop subdivision needs a manifold mesh: " + t.first_problem);
   check_budget(size_after(static_cast<double>(m.points.size()), static_cast<double>(t.edges),
                           static_cast<double>(m.faces()), opt.steps),

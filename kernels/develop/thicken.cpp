@@ -6,6 +6,7 @@
 #include <tuple>
 #include <vector>
 
+#include "kernels/geom/cancellable_sort.h"
 #include "kernels/geom/error.h"
 #include "kernels/geom/mesh_check.h"
 
@@ -18,7 +19,7 @@ struct RimEdge {
   std::uint32_t u, v, face;
 };
 
-std::vector<RimEdge> boundary_edges(const Mesh& m) {
+std::vector<RimEdge> boundary_edges(const Mesh& m, Progress& progress) {
   struct Side {
     std::uint32_t lo, hi;
     RimEdge edge;
@@ -30,9 +31,12 @@ std::vector<RimEdge> boundary_edges(const Mesh& m) {
       const std::uint32_t u = m.triangles[f][k], v = m.triangles[f][(k + 1) % 3];
       sides.push_back({std::min(u, v), std::max(u, v), {u, v, f}});
     }
-  std::sort(sides.begin(), sides.end(), [](const Side& a, const Side& b) {
-    return std::tie(a.lo, a.hi, a.edge.face) < std::tie(b.lo, b.hi, b.edge.face);
-  });
+  cancellable_sort(
+      sides.begin(), sides.end(),
+      [](const Side& a, const Side& b) {
+        return std::tie(a.lo, a.hi, a.edge.face) < std::tie(b.lo, b.hi, b.edge.face);
+      },
+      progress);
   std::vector<RimEdge> out;
   for (std::size_t i = 0; i < sides.size();) {
     std::size_t j = i + 1;
@@ -46,12 +50,12 @@ std::vector<RimEdge> boundary_edges(const Mesh& m) {
 }  // namespace
 
 Mesh thicken(const Mesh& m, Progress& progress) {
-  const MeshTopology topology = mesh_topology(m);
+  progress.start("thickening");
+  const MeshTopology topology = mesh_topology(m, progress);
   if (!topology.manifold()) throw Error("thickening needs a manifold surface: " + topology.first_problem);
   const Field* thickness = m.point_fields.find("thickness");
   if (thickness == nullptr || thickness->components != 1) throw Error("thickening needs a point field 'thickness'");
   const std::size_t n = m.points.size();
-  progress.start("thickening");
 
   // Cancellation is looked for every 65,536 points or faces.
   auto stop = [&](std::size_t i) {
@@ -81,11 +85,12 @@ Mesh thicken(const Mesh& m, Progress& progress) {
   if (progress.cancelled()) throw Cancelled();
 
   const auto shift = static_cast<std::uint32_t>(n);
-  const auto rim = boundary_edges(m);
+  const auto rim = boundary_edges(m, progress);
   out.triangles.reserve(2 * m.faces() + 2 * rim.size());
   std::vector<std::uint32_t> face_source;
   face_source.reserve(out.triangles.capacity());
   for (std::uint32_t f = 0; f < m.faces(); ++f) {
+    stop(f);
     out.triangles.push_back(m.triangles[f]);
     face_source.push_back(f);
   }
@@ -105,8 +110,8 @@ Mesh thicken(const Mesh& m, Progress& progress) {
   }
   std::vector<std::uint32_t> point_source(2 * n);
   for (std::uint32_t i = 0; i < n; ++i) point_source[i] = point_source[n + i] = i;
-  out.point_fields = picked_fields<std::uint32_t>(m.point_fields, point_source);
-  out.face_fields = picked_fields<std::uint32_t>(m.face_fields, face_source);
+  out.point_fields = picked_fields<std::uint32_t>(m.point_fields, point_source, progress);
+  out.face_fields = picked_fields<std::uint32_t>(m.face_fields, face_source, progress);
   if (!out.finite()) throw Error("thickening gave non-finite points (the thickness is too large)");
   return out;
 }

@@ -46,7 +46,7 @@ Curves::Curves(const Region& region, const Polyline& start, const CurveOptions& 
   segments_.reserve(region.edges() + 2 * at_.capacity());
   for (std::size_t i = 0; i < start.paths(); ++i) {
     const auto p = start.path(i);
-    const bool loop = closed_path(p);
+    const bool loop = exact_loop(p);
     const std::size_t n = loop ? p.size() - 1 : p.size();
     const auto first = static_cast<std::uint32_t>(at_.size());
     for (std::size_t k = 0; k < n; ++k) {

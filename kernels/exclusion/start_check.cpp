@@ -26,7 +26,7 @@ bool consecutive(const Polyline& start, const StartSegment& s, const StartSegmen
   if (s.curve != t.curve) return false;
   const std::size_t n = start.path(s.curve).size() - 1;
   const std::size_t lo = std::min(s.index, t.index), hi = std::max(s.index, t.index);
-  return hi == lo + 1 || (closed_path(start.path(s.curve)) && lo == 0 && hi == n - 1);
+  return hi == lo + 1 || (exact_loop(start.path(s.curve)) && lo == 0 && hi == n - 1);
 }
 
 std::string segment_name(const StartSegment& s) {
@@ -35,7 +35,7 @@ std::string segment_name(const StartSegment& s) {
 
 }  // namespace
 
-bool closed_path(std::span<const Vec2> p) { return p.size() >= 4 && p.front() == p.back(); }
+bool exact_loop(std::span<const Vec2> p) { return p.size() >= 4 && p.front() == p.back(); }
 
 // Whether segment a-b meets the boundary anywhere but at an end that may touch it (a_may, b_may), exactly:
 // the quick test by distance is too coarse for a short segment or one at a shallow angle to an edge.
@@ -63,7 +63,7 @@ void check_start(const Region& region, const Polyline& start, const Polyline& sh
     const auto p = start.path(i), q = shown.path(i);
     const std::string name = "start curve " + std::to_string(i + 1);
     if (p.size() < 2) throw Error(name + " needs at least one segment (two points)");
-    const bool loop = closed_path(p);
+    const bool loop = exact_loop(p);
     for (std::size_t k = 0; k < p.size(); ++k) {
       if (!is_finite(p[k])) throw Error(name + "'s point " + std::to_string(k + 1) + " is not finite");
       if (!region.contains(p[k]))

@@ -11,8 +11,9 @@
 
 namespace selfsim::exclusion {
 
-// A path that ends where it starts (at least three segments) is a closed curve.
-bool closed_path(std::span<const Vec2> p);
+// A start path that ends exactly where it starts (at least three segments) is a closed curve: starts are
+// given, not walked, so the exact test (unlike selfsim::closed_path) is the right one.
+bool exact_loop(std::span<const Vec2> p);
 
 // `shown`: the same start in the caller's coordinates, for messages (the checks run on `start`).
 void check_start(const Region& region, const Polyline& start, const Polyline& shown);

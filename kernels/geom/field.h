@@ -14,6 +14,8 @@
 #include <variant>
 #include <vector>
 
+#include "kernels/geom/progress.h"
+
 namespace selfsim {
 
 enum class Scalar { Int32, Float64 };
@@ -62,9 +64,10 @@ Fields join_fields(std::span<const Fields* const> parts, std::span<const std::si
                    std::span<const std::size_t> skip, const Fields& defaults);
 
 // The fields of elements picked from others: element k of the result takes the tuples of element source[k]
-// (a simplified curve's kept points, a thickened mesh's two sheets); uniform fields stay as they are.
+// (a simplified curve's kept points, a thickened mesh's two sheets); uniform fields stay as they are. Looks
+// for a stop every 2^20 elements.
 template <class Index>
-Fields picked_fields(const Fields& fields, std::span<const Index> source) {
+Fields picked_fields(const Fields& fields, std::span<const Index> source, Progress& progress = no_progress()) {
   Fields out;
   for (const Field& f : fields.list) {
     if (f.uniform) {
@@ -77,9 +80,12 @@ Fields picked_fields(const Fields& fields, std::span<const Index> source) {
           const auto k = static_cast<std::size_t>(f.components);
           std::remove_cvref_t<decltype(values)> picked;
           picked.reserve(source.size() * k);
-          for (Index s : source)
+          for (std::size_t j = 0; j < source.size(); ++j) {
+            if ((j & 0xfffff) == 0xfffff && progress.cancelled()) throw Cancelled();
+            const Index s = source[j];
             picked.insert(picked.end(), values.begin() + static_cast<std::ptrdiff_t>(s * k),
                           values.begin() + static_cast<std::ptrdiff_t>((s + 1) * k));
+          }
           g.data = std::move(picked);
         },
         f.data);

@@ -37,23 +37,24 @@ void initialise_openvdb() {
   std::call_once(once, [] { openvdb::initialize(); });
 }
 
-// The surface area of a volume's parts, each of which becomes a level set.
+// The surface area of a volume's distinct boxes, spheres and meshes, each of which becomes a level set.
 double parts_area(const Volume& v) {
-  switch (v.kind) {
-    case Volume::Kind::box: {
-      const Vec3 s = v.hi - v.lo;
-      return 2 * (s.x * s.y + s.y * s.z + s.z * s.x);
-    }
-    case Volume::Kind::sphere:
-      return 4 * std::numbers::pi * v.radius * v.radius;
-    case Volume::Kind::mesh:
-      return surface_area(*v.mesh);
-    default: {
-      double a = 0;
-      for (const auto& p : v.parts) a += parts_area(*p);
-      return a;
+  double a = 0;
+  for (const Volume* p : volume_leaves(v)) {
+    switch (p->kind) {
+      case Volume::Kind::box: {
+        const Vec3 s = p->hi - p->lo;
+        a += 2 * (s.x * s.y + s.y * s.z + s.z * s.x);
+        break;
+      }
+      case Volume::Kind::sphere:
+        a += 4 * std::numbers::pi * p->radius * p->radius;
+        break;
+      default:
+        a += surface_area(*p->mesh);
     }
   }
+  return a;
 }
 
 // OpenVDB converts meshes in single precision and indexes voxels with 32-bit integers, and its transforms
@@ -152,12 +153,14 @@ Grid::Ptr mesh_grid(const Mesh& m, bool closed, const Frame& f, Interrupter& int
   return g;
 }
 
-// The level set of any volume in frame f: parts converted, then combined in order.
+// The level set of any volume in frame f: parts converted, then combined in order (nested unions and
+// differences flattened, each distinct part once: combined_parts).
 Grid::Ptr volume_level_set(const Volume& v, const Frame& f, Interrupter& interrupt) {
   if (v.exact()) return mesh_grid(exact_boundary(v, f.voxel), true, f, interrupt);
-  Grid::Ptr result = volume_level_set(*v.parts[0], f, interrupt);
-  for (std::size_t i = 1; i < v.parts.size(); ++i) {
-    Grid::Ptr next = volume_level_set(*v.parts[i], f, interrupt);
+  const std::vector<const Volume*> parts = combined_parts(v);
+  Grid::Ptr result = volume_level_set(*parts[0], f, interrupt);
+  for (std::size_t i = 1; i < parts.size(); ++i) {
+    Grid::Ptr next = volume_level_set(*parts[i], f, interrupt);
     if (v.kind == Volume::Kind::unite)
       openvdb::tools::csgUnion(*result, *next);
     else
@@ -218,14 +221,14 @@ std::string degenerate_surface(const Mesh& m, Progress& progress) {
 
 // The corners of a volume's parts: where the level sets' trees grow.
 void part_corners(const Volume& v, std::vector<Vec3>& out) {
-  if (v.kind == Volume::Kind::mesh) {
-    out.insert(out.end(), v.mesh->points.begin(), v.mesh->points.end());
-  } else if (v.exact()) {
-    const BBox3 b = v.bbox();
-    for (int k = 0; k < 8; ++k)
-      out.push_back({k & 1 ? b.max.x : b.min.x, k & 2 ? b.max.y : b.min.y, k & 4 ? b.max.z : b.min.z});
-  } else {
-    for (const auto& p : v.parts) part_corners(*p, out);
+  for (const Volume* p : volume_leaves(v)) {
+    if (p->kind == Volume::Kind::mesh) {
+      out.insert(out.end(), p->mesh->points.begin(), p->mesh->points.end());
+    } else {
+      const BBox3 b = p->bbox();
+      for (int k = 0; k < 8; ++k)
+        out.push_back({k & 1 ? b.max.x : b.min.x, k & 2 ? b.max.y : b.min.y, k & 4 ? b.max.z : b.min.z});
+    }
   }
 }
 

@@ -6,6 +6,8 @@
 #include <tuple>
 #include <vector>
 
+#include "kernels/geom/cancellable_sort.h"
+
 namespace selfsim {
 
 namespace {
@@ -37,7 +39,7 @@ std::string edge_text(const HalfEdge& e) {
 
 }  // namespace
 
-MeshTopology mesh_topology(const Mesh& m) {
+MeshTopology mesh_topology(const Mesh& m, Progress& progress) {
   MeshTopology t;
   t.faces = m.triangles.size();
   std::vector<HalfEdge> half;
@@ -50,9 +52,10 @@ MeshTopology mesh_topology(const Mesh& m) {
       half.push_back({std::min(a, b), std::max(a, b), f, a < b});
     }
   t.vertices = static_cast<std::size_t>(std::count(used.begin(), used.end(), 1));
-  std::sort(half.begin(), half.end(), [](const HalfEdge& x, const HalfEdge& y) {
-    return std::tie(x.lo, x.hi, x.face) < std::tie(y.lo, y.hi, y.face);
-  });
+  cancellable_sort(
+      half.begin(), half.end(),
+      [](const HalfEdge& x, const HalfEdge& y) { return std::tie(x.lo, x.hi, x.face) < std::tie(y.lo, y.hi, y.face); },
+      progress);
 
   Components faces(m.triangles.size()), boundary(m.points.size());
   std::vector<char> on_boundary(m.points.size(), 0);
@@ -100,6 +103,7 @@ MeshTopology mesh_topology(const Mesh& m) {
     for (std::uint32_t v : m.triangles[f]) faces_around[fill[v]++] = f;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> corners;  // (other corner, index into around[v])
   for (std::uint32_t v = 0; v < m.points.size(); ++v) {
+    if ((v & 0xffff) == 0xffff && progress.cancelled()) throw Cancelled();
     const std::span<const std::uint32_t> fs(faces_around.data() + offset[v], offset[v + 1] - offset[v]);
     if (fs.size() < 2) continue;
     corners.clear();

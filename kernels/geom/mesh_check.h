@@ -7,6 +7,7 @@
 #include <string>
 
 #include "kernels/geom/mesh.h"
+#include "kernels/geom/progress.h"
 
 namespace selfsim {
 
@@ -32,7 +33,8 @@ struct MeshTopology {
   bool closed() const { return manifold() && boundary_edges == 0 && faces > 0; }
 };
 
-// The topology of m. Points and faces in first_problem count from 1. O(F log F).
-MeshTopology mesh_topology(const Mesh& m);
+// The topology of m. Points and faces in first_problem count from 1. O(F log F); looks for a stop (throws
+// Cancelled) as it sorts and every 65,536 faces.
+MeshTopology mesh_topology(const Mesh& m, Progress& progress = no_progress());
 
 }  // namespace selfsim

@@ -126,11 +126,15 @@ Grid choose_grid(const std::vector<Box>& boxes, const std::array<float, 3>& reac
 }
 
 // A large array, sized to n without a cost per page: 2 MiB pages (first touch is dear on some machines).
+// Zero-filled in steps of 2^22, looking for a stop between them: filling gigabytes takes a while.
 template <class T>
-void size_large(std::vector<T>& v, std::size_t n) {
+void size_large(std::vector<T>& v, std::size_t n, Progress& progress) {
   v.reserve(n);
   advise_huge_pages(v);
-  v.resize(n);
+  while (v.size() < n) {
+    if (progress.cancelled()) throw Cancelled();
+    v.resize(std::min(n, v.size() + (std::size_t{1} << 22)));
+  }
 }
 
 // The records of every insertion, sorted by cell (stable, so by triangle within a cell).
@@ -144,7 +148,7 @@ std::vector<std::uint64_t> sorted_records(const std::vector<Box>& boxes, const G
   });
   for (std::size_t b = 0; b < blocks; ++b) start[b + 1] += start[b];
   std::vector<std::uint64_t> records, spare;
-  size_large(records, start[blocks]);
+  size_large(records, start[blocks], progress);
   tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
     std::uint64_t* out = records.data() + start[b];
     for (std::size_t i = b * block; i < std::min(f, (b + 1) * block); ++i) {
@@ -160,7 +164,7 @@ std::vector<std::uint64_t> sorted_records(const std::vector<Box>& boxes, const G
   constexpr std::uint64_t digit_mask = (1 << digit) - 1;
   constexpr std::size_t parts = 64;
   const std::size_t n = records.size(), part = (n + parts - 1) / parts;
-  size_large(spare, n);
+  size_large(spare, n, progress);
   std::vector<std::array<std::size_t, 1 << digit>> slot(parts);
   for (int shift = g.id_bits; shift < g.id_bits + g.key_bits(); shift += digit) {
     if (progress.cancelled()) throw Cancelled();
@@ -298,7 +302,7 @@ std::optional<TrianglePair> first_intersection(const Mesh& m, Progress& progress
   // Grown by eps, then by 2^-23 so that rounding to float only ever grows them.
   constexpr double margin = 0x1p-23;
   std::vector<Box> boxes;
-  size_large(boxes, f);
+  size_large(boxes, f, progress);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, f, 1 << 14), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t i = r.begin(); i < r.end(); ++i) {
       const auto c = corners(static_cast<std::uint32_t>(i));
@@ -307,6 +311,7 @@ std::optional<TrianglePair> first_intersection(const Mesh& m, Progress& progress
       boxes[i] = {{float(lo.x), float(lo.y), float(lo.z)}, {float(hi.x), float(hi.y), float(hi.z)}};
     }
   });
+  if (progress.cancelled()) throw Cancelled();
   const Vec3 reach = bounds.size() / corners.size + Vec3::all(eps + 2 * margin);
   const Grid grid = choose_grid(boxes, {float(reach.x), float(reach.y), float(reach.z)});
   progress.fraction(0.05);

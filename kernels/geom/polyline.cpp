@@ -1,5 +1,7 @@
 #include "kernels/geom/polyline.h"
 
+#include <algorithm>
+
 #include "kernels/geom/all_finite.h"
 
 namespace selfsim {
@@ -66,6 +68,13 @@ Polyline transformed(const Polyline& c, const Similarity2& t) {
   Polyline out = c;
   for (Vec2& p : out.points) p = t(p);
   return out;
+}
+
+bool closed_path(std::span<const Vec2> p) {
+  if (p.size() < 3) return false;
+  BBox2 box;
+  for (Vec2 q : p) box.add(q);
+  return norm(p.back() - p.front()) <= 1e-9 * std::max(1e-300, norm(box.size()));
 }
 
 }  // namespace selfsim

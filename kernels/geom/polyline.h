@@ -55,4 +55,10 @@ extern template struct PolylineT<Vec3>;
 // c with every point mapped by t (paths and fields kept).
 Polyline transformed(const Polyline& c, const Similarity2& t);
 
+// True when a path of at least three points ends where it starts, to a billionth of its size: kernels that
+// close a curve by walking (a turtle's loop, a substitution over a polygon) arrive back a rounding error
+// away (the Koch snowflake's level 1 ends 3e-16 from its start). Develop's stacks and the SVG and EPS
+// writers' Z / closepath use this one rule.
+bool closed_path(std::span<const Vec2> path);
+
 }  // namespace selfsim

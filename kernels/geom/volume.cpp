@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <unordered_set>
 #include <utility>
 
 #include "kernels/geom/box_mesh.h"
@@ -55,6 +56,8 @@ Volume Volume::box(Vec3 lo, Vec3 hi) {
   v.kind = Kind::box;
   v.lo = lo;
   v.hi = hi;
+  v.bounds = {lo, hi};
+  v.held_bytes = sizeof(Volume);
   return v;
 }
 
@@ -65,6 +68,8 @@ Volume Volume::sphere(Vec3 centre, double radius) {
   v.kind = Kind::sphere;
   v.centre = centre;
   v.radius = radius;
+  v.bounds = {centre - Vec3{radius, radius, radius}, centre + Vec3{radius, radius, radius}};
+  v.held_bytes = sizeof(Volume);
   return v;
 }
 
@@ -87,6 +92,8 @@ Volume Volume::closed_mesh(Mesh m, Progress& progress) {
   Volume out;
   out.kind = Kind::mesh;
   out.mesh = std::make_shared<const Mesh>(std::move(m));
+  out.bounds = out.mesh->bbox();
+  out.held_bytes = static_cast<double>(sizeof(Volume) + out.mesh->bytes());
   return out;
 }
 
@@ -95,33 +102,64 @@ Volume Volume::combine(Kind kind, std::vector<std::shared_ptr<const Volume>> par
   Volume v;
   v.kind = kind;
   v.parts = std::move(parts);
+  for (const auto& p : v.parts)
+    if (p->depth >= max_volume_depth)
+      throw Error("nests volumes more than " + std::to_string(max_volume_depth) +
+                  " deep: give the parts to one call, volume.union{ a, b, c, ... }");
+  v.held_bytes = static_cast<double>(sizeof(Volume) + v.parts.capacity() * sizeof(v.parts[0]));
+  if (kind == Kind::subtract) v.bounds = v.parts[0]->bounds;
+  for (const auto& p : v.parts) {
+    v.depth = std::max(v.depth, p->depth + 1);
+    if (kind == Kind::unite) v.bounds.add(p->bounds);
+    v.held_bytes = std::min(v.held_bytes + p->held_bytes, 0x1p62);
+  }
   return v;
 }
 
-BBox3 Volume::bbox() const {
-  switch (kind) {
-    case Kind::box:
-      return {lo, hi};
-    case Kind::sphere:
-      return {centre - Vec3{radius, radius, radius}, centre + Vec3{radius, radius, radius}};
-    case Kind::mesh:
-      return mesh->bbox();
-    case Kind::unite: {
-      BBox3 b;
-      for (const auto& p : parts) b.add(p->bbox());
-      return b;
-    }
-    case Kind::subtract:
-      return parts[0]->bbox();
+BBox3 Volume::bbox() const { return bounds; }
+
+std::size_t Volume::bytes() const { return static_cast<std::size_t>(held_bytes); }
+
+std::vector<const Volume*> combined_parts(const Volume& v) {
+  std::vector<const Volume*> out, stack;
+  std::unordered_set<const Volume*> seen;
+  auto keep = [&](const Volume* p) {
+    if (seen.insert(p).second) out.push_back(p);
+  };
+  if (v.kind == Volume::Kind::subtract) {
+    // (a − b) − c is a − b − c: the first parts followed down, the parts taken away innermost first.
+    std::vector<const Volume*> chain{&v};
+    while (chain.back()->kind == Volume::Kind::subtract) chain.push_back(chain.back()->parts[0].get());
+    out.push_back(chain.back());
+    for (auto d = chain.rbegin() + 1; d != chain.rend(); ++d)
+      for (std::size_t i = 1; i < (*d)->parts.size(); ++i) keep((*d)->parts[i].get());
+    return out;
   }
-  return {};
+  for (auto p = v.parts.rbegin(); p != v.parts.rend(); ++p) stack.push_back(p->get());
+  while (!stack.empty()) {
+    const Volume* p = stack.back();
+    stack.pop_back();
+    if (p->kind == Volume::Kind::unite)
+      for (auto q = p->parts.rbegin(); q != p->parts.rend(); ++q) stack.push_back(q->get());
+    else
+      keep(p);
+  }
+  return out;
 }
 
-std::size_t Volume::bytes() const {
-  std::size_t b = sizeof(Volume);
-  if (mesh) b += mesh->bytes();
-  for (const auto& p : parts) b += p->bytes();
-  return b;
+std::vector<const Volume*> volume_leaves(const Volume& v) {
+  std::vector<const Volume*> out, stack{&v};
+  std::unordered_set<const Volume*> seen;
+  while (!stack.empty()) {
+    const Volume* p = stack.back();
+    stack.pop_back();
+    if (!seen.insert(p).second) continue;
+    if (p->exact())
+      out.push_back(p);
+    else
+      for (auto q = p->parts.rbegin(); q != p->parts.rend(); ++q) stack.push_back(q->get());
+  }
+  return out;
 }
 
 std::string Volume::summary() const {

@@ -17,6 +17,10 @@
 
 namespace selfsim {
 
+// A union or difference nested deeper than this is refused: freeing a tree releases it one level at a time,
+// each on the call stack.
+inline constexpr int max_volume_depth = 100000;
+
 struct Volume {
   enum class Kind { box, sphere, mesh, unite, subtract };
   Kind kind = Kind::box;
@@ -26,6 +30,9 @@ struct Volume {
   std::shared_ptr<const Mesh> mesh;                  // mesh: closed, not crossing itself, facing outwards
   std::vector<std::shared_ptr<const Volume>> parts;  // unite: all of them; subtract: the first less the others
   double voxel = 0;                                  // the voxel size given by the recipe; 0: chosen by each use
+  BBox3 bounds;                                      // kept when made: a union 20,000 deep is not walked again
+  double held_bytes = 0;                             // bytes of the tree (each part as often as it appears)
+  int depth = 1;                                     // levels of the tree, at most max_volume_depth
 
   // Throw Error naming what is wrong ("option 'max' must be above 'min' in every coordinate", "the mesh is not
   // closed: its edge from point 3 to point 7 (in triangle 2) has no other triangle", ...).
@@ -37,12 +44,22 @@ struct Volume {
 
   bool exact() const { return kind != Kind::unite && kind != Kind::subtract; }
   BBox3 bbox() const;
-  // Bytes of C++ memory held (meshes included), and the description for tostring: "Volume(box, ...)".
+  // Bytes of C++ memory held (meshes included; a part used twice counted twice, to at most 2^62), and the
+  // description for tostring: "Volume(box, ...)".
   std::size_t bytes() const;
   std::string summary() const;
   // The voxel size a use without its own choice takes: the given one, or 1/128 of the longest side.
   double default_voxel() const;
 };
+
+// The parts a union or a difference combines, with nested unions spliced into a union (a union grown one part
+// at a time is a tree as deep as its parts) and each distinct part once (adding a part again adds nothing). A
+// difference: its first part (nested differences' first parts followed down), then what is taken away.
+// Iterative, so a tree 20,000 deep needs no deep call stack.
+std::vector<const Volume*> combined_parts(const Volume& v);
+
+// The distinct boxes, spheres and meshes a volume is made of, each once, whatever the depth.
+std::vector<const Volume*> volume_leaves(const Volume& v);
 
 // An icosphere: the icosahedron's faces split 1 -> 4 until no point lies more than `tolerance` inside the
 // sphere (at most 7 times, 327,680 triangles), corners on the sphere, facing outwards.

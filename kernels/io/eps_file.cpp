@@ -65,7 +65,7 @@ void write_eps(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
     s += "newpath\n";
     for (std::size_t k = i; k < j; ++k) {
       auto path = c.path(k);
-      const bool closed = path.size() > 2 && path.front() == path.back();
+      const bool closed = closed_path(path);  // to a billionth of its size, as SVG's Z
       if (closed) path = path.first(path.size() - 1);
       const char* op = " m\n";
       for (Vec2 p : path) {

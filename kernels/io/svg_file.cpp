@@ -13,8 +13,6 @@
 
 namespace selfsim::io {
 
-namespace {}  // namespace
-
 void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress) {
   const Polyline& c = *std::get<const Polyline*>(v);  // the registry sends only 2D curves here
   const DrawingFrame frame = drawing_frame(c, opt.size);
@@ -56,7 +54,7 @@ void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
     char cmd = 'M';
     // A closed path (back at its start) ends with Z, so renderers join its last corner like the others.
     auto path = c.path(i);
-    const bool closed = path.size() > 2 && path.front() == path.back();
+    const bool closed = closed_path(path);
     if (closed) path = path.first(path.size() - 1);
     for (Vec2 p : path) {
       // Rounding noise around zero (-1.36e-19 on a unit curve) is written as the 0 it means.

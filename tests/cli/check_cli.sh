@@ -29,6 +29,16 @@ contains "$tmp/err" "unknown command 'frobnicate'" "unknown command message"
 expect 2 "missing recipe" -- "$selfsim" run "$tmp/nope.lua"
 contains "$tmp/err" "cannot open recipe" "missing recipe message"
 expect 2 "bad --max-points" -- "$selfsim" run "$src/examples/plant.lua" --max-points lots
+# A recipe without `run`, or without its `.lua`: the command meant (issue 21).
+mkdir -p "$tmp/meant" && printf 'print("ran")\n' >"$tmp/meant/dragon.lua"
+expect 2 "recipe without run" -- bash -c 'cd "$1" && "$2" dragon.lua' _ "$tmp/meant" "$selfsim"
+contains "$tmp/err" "selfsim: unknown command 'dragon.lua'; to run a recipe: selfsim run dragon.lua" "recipe without run"
+expect 2 "recipe without run, with flags" -- bash -c 'cd "$1" && "$2" dragon.lua --set "name=a b" -q' _ "$tmp/meant" "$selfsim"
+contains "$tmp/err" "to run a recipe: selfsim run dragon.lua --set 'name=a b' -q" "recipe without run keeps the flags"
+expect 2 "recipe name without .lua" -- bash -c 'cd "$1" && "$2" run dragon -q' _ "$tmp/meant" "$selfsim"
+contains "$tmp/err" "selfsim: cannot open recipe 'dragon': no such file; to run dragon.lua: selfsim run dragon.lua -q" \
+  "recipe name without .lua"
+[ -e "$tmp/meant/out" ] && { echo "FAIL: a usage error made an output folder"; failures=$((failures + 1)); }
 
 # A developing surface thickened beyond the gaps between its parts only warns, naming where.
 printf 'local curves = require "selfsim.curves"\ndevelop(curves.dragon(), { levels = 7, smooth = 2, corner_shift = 0.1, thickness = 0.6 })\n' >"$tmp/thick.lua"
@@ -70,6 +80,14 @@ printf '%s\n' 'save(polyline { { 0, 0 }, { 1, 0 } }, "a.svg")' 'print("between")
 expect 1 "error after a save" -- "$selfsim" run "$tmp/late.lua" -o "$tmp/late"
 contains "$tmp/out" "wrote $tmp/late/a.svg (2 points)" "the file written before the error is reported"
 contains "$tmp/out" "between" "print output too"
+
+# A second save to a written name fails and leaves the first file as it was (issue 21).
+printf '%s\n' 'save(polyline { { 0, 0 }, { 1, 0 } }, "a.vtp")' 'save(polyline { { 0, 0 }, { 1, 0 }, { 2, 1 } }, "./a.vtp")' >"$tmp/twice.lua"
+expect 1 "saving one name twice" -- "$selfsim" run "$tmp/twice.lua" -o "$tmp/twice" -q
+contains "$tmp/err" "twice.lua:2: save: './a.vtp' was already written by line 1 of this run" "saving one name twice"
+expect 0 "the first file stays" -- "$selfsim" info "$tmp/twice/a.vtp"
+contains "$tmp/out" "points: 2" "the first file stays"
+[ "$(ls -A "$tmp/twice")" = "a.vtp" ] || { echo "FAIL: saving twice left $(ls -A "$tmp/twice")"; failures=$((failures + 1)); }
 
 # Warnings and numbers: ABOP's 3D symbols are named once; a number default takes any number.
 cat >"$tmp/abop.lua" <<'LUA'

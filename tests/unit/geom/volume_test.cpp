@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "kernels/geom/box_mesh.h"
 #include "kernels/geom/level_set.h"
@@ -139,6 +140,36 @@ TEST(Volume, DistanceFilesRefuseVoxelsNoVdbCanHold) {
   const Mesh mm = box_mesh({0, 0, 0}, {1e-3, 1e-3, 1e-3});
   EXPECT_THROW(distance_vdb(mm, true, 1e-3 / 128, "surface", {}, no_progress()), Error);
   EXPECT_EQ(distance_vdb(mm, true, min_vdb_voxel, "surface", {}, no_progress()).substr(0, 4), std::string(" BDV"));
+}
+
+// A union grown one part at a time is a tree as deep as its parts: flattened (not walked again at each step)
+// and each distinct part counted once, so 15,000 unions of one sphere predict one sphere's size (issue 21:
+// 2.08e9 points), and nesting past the limit is refused before a tree too deep to free is made.
+TEST(Volume, NestedUnionsFlattenAndCountEachPartOnce) {
+  const auto sphere = shared(Volume::sphere({0, 0, 0}, 1));
+  auto grown = sphere;
+  for (int i = 0; i < 15000; ++i) grown = shared(Volume::combine(Volume::Kind::unite, {grown, sphere}));
+  EXPECT_EQ(combined_parts(*grown).size(), 1u);
+  EXPECT_EQ(volume_leaves(*grown).size(), 1u);
+  const double once = boundary_size(Volume::combine(Volume::Kind::unite, {sphere, sphere}), 0.02);
+  EXPECT_EQ(boundary_size(*grown, 0.02), once);
+  auto boxes = shared(Volume::box({0, 0, 0}, {1, 1, 1}));
+  for (int i = 1; i <= 2000; ++i)
+    boxes = shared(
+        Volume::combine(Volume::Kind::unite, {boxes, shared(Volume::box({0.5 * i, 0, 0}, {0.5 * i + 1, 1, 1}))}));
+  EXPECT_EQ(combined_parts(*boxes).size(), 2001u);
+  EXPECT_EQ(combined_parts(*boxes).front()->bbox().min.x, 0);  // in the order given
+  EXPECT_EQ(boxes->bbox().max.x, 1001);
+  // (a − b) − c is a − b − c.
+  const auto a = shared(Volume::box({0, 0, 0}, {4, 1, 1})), b = shared(Volume::box({1, -1, -1}, {2, 2, 2})),
+             c = shared(Volume::box({3, -1, -1}, {3.5, 2, 2}));
+  const Volume d =
+      Volume::combine(Volume::Kind::subtract, {shared(Volume::combine(Volume::Kind::subtract, {a, b})), c});
+  EXPECT_EQ(combined_parts(d), (std::vector<const Volume*>{a.get(), b.get(), c.get()}));
+  EXPECT_NEAR(enclosed_volume(volume_boundary(d, 0.05, {}, no_progress())), 4 - 1 - 0.5, 0.05);
+  Volume deep = Volume::box({0, 0, 0}, {1, 1, 1});
+  deep.depth = max_volume_depth;
+  EXPECT_THROW(Volume::combine(Volume::Kind::unite, {shared(deep), sphere}), Error);
 }
 
 TEST(Volume, BoundariesAreCountedAgainstTheBudgetBeforeTheyAreMade) {

@@ -8,6 +8,7 @@
 #include "kernels/analysis/dataset_diff.h"
 #include "kernels/geom/error.h"
 #include "kernels/io/read.h"
+#include "kernels/lsystem/turtle2d.h"
 
 using namespace selfsim;
 namespace fs = std::filesystem;
@@ -120,4 +121,28 @@ TEST(SaveSvg, ClosedPathsEndWithZAndReadBackWhole) {
   ASSERT_EQ(d.points.size(), 5u);
   EXPECT_EQ(d.points[4], (std::array<double, 3>{0, 0, 0}));
   EXPECT_EQ(d.cell_ends, (std::vector<std::size_t>{5}));
+}
+
+// The turtle closes the Koch snowflake only to rounding (its level 1 ends 3e-16 from its start): the saved
+// path still ends with Z (issue 21), and reads back with as many points, the last on the first.
+TEST(SaveSvg, TurtleClosedSnowflakeEndsWithZ) {
+  TempDir dir;
+  const lsystem::Grammar snowflake{.axiom = "F++F++F", .rules = {{'F', "F-F++F-F"}}, .angle = 60, .shrink = 1.0 / 3};
+  for (int level = 0; level <= 5; ++level) {
+    const Polyline c = lsystem::turtle2d(snowflake, {.level = level}, no_progress());
+    const fs::path f = dir.path / ("snowflake" + std::to_string(level) + ".svg");
+    io::save(&c, f, {}, no_progress());
+    std::ifstream in(f);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("Z\"/>"), std::string::npos) << "level " << level;
+    const io::Dataset d = io::read_dataset(f);
+    ASSERT_EQ(d.points.size(), c.points.size()) << "level " << level;
+    EXPECT_EQ(d.points.back(), d.points.front()) << "level " << level;
+  }
+  // An open path whose ends are merely near stays open.
+  const Polyline open = Polyline::single({{0, 0}, {1, 0}, {1, 1}, {0, 1e-6}});
+  io::save(&open, dir.path / "open.svg", {}, no_progress());
+  std::ifstream in(dir.path / "open.svg");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(text.find('Z'), std::string::npos);
 }

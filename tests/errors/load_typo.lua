@@ -1,0 +1,1 @@
+local m = load("load_bad_fce.obj")

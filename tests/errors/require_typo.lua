@@ -1,0 +1,1 @@
+local curves = require "selfsim.curve"

@@ -1,0 +1,1 @@
+local ball = volume.sphere { center = { 1, 2 }, radius = 1 }
