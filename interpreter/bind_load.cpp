@@ -74,7 +74,15 @@ std::variant<Polyline, Polyline3, Mesh> load_value(lua_State* L, const std::stri
   // Opened without following any link, and read through that descriptor: the name cannot be swapped
   // for a link to somewhere else between the check and the read.
   const io::FileBeneath file(RunContext::of(L).config.recipe.parent_path(), name);
-  std::variant<Polyline, Polyline3, Mesh> value = io::dataset_value(io::read_dataset(file.name(), name));
+  const io::Dataset read = io::read_dataset(file.name(), name);
+  std::variant<Polyline, Polyline3, Mesh> value;
+  try {
+    value = io::dataset_value(read);
+  } catch (const BudgetError&) {
+    throw;
+  } catch (const Error& e) {  // what the file holds cannot be a value: say which file, as the readers do
+    throw Error("cannot read '" + shown_text(name) + "': " + e.what());
+  }
   std::visit([&](auto& v) { check_run_budget(L, budget_size(v), "'" + shown_text(name) + "'"); }, value);
   return value;
 }

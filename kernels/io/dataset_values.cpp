@@ -3,6 +3,7 @@
 #include <string>
 
 #include "kernels/geom/error.h"
+#include "kernels/geom/polygon_triangles.h"
 
 namespace selfsim::io {
 
@@ -45,14 +46,24 @@ Mesh dataset_mesh(const Dataset& d) {
   m.points.reserve(d.points.size());
   for (const auto& p : d.points) m.points.push_back({p[0], p[1], p[2]});
   std::vector<std::size_t> triangles_of(d.cell_ends.size());
+  std::vector<Vec3> corners;
+  std::vector<std::array<std::size_t, 3>> cut;
   std::size_t begin = 0;
   for (std::size_t c = 0; c < d.cell_ends.size(); ++c) {
     const std::size_t end = d.cell_ends[c];
     if (end - begin < 3) throw Error("polygon " + std::to_string(c + 1) + " has fewer than 3 points");
-    for (std::size_t k = begin + 1; k + 1 < end; ++k)
-      m.triangles.push_back({static_cast<std::uint32_t>(d.cell_points[begin]),
-                             static_cast<std::uint32_t>(d.cell_points[k]),
-                             static_cast<std::uint32_t>(d.cell_points[k + 1])});
+    corners.clear();
+    for (std::size_t k = begin; k < end; ++k) corners.push_back(m.points[d.cell_points[k]]);
+    cut.clear();
+    try {
+      polygon_triangles(corners, cut);  // a concave polygon is cut into ears, never fanned outside itself
+    } catch (const Error& e) {
+      throw Error("polygon " + std::to_string(c + 1) + ": " + e.what());
+    }
+    for (const auto& t : cut)
+      m.triangles.push_back({static_cast<std::uint32_t>(d.cell_points[begin + t[0]]),
+                             static_cast<std::uint32_t>(d.cell_points[begin + t[1]]),
+                             static_cast<std::uint32_t>(d.cell_points[begin + t[2]])});
     triangles_of[c] = end - begin - 2;
     begin = end;
   }

@@ -1,5 +1,6 @@
-// Reading Wavefront OBJ for load(), info and diff: `v x y z` points and `f` polygons (each corner `i`,
-// `i/t`, `i//n` or `i/t/n`; negative indices count back from the last point). Texture coordinates,
+// Reading Wavefront OBJ for load(), info and diff: `v x y z` points, `f` polygons (each corner `i`,
+// `i/t`, `i//n` or `i/t/n`; negative indices count back from the last point) and `l` polylines (corners `i`
+// or `i/t`): a file of lines is a curve, one of faces a mesh, one with both is refused. Texture coordinates,
 // normals, groups, smoothing and materials are skipped: materials are never opened (a `mtllib` could name
 // any file). Strict: a face corner must name a point already defined, a face has at least three corners
 // and no corner twice, and every number is finite, with the line named otherwise.
@@ -18,6 +19,7 @@ Dataset read_obj(const RegularFile& f) {
   FileStream in(f);
   std::string_view line;
   std::vector<std::size_t> face;
+  bool faces = false, lines = false;
   while (in.line(line)) {
     const auto w = words(line);
     if (w.empty() || w[0].front() == '#') continue;
@@ -28,8 +30,12 @@ Dataset read_obj(const RegularFile& f) {
         throw Error(at + ": 'v' takes x y z, x y z w, or x y z r g b (with an optional w)");
       for (std::size_t k = 4; k < w.size(); ++k) number_word(w[k], at + ": 'v' value " + std::to_string(k));
       d.points.push_back({number_word(w[1], at + ": x"), number_word(w[2], at + ": y"), number_word(w[3], at + ": z")});
-    } else if (w[0] == "f") {
-      if (w.size() < 4) throw Error(at + ": a face has at least three corners");
+    } else if (w[0] == "f" || w[0] == "l") {
+      const bool line_cell = w[0] == "l";
+      (line_cell ? lines : faces) = true;
+      if (lines && faces) throw Error(at + ": the file holds both faces ('f') and lines ('l'): keep one kind");
+      if (line_cell && w.size() < 3) throw Error(at + ": a line has at least two points");
+      if (!line_cell && w.size() < 4) throw Error(at + ": a face has at least three corners");
       face.clear();
       const long long n = static_cast<long long>(d.points.size());
       for (std::size_t k = 1; k < w.size(); ++k) {
@@ -42,13 +48,17 @@ Dataset read_obj(const RegularFile& f) {
       }
       std::vector<std::size_t> sorted = face;
       std::sort(sorted.begin(), sorted.end());
+      // A line may come back to its first point (a closed loop), and nowhere else twice.
+      if (line_cell && face.size() > 2 && face.front() == face.back())
+        sorted.erase(std::find(sorted.begin(), sorted.end(), face.front()));
       if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
-        throw Error(at + ": a face uses one point twice");
+        throw Error(at + (line_cell ? ": a line uses one point twice" : ": a face uses one point twice"));
       d.cell_points.insert(d.cell_points.end(), face.begin(), face.end());
       d.cell_ends.push_back(d.cell_points.size());
     }
-    // Everything else (vt, vn, g, o, s, l, mtllib, usemtl, ...) holds nothing a mesh keeps.
+    // Everything else (vt, vn, g, o, s, mtllib, usemtl, ...) holds nothing a mesh or curve keeps.
   }
+  if (lines) d.shapes = CellShapes::lines;
   return d;
 }
 

@@ -130,3 +130,24 @@ TEST(Thicken, ThicknessIsRelativeToTheSurfacesSize) {
     EXPECT_THROW(develop_surface(p, opt, no_progress()), Error) << scale;
   }
 }
+
+// The progress bar names develop's stages, not the L-system drawn before them (issue 21: "L-system"
+// stayed up through the whole of develop).
+TEST(Develop, ProgressNamesItsStages) {
+  struct Names : Progress {
+    std::vector<std::string> seen;
+    void start(const char* what) override { seen.emplace_back(what); }
+    void rename(const char* what) override { seen.emplace_back(what); }
+  } names;
+  names.start("L-system");
+  std::vector<Polyline> levels;
+  for (int l = 0; l <= 4; ++l) levels.push_back(lsystem::turtle2d(table1::dragon(), {.level = l}, no_progress()));
+  std::vector<const Polyline*> p;
+  for (const Polyline& c : levels) p.push_back(&c);
+  develop_surface(p, {.smooth = 1, .thickness = 0.05}, names);
+  const auto at = [&](const char* name) { return std::find(names.seen.begin(), names.seen.end(), name); };
+  ASSERT_NE(at("developing surface"), names.seen.end());
+  ASSERT_NE(at("thickening"), names.seen.end());
+  EXPECT_LT(at("developing surface"), at("thickening"));
+  EXPECT_NE(names.seen.back(), "L-system");
+}

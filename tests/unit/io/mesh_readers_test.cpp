@@ -7,6 +7,7 @@
 
 #include "io_fixtures.h"
 #include "kernels/geom/error.h"
+#include "kernels/io/dataset_values.h"
 #include "kernels/io/read.h"
 
 using namespace selfsim;
@@ -171,4 +172,40 @@ TEST(ObjRead, NoLineHidesAnother) {
   EXPECT_NE(read_error(write(dir, "sign.obj", "v +-5 0 0\n")).find("is not a number: '+-5'"), std::string::npos);
   EXPECT_NE(read_error(write(dir, "huge.obj", "v 1e309 0 0\n")).find("out of the range of a double"),
             std::string::npos);
+}
+
+// `l` lines are polylines (issue 21: dropped silently, so `info` said 0 cells): a file of them is a curve,
+// a closed one may come back to its first point, and lines beside faces are refused.
+TEST(ObjRead, LinesArePolylines) {
+  TempDir dir;
+  const io::Dataset d =
+      io::read_dataset(write(dir, "l.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nl 1 2 3\nl 3/1 1/1\nl 1 2 3 1\n"));
+  EXPECT_EQ(d.shapes, io::CellShapes::lines);
+  EXPECT_EQ(d.cell_ends, (std::vector<std::size_t>{3, 5, 9}));
+  EXPECT_TRUE(std::holds_alternative<Polyline>(io::dataset_value(d)));
+  EXPECT_NE(read_error(write(dir, "both.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\nl 1 2\n"))
+                .find("line 5: the file holds both"),
+            std::string::npos);
+  EXPECT_NE(read_error(write(dir, "one.obj", "v 0 0 0\nl 1\n")).find("line 2: a line has at least two points"),
+            std::string::npos);
+  EXPECT_NE(read_error(write(dir, "back.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nl 1 2 1 3\n")).find("uses one point twice"),
+            std::string::npos);
+}
+
+// A concave face is cut into triangles inside it (issue 21: fanned from its first corner, reaching outside):
+// an L-shaped hexagon whose first corner sees all others only across the notch. Its triangles' areas sum to
+// the L's, as a fan's do not.
+TEST(ObjRead, ConcaveFacesAreCutInsideThemselves) {
+  TempDir dir;
+  const io::Dataset d =
+      io::read_dataset(write(dir, "l.obj", "v 2 1 0\nv 1 1 0\nv 1 2 0\nv 0 2 0\nv 0 0 0\nv 2 0 0\nf 1 2 3 4 5 6\n"));
+  const Mesh m = io::dataset_mesh(d);
+  ASSERT_EQ(m.triangles.size(), 4u);
+  double area = 0;
+  for (const Triangle& t : m.triangles) {
+    const Vec3 n = area_normal(m, t);
+    EXPECT_GT(n.z, 0);  // each keeps the face's orientation
+    area += 0.5 * norm(n);
+  }
+  EXPECT_NEAR(area, 3, 1e-12);
 }
