@@ -68,7 +68,11 @@ int exclusion_curve(lua_State* L) {
     if (opt.order == exclusion::Order::depth && o.has("scan"))
       throw Error("option 'scan' applies to order = \"breadth\" only (depth first always goes forward)");
     opt.scan = static_cast<exclusion::Scan>(o.enumeration("scan", {"alternate", "forward"}, 0));
-    opt.exclusion = static_cast<exclusion::Mode>(o.enumeration("exclusion", {"exact", "vertex"}, 0));
+    opt.exclusion = static_cast<exclusion::Mode>(o.enumeration("exclusion", {"exact", "vertex", "original"}, 0));
+    if (opt.exclusion == exclusion::Mode::original && opt.order == exclusion::Order::depth)
+      throw Error(
+          "option 'exclusion' = \"original\" splits level by level, as Bowyer's program does: leave out "
+          "order = \"depth\"");
     o.finish();
     opt.validate();
     const Region region = region_of(region_curve);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kernels/exclusion/chain_order.h"
 #include "kernels/exclusion/start_check.h"
 
 namespace selfsim::exclusion {
@@ -78,20 +79,12 @@ void Curves::renumber() {
     first_[i] = static_cast<std::uint32_t>(order.size());
     order.insert(order.end(), c.begin(), c.end());
   }
-  std::vector<std::uint32_t> to(at_.size());
-  for (std::uint32_t k = 0; k < order.size(); ++k) to[order[k]] = k;
-  // In place, through a copy, so that the vectors keep the capacity reserved for the whole run.
-  auto permute = [&](auto& values) {
-    const auto old = values;
-    for (std::uint32_t k = 0; k < order.size(); ++k) values[k] = old[order[k]];
-  };
-  permute(at_);
-  permute(next_);
-  permute(prev_);
-  permute(level_);
-  for (auto* links : {&next_, &prev_})
-    for (std::uint32_t& x : *links)
-      if (x != none) x = to[x];
+  permute(at_, order);
+  permute(next_, order);
+  permute(prev_, order);
+  permute(level_, order);
+  relink(next_, order, none);
+  relink(prev_, order, none);
 }
 
 void Curves::index(double cell) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "kernels/exclusion/curve_net.h"
+#include "kernels/exclusion/original_rule.h"
 #include "kernels/exclusion/start_check.h"
 #include "kernels/geom/check.h"
 
@@ -124,6 +125,7 @@ Normalised normalised(const Region& region) {
 }  // namespace
 
 CurveResult exclusion_curve(const Region& region, const Polyline& start, const CurveOptions& opt, Progress& progress) {
+  if (opt.exclusion == Mode::original) return original_curve(region, start, opt, progress);
   opt.validate();
   const double points = curve_size(start, opt.levels);
   check_budget(working_size(start, opt.levels), opt.budget,

@@ -28,7 +28,7 @@ namespace selfsim::exclusion {
 
 enum class Order { breadth, depth };
 enum class Scan { alternate, forward };
-enum class Mode { exact, vertex };
+enum class Mode { exact, vertex, original };  // original: Bowyer's program point for point (original_rule.h)
 
 struct CurveOptions {
   double radius = 0.1;  // exclusion radius of the first level's splits
