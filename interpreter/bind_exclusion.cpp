@@ -24,8 +24,12 @@ namespace {
 Region region_of(const Polyline& c) {
   std::vector<std::vector<Vec2>> rings;
   for (std::size_t i = 0; i < c.paths(); ++i) {
-    const auto path = c.path(i);
-    if (path.size() > 1 && path.front() != path.back())
+    auto path = c.path(i);
+    // A ring walked by a turtle or a substitution ends a rounding error from its start (the Koch
+    // snowflake): closed, by the rule the writers and develop use, and that last point dropped.
+    if (path.size() > 3 && path.front() != path.back() && closed_path(path))
+      path = path.first(path.size() - 1);
+    else if (path.size() > 1 && path.front() != path.back())
       throw Error("option 'region': " + (c.paths() > 1 ? "path " + std::to_string(i + 1) : std::string("the curve")) +
                   " is open (it ends at {" + number_text(path.back().x) + ", " + number_text(path.back().y) +
                   "}, not at its first point): a region is closed; write polygon { ... }, which closes itself");

@@ -77,8 +77,10 @@ std::variant<Polyline, Polyline3, Mesh> load_value(lua_State* L, const std::stri
   const io::Dataset read = io::read_dataset(file.name(), name);
   std::variant<Polyline, Polyline3, Mesh> value;
   try {
-    value = io::dataset_value(read);
+    value = io::dataset_value(read, RunContext::of(L));
   } catch (const BudgetError&) {
+    throw;
+  } catch (const Cancelled&) {
     throw;
   } catch (const Error& e) {  // what the file holds cannot be a value: say which file, as the readers do
     throw Error("cannot read '" + shown_text(name) + "': " + e.what());

@@ -2,7 +2,8 @@
 // than by their userdata. Lua frees a userdata's block without running its finalizer when the finalizer
 // cannot run (at the C-stack limit every call fails, finalizers too), and a value the block owned would
 // then never be freed and stay counted against --max-points. So the userdata holds only an id; its
-// finalizer releases the id, and a sweep releases every id whose userdata a weak table no longer holds.
+// finalizer releases the id, and a sweep releases every id whose userdata a weak-keyed table no longer
+// holds (gone for good: a weak key outlives its object's finalizer until the next collection).
 #pragma once
 
 #include <cstddef>

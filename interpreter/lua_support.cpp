@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <unordered_set>
 #include <vector>
 
 #include "interpreter/options_reader.h"
@@ -153,13 +154,15 @@ namespace {
 
 constexpr const char* live_key = "selfsim.live";
 
-// Pushes the registry's table id -> userdata, whose values are weak: a collected userdata leaves its slot.
+// Pushes the registry's table userdata -> id, whose keys are weak. Lua clears a weak key only once its
+// object is gone for good, a collection after its finalizer ran or failed (weak values are cleared before
+// finalizers run, while a value awaiting one may still be used by another's finalizer).
 void push_live_table(lua_State* L) {
   if (lua_getfield(L, LUA_REGISTRYINDEX, live_key) == LUA_TTABLE) return;
   lua_pop(L, 1);
   lua_createtable(L, 0, 0);
   lua_createtable(L, 0, 1);
-  lua_pushliteral(L, "v");
+  lua_pushliteral(L, "k");
   lua_setfield(L, -2, "__mode");
   lua_setmetatable(L, -2);
   lua_pushvalue(L, -1);
@@ -179,7 +182,8 @@ void hold_value(lua_State* L, std::uint64_t id) {
   RunContext& run = RunContext::of(L);
   push_live_table(L);
   lua_pushvalue(L, -2);
-  lua_rawseti(L, -2, static_cast<lua_Integer>(id));
+  lua_pushinteger(L, static_cast<lua_Integer>(id));
+  lua_rawset(L, -3);
   lua_pop(L, 1);
   if (LiveValue* v = run.values.find(id)) {
     v->held = true;
@@ -203,12 +207,17 @@ void sweep_values(lua_State* L) {
   RunContext& run = RunContext::of(L);
   run.values.sweep_due = false;
   push_live_table(L);
+  std::unordered_set<std::uint64_t> present;
+  lua_pushnil(L);
+  while (lua_next(L, -2) != 0) {
+    present.insert(static_cast<std::uint64_t>(lua_tointeger(L, -1)));
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
   std::vector<std::uint64_t> gone;
   run.values.each_held([&](std::uint64_t id) {
-    if (lua_rawgeti(L, -1, static_cast<lua_Integer>(id)) == LUA_TNIL) gone.push_back(id);
-    lua_pop(L, 1);
+    if (!present.contains(id)) gone.push_back(id);
   });
-  lua_pop(L, 1);
   for (const std::uint64_t id : gone) release_value(L, id);
 }
 

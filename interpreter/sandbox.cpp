@@ -214,7 +214,7 @@ void warning(void* ud, const char* message, int to_continue) {
   if (to_continue && pending.size() < 4096) return;
   const bool finalizer = pending.rfind("error in __gc", 0) == 0;
   if (finalizer) run.values.sweep_due = true;
-  if (!(finalizer && pending.find("stack overflow") != std::string::npos))
+  if (!(finalizer && pending.find("C stack overflow") != std::string::npos))
     std::fprintf(stderr, "selfsim: warning: %s\n", shown_text(pending, 500).c_str());
   pending.clear();
 }

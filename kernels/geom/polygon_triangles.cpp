@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "kernels/geom/error.h"
@@ -51,8 +52,16 @@ void polygon_triangles(std::span<const Vec3> corners, std::vector<std::array<std
   const Vec3 u = normalized(cross(a, normal)), v = normalized(cross(normal, u));
   std::vector<Vec2> p(n);
   for (std::size_t i = 0; i < n; ++i) p[i] = {dot(corners[i] - corners[0], u), dot(corners[i] - corners[0], v)};
+  // Convex: every corner turns left (or goes straight on) and the turns add up to one turn; a star that
+  // winds twice (a pentagram) turns left everywhere too.
   bool convex = true;
-  for (std::size_t i = 0; i < n && convex; ++i) convex = turn(p[i], p[(i + 1) % n], p[(i + 2) % n]) >= 0;
+  double turning = 0;
+  for (std::size_t i = 0; i < n && convex; ++i) {
+    const Vec2 e = p[(i + 1) % n] - p[i], f = p[(i + 2) % n] - p[(i + 1) % n];
+    convex = cross(e, f) >= 0;
+    turning += std::atan2(cross(e, f), dot(e, f));
+  }
+  convex = convex && std::abs(turning - 2 * std::numbers::pi) < 1e-6;
   if (convex) {
     for (std::size_t k = 1; k + 1 < n; ++k) out.push_back({0, k, k + 1});
     return;

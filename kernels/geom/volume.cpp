@@ -102,17 +102,25 @@ Volume Volume::combine(Kind kind, std::vector<std::shared_ptr<const Volume>> par
   Volume v;
   v.kind = kind;
   v.parts = std::move(parts);
-  for (const auto& p : v.parts)
-    if (p->depth >= max_volume_depth)
-      throw Error("nests volumes more than " + std::to_string(max_volume_depth) +
-                  " deep: give the parts to one call, volume.union{ a, b, c, ... }");
   v.held_bytes = static_cast<double>(sizeof(Volume) + v.parts.capacity() * sizeof(v.parts[0]));
   if (kind == Kind::subtract) v.bounds = v.parts[0]->bounds;
-  for (const auto& p : v.parts) {
-    v.depth = std::max(v.depth, p->depth + 1);
-    if (kind == Kind::unite) v.bounds.add(p->bounds);
-    v.held_bytes = std::min(v.held_bytes + p->held_bytes, 0x1p62);
+  std::unordered_set<const Volume*> counted;  // union{ v, v }: v's bytes once
+  for (std::size_t i = 0; i < v.parts.size(); ++i) {
+    const Volume& p = *v.parts[i];
+    v.depth = std::max(v.depth, p.depth + 1);
+    // A part combined the same way (a union in a union, a difference as a difference's first part) is
+    // flattened into this one when converted; any other is converted by a call of its own.
+    const bool flattened = p.kind == kind && (kind == Kind::unite || i == 0);
+    v.conversion_depth = std::max(v.conversion_depth, p.conversion_depth + (flattened ? 0 : 1));
+    if (kind == Kind::unite) v.bounds.add(p.bounds);
+    if (counted.insert(&p).second) v.held_bytes = std::min(v.held_bytes + p.held_bytes, 0x1p62);
   }
+  if (v.depth > max_volume_depth || v.conversion_depth > max_conversion_depth)
+    throw Error(v.depth > max_volume_depth
+                    ? "nests volumes more than " + std::to_string(max_volume_depth) +
+                          " deep: give the parts to one call, volume.union{ a, b, c, ... }"
+                    : "alternates unions and differences more than " + std::to_string(max_conversion_depth) +
+                          " times deep: combine the unions' parts in one call first");
   return v;
 }
 
@@ -135,14 +143,15 @@ std::vector<const Volume*> combined_parts(const Volume& v) {
       for (std::size_t i = 1; i < (*d)->parts.size(); ++i) keep((*d)->parts[i].get());
     return out;
   }
+  std::unordered_set<const Volume*> opened;  // a union met again adds nothing: union{ v, v } is v
   for (auto p = v.parts.rbegin(); p != v.parts.rend(); ++p) stack.push_back(p->get());
   while (!stack.empty()) {
     const Volume* p = stack.back();
     stack.pop_back();
-    if (p->kind == Volume::Kind::unite)
-      for (auto q = p->parts.rbegin(); q != p->parts.rend(); ++q) stack.push_back(q->get());
-    else
+    if (p->kind != Volume::Kind::unite)
       keep(p);
+    else if (opened.insert(p).second)
+      for (auto q = p->parts.rbegin(); q != p->parts.rend(); ++q) stack.push_back(q->get());
   }
   return out;
 }

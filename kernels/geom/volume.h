@@ -20,6 +20,9 @@ namespace selfsim {
 // A union or difference nested deeper than this is refused: freeing a tree releases it one level at a time,
 // each on the call stack.
 inline constexpr int max_volume_depth = 100000;
+// Unions and differences alternating deeper than this are refused: each alternation is converted by a call
+// of its own (nested unions, and differences of differences, are flattened and cost none).
+inline constexpr int max_conversion_depth = 2000;
 
 struct Volume {
   enum class Kind { box, sphere, mesh, unite, subtract };
@@ -33,6 +36,7 @@ struct Volume {
   BBox3 bounds;                                      // kept when made: a union 20,000 deep is not walked again
   double held_bytes = 0;                             // bytes of the tree (each part as often as it appears)
   int depth = 1;                                     // levels of the tree, at most max_volume_depth
+  int conversion_depth = 0;                          // nested calls converting it (unions in unions flattened)
 
   // Throw Error naming what is wrong ("option 'max' must be above 'min' in every coordinate", "the mesh is not
   // closed: its edge from point 3 to point 7 (in triangle 2) has no other triangle", ...).

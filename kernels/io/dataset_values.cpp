@@ -41,7 +41,7 @@ PolylineT<V> curve(const Dataset& d, V (*point)(const std::array<double, 3>&)) {
 
 }  // namespace
 
-Mesh dataset_mesh(const Dataset& d) {
+Mesh dataset_mesh(const Dataset& d, Progress& progress) {
   Mesh m;
   m.points.reserve(d.points.size());
   for (const auto& p : d.points) m.points.push_back({p[0], p[1], p[2]});
@@ -52,6 +52,7 @@ Mesh dataset_mesh(const Dataset& d) {
   for (std::size_t c = 0; c < d.cell_ends.size(); ++c) {
     const std::size_t end = d.cell_ends[c];
     if (end - begin < 3) throw Error("polygon " + std::to_string(c + 1) + " has fewer than 3 points");
+    if (end - begin > 3 && progress.cancelled()) throw Cancelled();  // a concave face's cutting is quadratic
     corners.clear();
     for (std::size_t k = begin; k < end; ++k) corners.push_back(m.points[d.cell_points[k]]);
     cut.clear();
@@ -73,11 +74,11 @@ Mesh dataset_mesh(const Dataset& d) {
   return m;
 }
 
-std::variant<Polyline, Polyline3, Mesh> dataset_value(const Dataset& d) {
+std::variant<Polyline, Polyline3, Mesh> dataset_value(const Dataset& d, Progress& progress) {
   if (d.shapes == CellShapes::mixed)
     throw Error("it holds cells other than polylines or polygons (vertices, strips, volumes, or both kinds)");
   if (d.cell_ends.empty()) throw Error("it holds no cells (no polylines or polygons)");
-  if (d.shapes == CellShapes::polygons) return dataset_mesh(d);
+  if (d.shapes == CellShapes::polygons) return dataset_mesh(d, progress);
   bool flat = true;
   for (const auto& p : d.points) flat &= p[2] == 0;
   if (flat) return curve<Vec2>(d, [](const std::array<double, 3>& p) { return Vec2{p[0], p[1]}; });

@@ -7,6 +7,7 @@
 
 #include "kernels/geom/mesh.h"
 #include "kernels/geom/polyline.h"
+#include "kernels/geom/progress.h"
 #include "kernels/io/dataset.h"
 
 namespace selfsim::io {
@@ -14,9 +15,9 @@ namespace selfsim::io {
 // The dataset's value: a Polyline when its cells are lines and every z is 0, a Polyline3 for lines
 // otherwise, a Mesh for polygons. Throws Error for mixed cells, a polygon of fewer than 3 points, or a
 // polygon using one point twice.
-std::variant<Polyline, Polyline3, Mesh> dataset_value(const Dataset& d);
+std::variant<Polyline, Polyline3, Mesh> dataset_value(const Dataset& d, Progress& progress = no_progress());
 
 // The dataset's polygons as a mesh (fan triangulation; cell fields repeated on each triangle).
-Mesh dataset_mesh(const Dataset& d);
+Mesh dataset_mesh(const Dataset& d, Progress& progress = no_progress());
 
 }  // namespace selfsim::io

@@ -1,6 +1,7 @@
 // Reading Wavefront OBJ for load(), info and diff: `v x y z` points, `f` polygons (each corner `i`,
 // `i/t`, `i//n` or `i/t/n`; negative indices count back from the last point) and `l` polylines (corners `i`
-// or `i/t`): a file of lines is a curve, one of faces a mesh, one with both is refused. Texture coordinates,
+// or `i/t`): a file of lines alone is a curve; in a file of faces they are the mesh's loose edges, skipped.
+// Texture coordinates,
 // normals, groups, smoothing and materials are skipped: materials are never opened (a `mtllib` could name
 // any file). Strict: a face corner must name a point already defined, a face has at least three corners
 // and no corner twice, and every number is finite, with the line named otherwise.
@@ -20,6 +21,7 @@ Dataset read_obj(const RegularFile& f) {
   std::string_view line;
   std::vector<std::size_t> face;
   bool faces = false, lines = false;
+  std::vector<std::size_t> line_points, line_ends;  // `l` polylines, kept apart from the faces
   while (in.line(line)) {
     const auto w = words(line);
     if (w.empty() || w[0].front() == '#') continue;
@@ -33,7 +35,6 @@ Dataset read_obj(const RegularFile& f) {
     } else if (w[0] == "f" || w[0] == "l") {
       const bool line_cell = w[0] == "l";
       (line_cell ? lines : faces) = true;
-      if (lines && faces) throw Error(at + ": the file holds both faces ('f') and lines ('l'): keep one kind");
       if (line_cell && w.size() < 3) throw Error(at + ": a line has at least two points");
       if (!line_cell && w.size() < 4) throw Error(at + ": a face has at least three corners");
       face.clear();
@@ -46,19 +47,28 @@ Dataset read_obj(const RegularFile& f) {
         i = i < 0 ? n + i : i - 1;
         face.push_back(static_cast<std::size_t>(i));
       }
+      if (line_cell) {  // a polyline may pass a point again, but not stand still on it
+        if (std::adjacent_find(face.begin(), face.end()) != face.end())
+          throw Error(at + ": a line has a zero-length segment (one point twice in a row)");
+        line_points.insert(line_points.end(), face.begin(), face.end());
+        line_ends.push_back(line_points.size());
+        continue;
+      }
       std::vector<std::size_t> sorted = face;
       std::sort(sorted.begin(), sorted.end());
-      // A line may come back to its first point (a closed loop), and nowhere else twice.
-      if (line_cell && face.size() > 2 && face.front() == face.back())
-        sorted.erase(std::find(sorted.begin(), sorted.end(), face.front()));
       if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
-        throw Error(at + (line_cell ? ": a line uses one point twice" : ": a face uses one point twice"));
+        throw Error(at + ": a face uses one point twice");
       d.cell_points.insert(d.cell_points.end(), face.begin(), face.end());
       d.cell_ends.push_back(d.cell_points.size());
     }
     // Everything else (vt, vn, g, o, s, mtllib, usemtl, ...) holds nothing a mesh or curve keeps.
   }
-  if (lines) d.shapes = CellShapes::lines;
+  // A mesh's `l` lines are its loose edges (Blender writes them so): kept only in a file of lines alone.
+  if (lines && !faces) {
+    d.shapes = CellShapes::lines;
+    d.cell_points = std::move(line_points);
+    d.cell_ends = std::move(line_ends);
+  }
   return d;
 }
 

@@ -11,6 +11,7 @@
 // in place, or removed again if the path is not drawn. Errors in the path data of a path that is not drawn
 // do not count; a malformed transform of a drawn path or of an element whose content may be drawn does. A
 // transformed point that is not finite is an error.
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -273,6 +274,20 @@ class SvgParser {
   void end_value() {
     state_ = State::in_tag;
     if (keep_ == Keep::none) return;
+    if (keep_ == Keep::xmlns) {
+      // Illustrator declares namespaces through its DOCTYPE's entities (xmlns="&ns_svg;",
+      // xmlns:i="&ns_ai;"), which are not expanded: such a default namespace counts as undeclared (its
+      // names as SVG), such a prefix as not SVG.
+      std::optional<std::string> uri;
+      try {
+        uri = xml_unescaped(value_, attr_);
+      } catch (const Error&) {
+      }
+      if (uri || attr_ != "xmlns")
+        tag_.namespaces.emplace_back(attr_ == "xmlns" ? "" : attr_.substr(6), uri && *uri == svg_namespace);
+      keep_ = Keep::none;
+      return;
+    }
     std::string v = xml_unescaped(value_, attr_);
     switch (keep_) {
       case Keep::transform:
@@ -288,7 +303,7 @@ class SvgParser {
         tag_.visibility = std::move(v);
         break;
       default:
-        tag_.namespaces.emplace_back(attr_ == "xmlns" ? "" : attr_.substr(6), v == svg_namespace);
+        break;
     }
     keep_ = Keep::none;
   }

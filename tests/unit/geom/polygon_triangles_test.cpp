@@ -52,6 +52,11 @@ TEST(PolygonTriangles, CrossingPolygonsAreRefused) {
   const std::vector<Vec3> bow{{0, 0, 0}, {2, 2, 0}, {2, 0, 0}, {1, 1.5, 0}, {0, 2, 0}};
   std::vector<std::array<std::size_t, 3>> t;
   EXPECT_THROW(polygon_triangles(bow, t), Error);
+  // A pentagram turns left at every corner but winds twice: not convex, and it crosses itself.
+  std::vector<Vec3> pentagram;
+  for (int k = 0; k < 5; ++k)
+    pentagram.push_back({std::cos(4 * std::numbers::pi * k / 5), std::sin(4 * std::numbers::pi * k / 5), 0});
+  EXPECT_THROW(polygon_triangles(pentagram, t), Error);
 }
 
 }  // namespace

@@ -170,6 +170,19 @@ TEST(Volume, NestedUnionsFlattenAndCountEachPartOnce) {
   Volume deep = Volume::box({0, 0, 0}, {1, 1, 1});
   deep.depth = max_volume_depth;
   EXPECT_THROW(Volume::combine(Volume::Kind::unite, {shared(deep), sphere}), Error);
+  // A part shared by both sides, again and again (union{ v, v } 60 times): one part, its bytes once.
+  auto twice = sphere;
+  for (int i = 0; i < 60; ++i) twice = shared(Volume::combine(Volume::Kind::unite, {twice, twice}));
+  EXPECT_EQ(combined_parts(*twice).size(), 1u);
+  EXPECT_LT(twice->bytes(), 100000u);
+  // Unions and differences alternating: each alternation converted by a call of its own, so their depth is
+  // capped (a 60,000-deep alternation crashed the converter's stack).
+  auto mixed = sphere;
+  const auto small = shared(Volume::box({0, 0, 0}, {0.1, 0.1, 0.1}));
+  EXPECT_THROW(for (int i = 0; i <= max_conversion_depth; ++i) mixed =
+                   shared(Volume::combine(i % 2 ? Volume::Kind::unite : Volume::Kind::subtract, {mixed, small})),
+               Error);
+  EXPECT_EQ(mixed->conversion_depth, max_conversion_depth);
 }
 
 TEST(Volume, BoundariesAreCountedAgainstTheBudgetBeforeTheyAreMade) {
