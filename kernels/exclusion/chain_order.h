@@ -9,6 +9,18 @@
 
 namespace selfsim::exclusion {
 
+// The vertices of the chain that starts at `first`, following `next` until `none` or back at `first`.
+inline std::vector<std::uint32_t> chain_vertices(std::uint32_t first, const std::vector<std::uint32_t>& next,
+                                                 std::uint32_t none) {
+  std::vector<std::uint32_t> c;
+  std::uint32_t v = first;
+  do {
+    c.push_back(v);
+    v = next[v];
+  } while (v != none && v != first);
+  return c;
+}
+
 // Reorders values so that entry k holds old entry order[k]: in place, through a copy, so that the vector
 // keeps the capacity reserved for the whole run.
 template <class T>

@@ -187,15 +187,7 @@ std::uint32_t Curves::split(std::uint32_t v, double r, int level, LevelReport& r
   return p;
 }
 
-std::vector<std::uint32_t> Curves::chain(std::size_t i) const {
-  std::vector<std::uint32_t> c;
-  std::uint32_t v = first_[i];
-  do {
-    c.push_back(v);
-    v = next_[v];
-  } while (v != none && v != first_[i]);
-  return c;
-}
+std::vector<std::uint32_t> Curves::chain(std::size_t i) const { return chain_vertices(first_[i], next_, none); }
 
 Polyline Curves::result() const {
   Polyline out;

@@ -38,15 +38,7 @@ Chains::Chains(const Region& region, const Polyline& start, double scale, bool b
   out_.assign(at_.size(), no_vertex);
 }
 
-std::vector<std::uint32_t> Chains::chain(std::size_t i) const {
-  std::vector<std::uint32_t> c;
-  std::uint32_t v = first_[i];
-  do {
-    c.push_back(v);
-    v = next_[v];
-  } while (v != no_vertex && v != first_[i]);
-  return c;
-}
+std::vector<std::uint32_t> Chains::chain(std::size_t i) const { return chain_vertices(first_[i], next_, no_vertex); }
 
 void Chains::renumber() {
   std::vector<std::uint32_t> order(boundary_);  // old numbers in their new order
