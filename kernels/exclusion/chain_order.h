@@ -21,6 +21,17 @@ inline std::vector<std::uint32_t> chain_vertices(std::uint32_t first, const std:
   return c;
 }
 
+// Appends every chain's vertices to `order` (old numbers in their new order), chain after chain, and sets
+// first[i] to where chain i now begins.
+inline void append_chains(std::vector<std::uint32_t>& order, std::vector<std::uint32_t>& first,
+                          const std::vector<std::uint32_t>& next, std::uint32_t none) {
+  for (std::uint32_t& f : first) {
+    const std::vector<std::uint32_t> c = chain_vertices(f, next, none);
+    f = static_cast<std::uint32_t>(order.size());
+    order.insert(order.end(), c.begin(), c.end());
+  }
+}
+
 // Reorders values so that entry k holds old entry order[k]: in place, through a copy, so that the vector
 // keeps the capacity reserved for the whole run.
 template <class T>

@@ -74,11 +74,7 @@ std::uint32_t Curves::add(Vec2 u, Vec2 v, std::uint32_t from, std::uint32_t to) 
 void Curves::renumber() {
   std::vector<std::uint32_t> order;  // old numbers, in their new order
   order.reserve(at_.size());
-  for (std::size_t i = 0; i < curves(); ++i) {
-    const std::vector<std::uint32_t> c = chain(i);
-    first_[i] = static_cast<std::uint32_t>(order.size());
-    order.insert(order.end(), c.begin(), c.end());
-  }
+  append_chains(order, first_, next_, none);
   permute(at_, order);
   permute(next_, order);
   permute(prev_, order);

@@ -43,11 +43,7 @@ std::vector<std::uint32_t> Chains::chain(std::size_t i) const { return chain_ver
 void Chains::renumber() {
   std::vector<std::uint32_t> order(boundary_);  // old numbers in their new order
   for (std::uint32_t v = 0; v < boundary_; ++v) order[v] = v;
-  for (std::size_t i = 0; i < curves(); ++i) {
-    const std::vector<std::uint32_t> c = chain(i);
-    first_[i] = static_cast<std::uint32_t>(order.size());
-    order.insert(order.end(), c.begin(), c.end());
-  }
+  append_chains(order, first_, next_, no_vertex);
   permute(at_, order);
   permute(next_, order);
   permute(level_, order);
