@@ -3,6 +3,7 @@
 // joined by Hermite curves), optionally thickened. A thin adapter over kernels/develop.
 #include "interpreter/bindings.h"
 #include "interpreter/curve_value.h"
+#include "interpreter/growth.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
 #include "interpreter/run_context.h"
@@ -101,11 +102,28 @@ int develop(lua_State* L) {
     std::vector<const Polyline*> stack;
     for (const auto& c : levels) stack.push_back(c.get());
     std::vector<std::string> warnings;
+    double scale = 1;
     push_geometry(L, with_budget(L, [&](const PointBudget& b) {
                     opt.budget = b;
                     warnings.clear();
-                    return develop::develop_surface(stack, opt, RunContext::of(L), &warnings);
+                    return develop::develop_surface(stack, opt, RunContext::of(L), &warnings, &scale);
                   }));
+    // Its levels: the surfaces of the stack's first levels (two at least), scaled as the whole was, so a
+    // growth series does not change size from step to step.
+    double retained = 0;
+    for (const auto& c : levels) retained += static_cast<double>(c->points.size());
+    opt.scale = opt.size > 0 ? scale : 0;
+    attach_growth(L,
+                  Growth{1, static_cast<int>(levels.size()) - 1, "level",
+                         [levels, opt](int k, const PointBudget& b, Progress& p) {
+                           std::vector<const Polyline*> first;
+                           for (int l = 0; l <= k; ++l) first.push_back(levels[static_cast<std::size_t>(l)].get());
+                           develop::DevelopOptions at = opt;
+                           at.budget = b;
+                           if (at.size_level > k) at.size_level = -1;  // the factor is given: the level is not measured
+                           return GrownValue(develop::develop_surface(first, at, p));
+                         }},
+                  retained);
     for (const std::string& w : warnings) {
       const std::string message = recipe_where(L) + "develop: " + w;
       lua_warning(L, message.c_str(), 0);

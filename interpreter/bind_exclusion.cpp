@@ -7,10 +7,12 @@
 
 #include "interpreter/bindings.h"
 #include "interpreter/curve_value.h"
+#include "interpreter/growth.h"
 #include "interpreter/level_reports.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
 #include "interpreter/run_context.h"
+#include "kernels/exclusion/curve_at_level.h"
 #include "kernels/exclusion/discs.h"
 #include "kernels/exclusion/exclusion_curve.h"
 #include "kernels/geom/check.h"
@@ -85,6 +87,13 @@ int exclusion_curve(lua_State* L) {
       return exclusion::exclusion_curve(region, start, opt, RunContext::of(L));
     });
     push_curve(L, std::move(r.curve));
+    // Its levels: its points up to each level (placed points never move).
+    const Held<Polyline> grown = test_curve(L, -1);
+    attach_growth(L, Growth{0, opt.levels, "level", [grown](int k, const PointBudget& b, Progress& p) {
+                              Polyline c = exclusion::curve_at_level(*grown, k, p);
+                              check_budget(budget_size(c), b, "level " + std::to_string(k));
+                              return GrownValue(std::move(c));
+                            }});
     push_report(L, r);
     return 2;
   });

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "interpreter/bindings.h"
+#include "interpreter/growth.h"
 #include "interpreter/level_reports.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
@@ -81,6 +82,7 @@ int exclusion_surface(lua_State* L) {
     opt.radius = o.number("radius", opt.radius);
     opt.factor = o.number("factor", opt.factor);
     opt.levels = static_cast<int>(o.integer("levels", 1, 0, 20));
+    opt.keep_levels = true;  // f:levels() and growth series need no second run
     o.finish();
     opt.validate();
     // The region resolved finer than the last radius: its boundary then bends less than the radius does.
@@ -102,6 +104,18 @@ int exclusion_surface(lua_State* L) {
       return exclusion::exclusion_surface(boundary, start, opt, run);
     });
     push_geometry(L, std::move(r.surface));
+    // Its levels: the meshes the kernel handed back, as they were after each level.
+    double retained = 0;
+    for (const Mesh& m : r.steps) retained += budget_size(m);
+    auto steps = std::make_shared<const std::vector<Mesh>>(std::move(r.steps));
+    attach_growth(L,
+                  Growth{0, opt.levels, "level",
+                         [steps](int k, const PointBudget& b, Progress&) {
+                           const Mesh& m = (*steps)[static_cast<std::size_t>(k)];
+                           check_budget(budget_size(m), b, "level " + std::to_string(k));
+                           return GrownValue(m);
+                         }},
+                  retained);
     push_report(L, r, voxel, boundary.triangles.size(), start.triangles.size());
     return 2;
   });

@@ -4,6 +4,7 @@
 
 #include "interpreter/bindings.h"
 #include "interpreter/curve_value.h"
+#include "interpreter/growth.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
 #include "interpreter/point_reader.h"
@@ -147,6 +148,13 @@ int hoist_iterate(lua_State* L) {
                  opt.budget = b;
                  return hoist::iterate(*p, opt, RunContext::of(L));
                }));
+    // Its generations: the same iteration stopped earlier.
+    attach_growth(L, Growth{0, opt.generations, "generation", [p, opt](int k, const PointBudget& b, Progress& pr) {
+                              hoist::IterateOptions at = opt;
+                              at.generations = k;
+                              at.budget = b;
+                              return GrownValue(hoist::iterate(*p, at, pr));
+                            }});
     return 1;
   });
 }

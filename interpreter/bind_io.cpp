@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "interpreter/bindings.h"
+#include "interpreter/growth.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
 #include "interpreter/parse_text.h"
@@ -24,6 +25,7 @@
 #include "kernels/io/colour.h"
 #include "kernels/io/csv_file.h"
 #include "kernels/io/save.h"
+#include "kernels/io/series_file.h"
 
 namespace selfsim::interp {
 
@@ -210,6 +212,106 @@ void record_saved(lua_State* L, const std::string& name) {
   if (const auto id = file_identity(run, name)) run.saved_files.insert_or_assign(*id, normal);
 }
 
+// Whether every point of v lies in the plane z = 0 (a 2D curve does by construction).
+bool flat(const io::ValueRef& v) {
+  return std::visit(
+      [](const auto* value) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(*value)>, Polyline>) {
+          return true;
+        } else {
+          return std::all_of(value->points.begin(), value->points.end(), [](const Vec3& p) { return p.z == 0; });
+        }
+      },
+      v);
+}
+
+// Records a VTK file or series written, for the run's ParaView view.
+void record_view(lua_State* L, const std::string& name, io::ViewRole role, std::span<const io::ValueRef> steps,
+                 bool series) {
+  io::ViewDataset d;
+  d.file = normal_name(name);
+  d.name = std::filesystem::path(name).filename().string();
+  d.name = d.name.substr(0, d.name.find('.'));
+  d.role = role;
+  d.series = series;
+  d.flat = std::all_of(steps.begin(), steps.end(), flat);
+  if (role != io::ViewRole::region) d.colouring = io::series_colouring(steps);
+  RunContext::of(L).view_datasets.push_back(std::move(d));
+}
+
+bool is_vtk(const io::Format& f) { return f.extension == ".vtp" || f.extension == ".vtu"; }
+
+io::ViewRole role_of(const io::ValueRef& v) {
+  return std::holds_alternative<const Mesh*>(v) ? io::ViewRole::surface : io::ViewRole::curve;
+}
+
+// save(list or value, "growth.pvd" or "growth.vtp.series", opts?): a ParaView time series, one step per
+// entry of the list (times from its `times`, else 0, 1, ...); a value that grew by levels saves its levels.
+int save_series(lua_State* L) {
+  RunContext& run = RunContext::of(L);
+  const std::string name = text_value(L, 2, "argument 2 (the file name)");
+  if (has_growth(L, 1)) {  // a value that grew: its levels
+    push_levels(L, 1);
+    lua_replace(L, 1);
+  } else if (test_any(L, 1)) {  // any other value: a series of one step
+    lua_createtable(L, 1, 0);
+    lua_pushvalue(L, 1);
+    lua_rawseti(L, -2, 1);
+    lua_replace(L, 1);
+  }
+  if (lua_type(L, 1) != LUA_TTABLE)
+    throw Error("a series holds a list of curves or meshes (v:levels(), or { a, b, c }), got " + describe(L, 1));
+  // The list's entries; its one named key may be `times`.
+  const auto n = static_cast<lua_Integer>(lua_rawlen(L, 1));
+  lua_pushnil(L);
+  while (lua_next(L, 1) != 0) {
+    lua_pop(L, 1);
+    const bool listed = lua_isinteger(L, -1) && lua_tointeger(L, -1) >= 1 && lua_tointeger(L, -1) <= n;
+    if (!listed && !(lua_type(L, -1) == LUA_TSTRING && std::string_view(lua_tostring(L, -1)) == "times"))
+      throw Error("a series is a list of curves or meshes with an optional 'times', got the key " + describe(L, -1));
+  }
+  if (n < 1) throw Error("a series needs at least one curve or mesh");
+  std::vector<AnyValue> held;
+  std::vector<io::SeriesStep> steps;
+  for (lua_Integer i = 1; i <= n; ++i) {
+    lua_rawgeti(L, 1, i);
+    std::optional<AnyValue> v = test_any(L, -1);
+    if (!v)
+      throw Error("entry " + std::to_string(i) + " of the series must be a curve or mesh, got " + describe(L, -1));
+    lua_pop(L, 1);
+    steps.push_back({v->ref(), static_cast<double>(i - 1)});
+    held.push_back(std::move(*v));
+  }
+  if (lua_getfield(L, 1, "times") != LUA_TNIL) {
+    if (!lua_istable(L, -1) || list_length(L, -1, "the series' times") != n)
+      throw Error("the series' 'times' must be a list of " + std::to_string(n) + " numbers, one per entry, got " +
+                  describe(L, -1));
+    for (lua_Integer i = 1; i <= n; ++i) {
+      lua_rawgeti(L, -1, i);
+      steps[static_cast<std::size_t>(i - 1)].time = finite_number(L, -1, "entry " + std::to_string(i) + " of 'times'");
+      lua_pop(L, 1);
+    }
+  }
+  lua_pop(L, 1);
+  const io::Format& vtp = *io::find_format(".vtp");
+  io::SaveOptions opt = read_save_options(L, 3, vtp);
+  check_not_saved(L, name);
+  const std::vector<std::string> step_names = io::series_step_names(name, steps.size());
+  for (const std::string& step : step_names) check_not_saved(L, step);
+  opt.budget = run_budget(L);
+  const io::SeriesFiles written = io::save_series(steps, run.config.out_dir, name, opt, run);
+  for (const std::string& step : step_names) record_saved(L, step);
+  record_saved(L, name);
+  std::vector<io::ValueRef> refs;
+  for (const io::SeriesStep& s : steps) refs.push_back(s.value);
+  record_view(L, name, role_of(refs.back()), refs, true);
+  if (!run.config.quiet)
+    std::printf("wrote %s (%zu steps, %s ... %s; %zu points in the last)\n", shown_text(written.series, 4096).c_str(),
+                steps.size(), shown_text(written.steps.front(), 4096).c_str(),
+                shown_text(written.steps.back(), 4096).c_str(), held.back().points());
+  return 0;
+}
+
 // save(volume, "file.ext", opts?): its boundary mesh at the voxel size (a .vdb: the level set of that).
 int save_volume(lua_State* L, const Volume& vol) {
   RunContext& run = RunContext::of(L);
@@ -230,6 +332,10 @@ int save_volume(lua_State* L, const Volume& vol) {
   opt.budget = run_budget(L);
   const std::string written = io::save(&boundary, run.config.out_dir, name, opt, run);
   record_saved(L, name);
+  if (is_vtk(*format)) {
+    const io::ValueRef ref = &boundary;
+    record_view(L, name, io::ViewRole::region, {&ref, 1}, false);
+  }
   if (!run.config.quiet)
     std::printf("wrote %s (a volume's boundary: %zu points)\n", shown_text(written, 4096).c_str(),
                 boundary.points.size());
@@ -249,6 +355,7 @@ int save(lua_State* L) {
       if (!run.config.quiet) std::printf("wrote %s (%zu rows)\n", shown_text(written, 4096).c_str(), rows.size());
       return 0;
     }
+    if (lua_type(L, 2) == LUA_TSTRING && io::is_series_name(lua_tostring(L, 2))) return save_series(L);
     if (lua_type(L, 1) == LUA_TTABLE) {  // save({ a, b }, ...): the group of the list
       push_group(L, 1, "save({...}, ...)");
       lua_replace(L, 1);
@@ -266,6 +373,10 @@ int save(lua_State* L) {
     if (format.extension == ".stl") warn_if_coinciding(L, *std::get<const Mesh*>(v->ref()));
     const std::string written = io::save(v->ref(), run.config.out_dir, name, opt, run);
     record_saved(L, name);
+    if (is_vtk(format)) {
+      const io::ValueRef ref = v->ref();
+      record_view(L, name, role_of(ref), {&ref, 1}, false);
+    }
     // Said as each file is committed, in order with the recipe's own print output: when a later error fails
     // the run, the files it did write were already reported.
     if (!run.config.quiet) std::printf("wrote %s (%zu points)\n", shown_text(written, 4096).c_str(), v->points());

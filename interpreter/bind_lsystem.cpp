@@ -5,6 +5,7 @@
 
 #include "interpreter/bindings.h"
 #include "interpreter/curve_value.h"
+#include "interpreter/growth.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
 #include "interpreter/run_context.h"
@@ -119,6 +120,13 @@ int grammar_curve(lua_State* L) {
                  opt.budget = b;
                  return lsystem::turtle2d(g, opt, run);
                }));
+    // Its levels are the grammar's curves at lower levels, drawn the same way.
+    attach_growth(L, Growth{0, opt.level, "level", [held, opt](int k, const PointBudget& b, Progress& p) {
+                              lsystem::TurtleOptions at = opt;
+                              at.level = k;
+                              at.budget = b;
+                              return GrownValue(lsystem::turtle2d(*held, at, p));
+                            }});
     return 1;
   });
 }

@@ -1,6 +1,7 @@
 // substitute{ path, generator, levels, transforms } -> Curve. A thin adapter over kernels/substitute.
 #include "interpreter/bindings.h"
 #include "interpreter/curve_value.h"
+#include "interpreter/growth.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
 #include "interpreter/run_context.h"
@@ -47,6 +48,14 @@ int make_substitute(lua_State* L) {
                  opt.budget = b;
                  return substitute::substitute(path, generator, opt, run);
                }));
+    // Its levels: the same substitution done fewer times.
+    auto inputs = std::make_shared<const std::pair<Polyline, Polyline>>(path, generator);
+    attach_growth(L, Growth{0, opt.levels, "level", [inputs, opt](int k, const PointBudget& b, Progress& p) {
+                              substitute::SubstituteOptions at = opt;
+                              at.levels = k;
+                              at.budget = b;
+                              return GrownValue(substitute::substitute(inputs->first, inputs->second, at, p));
+                            }});
     return 1;
   });
 }

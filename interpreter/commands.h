@@ -18,6 +18,17 @@ int run_command(const RunConfig& config);
 int diff_command(const std::string& a, const std::string& b, double tol);
 int info_command(const std::string& file);
 
+// `selfsim preview FILE... [-o DIR] [-q]`.
+struct PreviewConfig {
+  std::vector<std::string> files;
+  std::string out_dir;  // empty: each PNG beside its input
+  bool quiet = false;
+};
+// Throws UsageError.
+PreviewConfig parse_preview_arguments(const std::vector<std::string>& args);
+// 0 when every file was drawn; 1 when one could not be read or drawn (one line each), or there is no display.
+int preview_command(const PreviewConfig& config);
+
 // A flag's value as a finite number in [lo, hi]; throws UsageError naming the flag.
 double number_argument(const std::string& flag, const std::string& text, double lo, double hi);
 
@@ -27,5 +38,7 @@ RunConfig parse_run_arguments(const std::vector<std::string>& args);
 // "selfsim run a.lua --set 'name=two words'": the command line of `args`, quoted for a POSIX shell where
 // needed, for messages that suggest the command meant.
 std::string shell_command(const std::vector<std::string>& args);
+// One word for a POSIX shell: as it is when that is safe, else in single quotes.
+std::string shell_word(const std::string& word);
 
 }  // namespace selfsim::interp

@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "interpreter/bindings.h"
+#include "interpreter/growth.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
 #include "interpreter/point_reader.h"
@@ -30,8 +31,10 @@ int curve_length(lua_State* L) {
   lua_pushnumber(L, c->length());
   return 1;
 }
-// c:level(): the construction level a kernel recorded (its uniform `level` field), or nil.
+// c:level(): the construction level a kernel recorded (its uniform `level` field), or nil; c:level(k): the
+// curve at level k (growth.h).
 int curve_level(lua_State* L) {
+  if (lua_gettop(L) >= 2) return value_level(L);
   const Held<Polyline> c = geometry_self<Polyline>(L, "level");
   const Field* level = c->point_fields.find("level");
   if (level != nullptr && level->uniform)

@@ -2,6 +2,7 @@
 // tests compare outputs and a user checks what a run wrote.
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <new>
 #include <optional>
 
@@ -9,10 +10,12 @@
 #include "interpreter/lua_support.h"
 #include "kernels/analysis/dataset_diff.h"
 #include "kernels/geom/error.h"
+#include "kernels/geom/lower_case.h"
 #include "kernels/geom/mesh_check.h"
 #include "kernels/geom/mesh_intersections.h"
 #include "kernels/io/dataset_values.h"
 #include "kernels/io/read.h"
+#include "kernels/io/vdb_read.h"
 
 namespace selfsim::interp {
 
@@ -64,6 +67,27 @@ void print_surface(const io::Dataset& d) {
                 crossing->second + 1, crossing->where.x, crossing->where.y, crossing->where.z);
 }
 
+// `selfsim info FILE.vdb`: what each grid's metadata says (no voxel is read).
+void print_vdb(const std::string& file) {
+  const std::vector<io::VdbGridInfo> grids = io::read_vdb_info(file);
+  std::printf("file: %s\ngrids: %zu\n", shown_text(file, 4096).c_str(), grids.size());
+  for (const io::VdbGridInfo& g : grids) {
+    std::printf("grid: %s\n  class: %s\n  value type: %s\n  voxel size: [%.9g, %.9g, %.9g]\n  active voxels: %llu\n",
+                shown_text(g.name, 200).c_str(), g.grid_class.c_str(), shown_text(g.value_type, 100).c_str(),
+                g.voxel[0], g.voxel[1], g.voxel[2], static_cast<unsigned long long>(g.active_voxels));
+    if (!g.has_bbox) {
+      std::printf("  bbox: none (empty grid)\n");
+      continue;
+    }
+    std::printf("  index bbox: [%lld, %lld, %lld] .. [%lld, %lld, %lld]\n", static_cast<long long>(g.index_min[0]),
+                static_cast<long long>(g.index_min[1]), static_cast<long long>(g.index_min[2]),
+                static_cast<long long>(g.index_max[0]), static_cast<long long>(g.index_max[1]),
+                static_cast<long long>(g.index_max[2]));
+    std::printf("  world bbox: [%.9g, %.9g, %.9g] .. [%.9g, %.9g, %.9g]\n", g.world_min[0], g.world_min[1],
+                g.world_min[2], g.world_max[0], g.world_max[1], g.world_max[2]);
+  }
+}
+
 }  // namespace
 
 int diff_command(const std::string& a, const std::string& b, double tol) {
@@ -80,6 +104,10 @@ int diff_command(const std::string& a, const std::string& b, double tol) {
 
 int info_command(const std::string& file) {
   try {
+    if (lower_case(std::filesystem::path(file).extension().string()) == ".vdb") {
+      print_vdb(file);
+      return 0;
+    }
     const io::Dataset d = io::read_dataset(file);
     std::array<double, 3> lo{}, hi{};
     for (std::size_t i = 0; i < d.points.size(); ++i)

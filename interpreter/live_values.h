@@ -15,9 +15,10 @@ namespace selfsim::interp {
 
 struct LiveValue {
   std::shared_ptr<const void> value;
-  double points = 0;      // counted against --max-points while alive
-  std::size_t bytes = 0;  // C++ memory counted against --max-memory while alive
-  bool held = false;      // a userdata holds it (and its points are counted): until then no sweep takes it
+  double points = 0;                   // counted against --max-points while alive
+  std::size_t bytes = 0;               // C++ memory counted against --max-memory while alive
+  bool held = false;                   // a userdata holds it (and its points are counted): until then no sweep takes it
+  std::shared_ptr<const void> growth;  // how the value grew, level by level, when a kernel said (growth.h)
 };
 
 class LiveValues {

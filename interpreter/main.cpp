@@ -1,4 +1,4 @@
-// The `selfsim` executable: dispatches to run / diff / info.
+// The `selfsim` executable: dispatches to run / diff / info / preview.
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -29,7 +29,13 @@ usage:
                              cell by cell and field by field; T is relative (default 1e-9).
                              Exit 0 same, 1 different, 2 error
   selfsim info FILE          points, cells, bounding box and fields of a geometry file, and for a
-                             surface whether it is a closed manifold
+                             surface whether it is a closed manifold; for a .vdb, each grid's name,
+                             class, value type, voxel size, active voxels and bounding boxes
+  selfsim preview FILE... [-o DIR] [-q]
+                             a PNG picture of each file (.vtp .vtu .svg .stl .obj .ply, and .vdb as its
+                             surface): NAME.png beside it, or in DIR. Curves and flat drawings from above,
+                             anything else shaded from two sides, coloured by the field a ParaView view
+                             uses. Needs an X display; without one it starts Xvfb (apt-get install xvfb)
   selfsim --help | --version
 
 exit codes: 0 success, 1 recipe error, 2 usage error, 130 interrupted
@@ -46,7 +52,7 @@ int main(int argc, char** argv) {
   using namespace selfsim::interp;
   std::vector<std::string> args(argv + 1, argv + argc);
   try {
-    if (args.empty()) throw UsageError("expected a command: run, diff or info");
+    if (args.empty()) throw UsageError("expected a command: run, diff, info or preview");
     const std::string command = args[0];
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     if (command == "--help" || command == "-h" || command == "help") {
@@ -68,6 +74,14 @@ int main(int argc, char** argv) {
     if (command == "info") {
       if (rest.size() != 1) throw UsageError("info expects one file");
       return info_command(rest[0]);
+    }
+    if (command == "preview") {
+      for (const std::string& a : rest)
+        if (a == "--help" || a == "-h") {
+          std::fputs(help, stdout);
+          return 0;
+        }
+      return preview_command(parse_preview_arguments(rest));
     }
     if (command == "diff") {
       std::vector<std::string> files;
@@ -91,7 +105,7 @@ int main(int argc, char** argv) {
       line.insert(line.end(), rest.begin(), rest.end());
       throw UsageError("unknown command '" + command + "'; to run a recipe: " + shell_command(line));
     }
-    const std::string near = suggestion(command, {"run", "diff", "info", "--help", "--version"});
+    const std::string near = suggestion(command, {"run", "diff", "info", "preview", "--help", "--version"});
     throw UsageError("unknown command '" + command + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
   } catch (const UsageError& e) {
     return usage_error(e.what());

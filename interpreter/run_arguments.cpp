@@ -1,5 +1,5 @@
 // Parsing `selfsim run` arguments: RECIPE.lua [-o DIR] [--set key=value]... [--max-points N]
-// [--max-memory SIZE] [--timeout S] [--seed N] [--threads N] [-q].
+// [--max-memory SIZE] [--timeout S] [--seed N] [--threads N] [--no-view] [-q].
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -21,22 +21,20 @@ double number_argument(const std::string& flag, const std::string& text, double 
   return *v;
 }
 
+std::string shell_word(const std::string& a) {
+  const bool plain = !a.empty() && std::all_of(a.begin(), a.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) ||
+           std::string_view("_-.,/=:+@%").find(c) != std::string_view::npos;
+  });
+  if (plain) return a;
+  std::string word = "'";
+  for (char c : a) word += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return word + "'";
+}
+
 std::string shell_command(const std::vector<std::string>& args) {
   std::string line = "selfsim";
-  for (const std::string& a : args) {
-    const bool plain = !a.empty() && std::all_of(a.begin(), a.end(), [](char c) {
-      return std::isalnum(static_cast<unsigned char>(c)) ||
-             std::string_view("_-.,/=:+@%").find(c) != std::string_view::npos;
-    });
-    line += ' ';
-    if (plain) {
-      line += a;
-      continue;
-    }
-    line += '\'';
-    for (char c : a) line += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    line += '\'';
-  }
+  for (const std::string& a : args) line += " " + shell_word(a);
   return line;
 }
 
@@ -58,9 +56,9 @@ double size_argument(const std::string& flag, const std::string& text) {
 }  // namespace
 
 const std::vector<std::string>& run_flags() {
-  static const std::vector<std::string> flags{"-o",           "--output",  "--set",  "--max-points",
-                                              "--max-memory", "--timeout", "--seed", "--threads",
-                                              "-q",           "--quiet",   "--help"};
+  static const std::vector<std::string> flags{"-o",           "--output",  "--set",   "--max-points",
+                                              "--max-memory", "--timeout", "--seed",  "--threads",
+                                              "--no-view",    "-q",        "--quiet", "--help"};
   return flags;
 }
 
@@ -101,6 +99,8 @@ RunConfig parse_run_arguments(const std::vector<std::string>& args) {
       c.seed = *seed;
     } else if (a == "-q" || a == "--quiet")
       c.quiet = true;
+    else if (a == "--no-view")
+      c.view = false;
     else if (!a.empty() && a[0] == '-') {
       const std::string near = suggestion(a, run_flags());
       throw UsageError("unknown option '" + a + "' for run" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));

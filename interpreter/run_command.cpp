@@ -83,6 +83,20 @@ std::string failure_message(lua_State* L, RunContext& run, int status) {
   return message;
 }
 
+// view.py beside the run's VTK outputs (kernels/io/paraview_view.h), unless --no-view: the one command that
+// opens them in ParaView as they are meant to be seen.
+void write_view(const RunContext& run) {
+  if (!run.config.view || run.view_datasets.empty()) return;
+  try {
+    const std::string written = io::write_paraview_view(run.view_datasets, run.config.out_dir, "view.py");
+    if (!run.config.quiet)
+      std::printf("wrote %s (open in ParaView: paraview --script=%s)\n", shown_text(written, 4096).c_str(),
+                  shell_word(written).c_str());
+  } catch (const Error& e) {
+    std::fprintf(stderr, "selfsim: warning: no ParaView view written: %s\n", e.what());
+  }
+}
+
 }  // namespace
 
 int run_command(const RunConfig& config) {
@@ -116,6 +130,7 @@ int run_command(const RunConfig& config) {
     run.reported = true;
     code = interrupted.load() ? 130 : 1;
   } else {
+    write_view(run);
     const std::vector<std::string> read(run.used_params.begin(), run.used_params.end());
     for (const auto& [key, value] : config.sets)
       if (!run.used_params.contains(key)) {

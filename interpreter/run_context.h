@@ -15,6 +15,7 @@
 #include "interpreter/lua_memory.h"
 #include "kernels/geom/budget.h"
 #include "kernels/geom/progress.h"
+#include "kernels/io/paraview_view.h"
 
 namespace selfsim::interp {
 
@@ -28,6 +29,7 @@ struct RunConfig {
   long long seed = 0;                       // math.random seed, in [0, 2^63)
   int threads = 0;                          // worker threads for parallel kernels, 0 = all cores
   bool quiet = false;
+  bool view = true;  // write view.py, a ParaView view of the run's VTK outputs
 };
 
 // Set by the SIGINT handler; checked by the Lua hook and by every kernel's Progress.
@@ -54,6 +56,8 @@ class RunContext : public Progress {
   // by their identity (device, inode), the normal name, for names that differ but open the same file.
   std::map<std::string, std::pair<std::string, std::string>> saved;
   std::map<std::pair<unsigned long long, unsigned long long>, std::string> saved_files;
+  // The VTK files and series written, in order, for the run's ParaView view (paraview_view.h).
+  std::vector<io::ViewDataset> view_datasets;
 
   // What the run's values may still make: --max-points less what live values hold.
   PointBudget budget() const { return {config.max_points, held_points}; }

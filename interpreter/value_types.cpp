@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "interpreter/growth.h"
 #include "interpreter/options_reader.h"
 
 namespace selfsim::interp {
@@ -165,11 +166,9 @@ void push_geometry(lua_State* L, T&& value) {
 
 template <class T>
 void register_geometry(lua_State* L, const std::vector<luaL_Reg>& own) {
-  std::vector<luaL_Reg> methods{{"points", value_points<T>},
-                                {"point", value_point<T>},
-                                {"bbox", value_bbox<T>},
-                                {"fields", value_fields<T>},
-                                {"range", value_range<T>}};
+  std::vector<luaL_Reg> methods{{"points", value_points<T>}, {"point", value_point<T>}, {"bbox", value_bbox<T>},
+                                {"fields", value_fields<T>}, {"range", value_range<T>}, {"levels", value_levels},
+                                {"level", value_level}};
   methods.insert(methods.end(), own.begin(), own.end());
   methods.push_back({nullptr, nullptr});
   register_type<T>(L, ValueType<T>::name, methods.data(), value_tostring<T>);

@@ -48,10 +48,13 @@ TileLayout tile_layout(const Mesh& c, int steps) {
 }
 
 // m scaled about the origin so its largest side, or level size_level's, is opt.size (thicknesses too).
-Mesh scaled(Mesh m, std::span<const Polyline* const> levels, const DevelopOptions& opt) {
+Mesh scaled(Mesh m, std::span<const Polyline* const> levels, const DevelopOptions& opt, double* scaled_by) {
+  if (scaled_by) *scaled_by = 1;
   if (opt.size == 0) return m;
   double side = 0;
-  if (opt.size_level >= 0) {
+  if (opt.scale > 0) {
+    side = opt.size / opt.scale;
+  } else if (opt.size_level >= 0) {
     const Vec2 s = levels[static_cast<std::size_t>(opt.size_level)]->bbox().size();
     side = std::max(s.x, s.y);
   } else {
@@ -59,7 +62,8 @@ Mesh scaled(Mesh m, std::span<const Polyline* const> levels, const DevelopOption
     side = std::max({s.x, s.y, s.z});
   }
   if (!(side > 0)) throw Error("the surface has no extent to scale to option 'size'");
-  const double k = opt.size / side;
+  const double k = opt.scale > 0 ? opt.scale : opt.size / side;
+  if (scaled_by) *scaled_by = k;
   for (Vec3& p : m.points) p = k * p;
   if (const Field* t = m.point_fields.find("thickness")) {
     std::vector<double> v(t->reals().begin(), t->reals().end());
@@ -80,6 +84,8 @@ void DevelopOptions::validate() const {
     throw Error("option 'thickness' must be a finite number, 0 or more, got " + number_text(thickness));
   if (thickness_rate != 0) check_between(thickness_rate, 1e-6, 1, "option 'thickness_rate'");
   if (size != 0) check_between(size, 1e-9, 1e9, "option 'size'");
+  if (!(scale >= 0 && scale < 1e300))
+    throw Error("option 'scale' must be a positive factor, got " + number_text(scale));
   // Options that would otherwise be ignored without a word.
   if (thickness_rate != 0 && thickness == 0) throw Error("option 'thickness_rate' needs a 'thickness' to shrink");
   if (size_level >= 0 && size == 0) throw Error("option 'size_level' needs a 'size' to scale that level to");
@@ -200,7 +206,7 @@ NearOrigin near_origin(std::span<const Polyline* const> levels) {
 }  // namespace
 
 Mesh develop_surface(std::span<const Polyline* const> given, const DevelopOptions& opt, Progress& progress,
-                     std::vector<std::string>* warnings) {
+                     std::vector<std::string>* warnings, double* scaled_by) {
   opt.validate();
   progress.start("developing surface");
   check_stack(given);
@@ -231,7 +237,7 @@ Mesh develop_surface(std::span<const Polyline* const> given, const DevelopOption
       refuse_if_meeting(m, check);
     }
     for (Vec3& p : m.points) p = p + back;
-    return scaled(std::move(m), levels, opt);
+    return scaled(std::move(m), levels, opt, scaled_by);
   }
   if (opt.method == Method::bezier) set_thickness(m, levels, opt);
   const auto t = m.point_fields.find("thickness")->reals();
@@ -243,7 +249,7 @@ Mesh develop_surface(std::span<const Polyline* const> given, const DevelopOption
   ProgressStage thick(progress, built, 0.8);
   Mesh solid = thicken(m, thick);
   for (Vec3& p : solid.points) p = p + back;
-  solid = scaled(std::move(solid), levels, opt);
+  solid = scaled(std::move(solid), levels, opt, scaled_by);
   if (opt.check) {
     // The solid's sheets lie along the surface: where the surface meets itself they do too, so the surface
     // is checked (and refused) only when the solid meets itself; otherwise that is the thickness's doing.

@@ -35,6 +35,8 @@ struct DevelopOptions {
   double thickness_rate = 0;     // factor per level, in [1e-6, 1]; 0 for the curve's own segment ratio
   double size = 0;               // scale the result so its largest side is this (thickness too); 0: as built
   int size_level = -1;           // with size: the level whose curve's larger side becomes `size`; −1: the whole
+  double scale = 0;              // with size: scale by this factor rather than measure one (the earlier steps of a
+                                 // growth series scale as their last did); 0 to measure
   bool check = true;             // refuse a surface that meets itself; warn when the thickened solid does
   PointBudget budget;            // refuse (before subdividing) a result predicted not to fit
 
@@ -51,7 +53,8 @@ double developed_size(std::span<const double> segments, bool closed, const Devel
 // that do (a curve whose levels touch themselves, unshifted and unsmoothed, does); and when the thickened
 // solid meets itself, its thickness is too large for the narrowest gap between the surface's parts, which
 // `warnings` (if given) says, naming where.
+// `scaled_by`, if given, receives the factor the result was scaled by for option `size` (1 without it).
 Mesh develop_surface(std::span<const Polyline* const> levels, const DevelopOptions& opt, Progress& progress,
-                     std::vector<std::string>* warnings = nullptr);
+                     std::vector<std::string>* warnings = nullptr, double* scaled_by = nullptr);
 
 }  // namespace selfsim::develop

@@ -108,9 +108,14 @@ void SurfaceOptions::validate() const {
   check_range(levels, 0, 20, "option 'levels'");
 }
 
-double surface_size(const Mesh& start, int levels) {
+double surface_size(const Mesh& start, int levels, bool keep_levels) {
   const Counts c = grown(counts(start), levels);
-  return c.points + working_points_per_triangle * c.triangles;
+  double kept = 0;
+  for (int l = 0; keep_levels && l < levels; ++l) {
+    const Counts step = grown(counts(start), l);
+    kept += step.points + step.triangles;
+  }
+  return c.points + working_points_per_triangle * c.triangles + kept;
 }
 
 SurfaceResult exclusion_surface(const Mesh& boundary, const Mesh& start, const SurfaceOptions& opt,
@@ -119,7 +124,7 @@ SurfaceResult exclusion_surface(const Mesh& boundary, const Mesh& start, const S
   start.validate();
   boundary.validate();
   const Counts final_counts = grown(counts(start), opt.levels);
-  check_budget(surface_size(start, opt.levels), opt.budget,
+  check_budget(surface_size(start, opt.levels, opt.keep_levels), opt.budget,
                "levels = " + std::to_string(opt.levels) + " (" + count_text(final_counts.triangles) +
                    " triangles, each " + count_text(working_points_per_triangle) +
                    " budget points with its working memory)");
@@ -145,6 +150,13 @@ SurfaceResult exclusion_surface(const Mesh& boundary, const Mesh& start, const S
 
   Surfaces s(local_boundary, local_start, final_counts.points, final_counts.triangles);
   SurfaceResult result;
+  // In the caller's coordinates, the start points exactly as given.
+  auto in_place = [&](Mesh m) {
+    for (std::size_t i = 0; i < m.points.size(); ++i)
+      m.points[i] = i < start.points.size() ? start.points[i] : n.from(m.points[i]);
+    if (!m.finite()) throw Error("the exclusion surface has non-finite points");
+    return m;
+  };
   double r = opt.radius * n.scale;
   for (int level = 1; level <= opt.levels; ++level, r *= opt.factor) {
     const auto begun = std::chrono::steady_clock::now();
@@ -154,16 +166,13 @@ SurfaceResult exclusion_surface(const Mesh& boundary, const Mesh& start, const S
             .c_str());
     progress.step(0);
     LevelReport report;
+    if (opt.keep_levels) result.steps.push_back(in_place(s.result()));
     s.subdivide(level, r);
     s.grow(r, report, progress);
     report.seconds = since(begun);
     result.levels.push_back(report);
   }
-  result.surface = s.result();
-  // Back to the caller's coordinates, the start points exactly as given.
-  for (std::size_t i = 0; i < result.surface.points.size(); ++i)
-    result.surface.points[i] = i < start.points.size() ? start.points[i] : n.from(result.surface.points[i]);
-  if (!result.surface.finite()) throw Error("the exclusion surface has non-finite points");
+  result.surface = in_place(s.result());
   return result;
 }
 

@@ -28,9 +28,10 @@
 namespace selfsim::exclusion {
 
 struct SurfaceOptions {
-  double radius = 0.1;  // exclusion radius of the first level
-  double factor = 0.8;  // radius multiplied by this at each level, in (0, 1]
-  int levels = 1;       // levels of splitting, each making four triangles of one, in [0, 20]
+  double radius = 0.1;       // exclusion radius of the first level
+  double factor = 0.8;       // radius multiplied by this at each level, in (0, 1]
+  int levels = 1;            // levels of splitting, each making four triangles of one, in [0, 20]
+  bool keep_levels = false;  // hand back the surface as it was after each level (SurfaceResult::steps)
   PointBudget budget;
 
   void validate() const;
@@ -40,10 +41,13 @@ struct SurfaceResult {
   Mesh surface;  // point field `level` (0: a start point); face fields `level` (the oldest corner's) and
                  // `surface` (from 1: the start's face-connected pieces, in order)
   std::vector<LevelReport> levels;
+  std::vector<Mesh> steps;  // with keep_levels: the surface after levels 0 (the start), 1, ..., levels − 1, with
+                            // the same fields (the last level is `surface`)
 };
 
-// Points of the result and working memory, in budget points, for `levels` levels grown from `start`.
-double surface_size(const Mesh& start, int levels);
+// Points of the result and working memory, in budget points, for `levels` levels grown from `start` (and,
+// with keep_levels, the points and triangles of the earlier levels' meshes).
+double surface_size(const Mesh& start, int levels, bool keep_levels = false);
 
 // Grows the surfaces from `start` inside the closed, outward-oriented triangle mesh `boundary`. Throws Error
 // for a start that is not inside, crosses itself or is not a manifold, and for options out of range.

@@ -1,5 +1,6 @@
 #include "kernels/io/output_file.h"
 
+#include <dirent.h>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -44,6 +45,35 @@ std::string temporary_name(const std::string& leaf) {
 
 }  // namespace
 
+// Opens root/folder for writing, creating the folders on the way one by one and never following a link
+// below root.
+static int open_folder(const std::filesystem::path& root, const std::filesystem::path& folder) {
+  std::error_code ec;
+  std::filesystem::create_directories(root, ec);
+  int dir = ::open(root.c_str(), O_DIRECTORY | O_RDONLY | O_CLOEXEC);
+  if (dir < 0)
+    throw Error("cannot open the output folder '" + root.string() + "': " + (ec ? ec.message() : system_error()));
+  std::filesystem::path walked = root;
+  for (const auto& part : folder) {
+    walked /= part;
+    if (::mkdirat(dir, part.c_str(), 0777) != 0 && errno != EEXIST) {
+      ::close(dir);
+      throw Error("cannot create folder '" + walked.string() + "': " + system_error());
+    }
+    const int next = ::openat(dir, part.c_str(), O_DIRECTORY | O_NOFOLLOW | O_RDONLY | O_CLOEXEC);
+    const int err = errno;
+    ::close(dir);
+    if (next < 0) {
+      if (err == ELOOP || err == ENOTDIR)
+        throw Error("'" + walked.string() +
+                    "' is a symbolic link or not a folder: selfsim writes only inside the output folder");
+      throw Error("cannot open folder '" + walked.string() + "': " + std::strerror(err));
+    }
+    dir = next;
+  }
+  return dir;
+}
+
 OutputFile::OutputFile(const std::filesystem::path& root, const std::string& name) {
   const std::filesystem::path rel = std::filesystem::path(name).lexically_normal();
   if (name.empty() || name.find('\0') != std::string::npos || rel.is_absolute() || rel.empty() ||
@@ -58,26 +88,7 @@ OutputFile::OutputFile(const std::filesystem::path& root, const std::string& nam
   leaf_ = rel.filename().string();
   display_ = (root / rel).string();
 
-  std::error_code ec;
-  std::filesystem::create_directories(root, ec);
-  dir_ = ::open(root.c_str(), O_DIRECTORY | O_RDONLY | O_CLOEXEC);
-  if (dir_ < 0)
-    throw Error("cannot open the output folder '" + root.string() + "': " + (ec ? ec.message() : system_error()));
-  std::filesystem::path walked = root;
-  for (const auto& part : rel.parent_path()) {
-    walked /= part;
-    if (::mkdirat(dir_, part.c_str(), 0777) != 0 && errno != EEXIST)
-      throw Error("cannot create folder '" + walked.string() + "': " + system_error());
-    const int next = ::openat(dir_, part.c_str(), O_DIRECTORY | O_NOFOLLOW | O_RDONLY | O_CLOEXEC);
-    if (next < 0) {
-      if (errno == ELOOP || errno == ENOTDIR)
-        throw Error("'" + walked.string() +
-                    "' is a symbolic link or not a folder: selfsim writes only inside the output folder");
-      throw Error("cannot open folder '" + walked.string() + "': " + system_error());
-    }
-    ::close(dir_);
-    dir_ = next;
-  }
+  dir_ = open_folder(root, rel.parent_path());
   fd_ = ::openat(dir_, ".", O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
   if (fd_ < 0) {  // no O_TMPFILE here: an exclusive named temporary instead
     temporary_ = temporary_name(leaf_);
@@ -168,6 +179,27 @@ void OutputFile::commit() {
   }
   untrack(dir_, temporary_);
   committed_ = true;
+}
+
+// A plain file, not a link or folder (asking the folder where the listing cannot tell).
+static bool regular(int dir, const dirent& e) {
+  if (e.d_type != DT_UNKNOWN) return e.d_type == DT_REG;
+  struct stat st {};
+  return ::fstatat(dir, e.d_name, &st, AT_SYMLINK_NOFOLLOW) == 0 && S_ISREG(st.st_mode);
+}
+
+void remove_files(const std::filesystem::path& root, const std::filesystem::path& folder,
+                  const std::function<bool(const std::string&)>& remove) {
+  const int dir = open_folder(root, folder);
+  DIR* listing = ::fdopendir(::dup(dir));
+  std::vector<std::string> doomed;
+  if (listing != nullptr) {
+    while (const dirent* e = ::readdir(listing))
+      if (regular(dir, *e) && remove(e->d_name)) doomed.emplace_back(e->d_name);
+    ::closedir(listing);
+  }
+  for (const std::string& name : doomed) ::unlinkat(dir, name.c_str(), 0);
+  ::close(dir);
 }
 
 void remove_temporaries() noexcept {

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -45,6 +46,11 @@ class OutputFile {
   std::string buffer_;
   bool committed_ = false;
 };
+
+// Removes the regular files of root/folder (confined as OutputFile's folders are) whose names `remove`
+// picks: a series' step files that its new version no longer names.
+void remove_files(const std::filesystem::path& root, const std::filesystem::path& folder,
+                  const std::function<bool(const std::string&)>& remove);
 
 // Removes the named temporaries of every OutputFile still open: for a process ending without unwinding
 // (the watchdog). Anonymous temporaries need nothing.

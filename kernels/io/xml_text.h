@@ -1,8 +1,10 @@
-// Small pieces shared by the streaming XML scanners of the readers (vtk_header_check.cpp, svg_read.cpp).
+// Small pieces shared by the streaming XML scanners of the readers (vtk_header_check.cpp, svg_read.cpp) and
+// the writers of XML text (series_file.cpp).
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
+#include <string>
 #include <string_view>
 
 namespace selfsim::io {
@@ -19,6 +21,30 @@ inline std::size_t advance_match(std::string_view end, std::size_t matched, char
   for (std::size_t k = std::min(s.size(), end.size()); k > 0; --k)
     if (s.substr(s.size() - k) == end.substr(0, k)) return k;
   return 0;
+}
+
+// Text for an XML attribute value in double quotes.
+inline std::string xml_escaped(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
 }
 
 }  // namespace selfsim::io

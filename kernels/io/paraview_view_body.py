@@ -1,0 +1,208 @@
+
+# ---------------------------------------------------------------------------------------------------------
+# The fixed part of every view.py selfsim writes: everything below reads SELFSIM_VIEW (the header above) and
+# builds the scene with paraview.simple only, so the same file opens in the GUI (paraview --script=view.py)
+# and renders without a window (pvbatch view.py --png view.png).
+# ---------------------------------------------------------------------------------------------------------
+import colorsys
+import math
+import os
+import sys
+
+from paraview.simple import (ColorBy, GetActiveViewOrCreate, GetAnimationScene, GetColorTransferFunction,
+                             GetOpacityTransferFunction, GetScalarBar, OpenDataFile, Render, RenameSource,
+                             SaveScreenshot, Show)
+
+BACKGROUND = [1.0, 1.0, 1.0]
+TEXT = [0.12, 0.12, 0.15]            # dark text: ParaView's default white labels vanish on a white background
+REGION_COLOUR = [0.62, 0.74, 0.86]   # pale blue, drawn see-through so what grew inside shows
+SOLID_COLOURS = [[0.25, 0.40, 0.65], [0.80, 0.45, 0.20], [0.30, 0.60, 0.35], [0.55, 0.35, 0.60]]
+
+
+def view_folder():
+    """The folder the datasets are in: the one this file sits in. pvbatch defines __file__; ParaView 5.11's
+    GUI runs --script files through exec() with no __file__ (and sys.argv == ['']), so there the folder the
+    file was written to, recorded in the header, is used. If that folder was moved away since, the working
+    folder is the last guess."""
+    here = globals().get("__file__")
+    if here:
+        return os.path.dirname(os.path.abspath(here))
+    folder = SELFSIM_VIEW["folder"]
+    if os.path.isdir(folder):
+        return folder
+    return os.getcwd()
+
+
+def screenshot_path():
+    """PATH from '--png PATH' or '--png=PATH' on the command line (pvbatch passes its script's arguments
+    through in sys.argv), else None: then this is the GUI, which renders by itself."""
+    args = sys.argv[1:]
+    for i, a in enumerate(args):
+        if a == "--png" and i + 1 < len(args):
+            return args[i + 1]
+        if a.startswith("--png="):
+            return a[len("--png="):]
+    return None
+
+
+def category_colours(n):
+    """n colours that stay apart even for neighbouring classes: each hue is the golden angle (about 137.5
+    degrees) from the previous one, so consecutive classes never get similar hues and the hues never repeat
+    in a cycle, and lightness and saturation step through three levels out of phase with the hue, so even
+    two classes whose hues come close again (every 8 or 13 steps) differ in lightness. With 131 tile
+    classes a smooth ramp would read as bands; this reads as distinct patches."""
+    golden = (3.0 - math.sqrt(5.0)) / 2.0   # the golden angle as a fraction of a turn
+    lightness = [0.50, 0.68, 0.36]
+    saturation = [0.75, 0.55, 0.90]
+    colours = []
+    for i in range(n):
+        hue = (0.58 + i * golden) % 1.0      # start at a blue so a few classes look calm
+        r, g, b = colorsys.hls_to_rgb(hue, lightness[i % 3], saturation[(i // 3) % 3])
+        colours.append([r, g, b])
+    return colours
+
+
+def value_label(v):
+    """Annotation text for a category value: integers without '.0' (tile classes are whole numbers)."""
+    return str(int(v)) if float(v).is_integer() else repr(float(v))
+
+
+def colour_continuous(display, lut, field, low, high):
+    """A perceptual map with the range fixed to the whole run's range, so that a time series does not
+    rescale at each step (a level 2 in step 1 has the same colour as a level 2 in step 5)."""
+    if high <= low:                           # a constant field: give the map some width
+        low, high = low - 0.5, high + 0.5
+    lut.ApplyPreset("Viridis (matplotlib)", True)
+    lut.AutomaticRescaleRangeMode = "Never"
+    lut.RescaleTransferFunction(low, high)
+    opacity = GetOpacityTransferFunction(field, display, separate=True)
+    opacity.RescaleTransferFunction(low, high)
+
+
+def colour_categorical(lut, categories):
+    """One annotation and one colour per category: ParaView draws each value in its own colour and the
+    scalar bar lists the classes instead of a ramp."""
+    annotations, colours = [], []
+    for value, rgb in zip(categories, category_colours(len(categories))):
+        annotations += [value_label(value), value_label(value)]
+        colours += rgb
+    # Annotations first, then the switch: the GUI, seeing a categorical map with no annotations, would
+    # otherwise stop the script with a dialog offering to make them from the data.
+    lut.Annotations = annotations
+    lut.IndexedColors = colours
+    lut.AnnotationsInitialized = 1
+    lut.InterpretValuesAsCategories = 1
+
+
+def style_scalar_bar(bar, title, index, count, categories):
+    """Bars side by side along the right edge, dark text, the field's name as the title."""
+    bar.Title = title
+    bar.ComponentTitle = ""
+    bar.TitleColor = TEXT
+    bar.LabelColor = TEXT
+    bar.TitleFontSize = 16
+    bar.LabelFontSize = 14
+    bar.RangeLabelFormat = "%-#.4g"      # 256 rather than ParaView's 2.6e+02 at the ends
+    bar.WindowLocation = "Any Location"
+    bar.Orientation = "Vertical"
+    bar.ScalarBarLength = 0.8 if count == 1 else max(0.25, 0.85 / count)
+    bar.Position = [0.90, 0.1] if count == 1 else [0.90, 0.05 + (count - 1 - index) * 0.9 / count]
+    if categories and len(categories) > 40:
+        # Every class would get a label too small to read; the colours still tell the classes apart.
+        bar.DrawAnnotations = 0
+    bar.Visibility = 1
+
+
+def main():
+    folder = view_folder()
+    png = screenshot_path()
+    view = GetActiveViewOrCreate("RenderView")
+    if png:
+        # pvbatch: lay the view out at the picture's size, so fonts and bars are placed for that size and
+        # not magnified from a small default window.
+        view.ViewSize = [1200, 800]
+    # A light background of this view only (not ParaView's global palette, which the GUI user owns).
+    view.UseColorPaletteForBackground = 0
+    view.Background = BACKGROUND
+    view.OrientationAxesLabelColor = TEXT
+
+    coloured = [d for d in SELFSIM_VIEW["datasets"] if d["field"] is not None and d["role"] != "region"]
+    bars, solid = 0, 0
+    for d in SELFSIM_VIEW["datasets"]:
+        path = os.path.join(folder, d["file"])
+        # OpenDataFile picks the reader from the name: .vtp, .pvd (a Collection) and .vtp.series (JSON).
+        reader = OpenDataFile(path)
+        if reader is None:
+            raise RuntimeError("ParaView cannot open " + path)
+        RenameSource(d["name"], reader)
+        display = Show(reader, view)
+        display.Representation = "Surface"
+
+        if d["role"] == "region":
+            # The volume a surface grew in: a pale see-through shell, one colour, no scalar bar.
+            # No field. (ColorBy(display, None) fails on a file with no arrays at all, as a region's is.)
+            display.ColorArrayName = ["POINTS", ""]
+            display.AmbientColor = REGION_COLOUR
+            display.DiffuseColor = REGION_COLOUR
+            display.Opacity = 0.2
+            display.Specular = 0.0
+            continue
+
+        if d["role"] == "curve":
+            display.LineWidth = 2.5       # one-pixel lines are hard to see at 1200 pixels across
+
+        if d["field"] is None:
+            display.ColorArrayName = ["POINTS", ""]
+            colour = SOLID_COLOURS[solid % len(SOLID_COLOURS)]
+            solid += 1
+            display.AmbientColor = colour
+            display.DiffuseColor = colour
+            continue
+
+        # A map of its own for each dataset: two datasets with a field of the same name ('level') but
+        # different ranges or kinds must not share one.
+        ColorBy(display, (d["association"], d["field"]), separate=True)
+        lut = GetColorTransferFunction(d["field"], display, separate=True)
+        low, high = d["range"]
+        if d["categorical"]:
+            colour_categorical(lut, d["categories"])
+        else:
+            colour_continuous(display, lut, d["field"], low, high)
+        display.SetScalarBarVisibility(view, True)
+        title = d["field"] if len(coloured) == 1 else d["name"] + ": " + d["field"]
+        style_scalar_bar(GetScalarBar(lut, view), title, bars, len(coloured), d["categories"])
+        bars += 1
+
+    # Time series: the animation (the VCR controls in the GUI) steps through the data's own time steps, and
+    # the view opens on the last one, the grown result.
+    scene = GetAnimationScene()
+    scene.UpdateAnimationUsingDataTimeSteps()
+    scene.GoToLast()
+
+    if SELFSIM_VIEW["dimension"] == 2:
+        # Everything lies in z = 0: look straight down, without perspective, and keep the GUI's mouse from
+        # tilting it out of the plane.
+        view.InteractionMode = "2D"
+        view.CameraPosition = [0.0, 0.0, 1.0]
+        view.CameraFocalPoint = [0.0, 0.0, 0.0]
+        view.CameraViewUp = [0.0, 1.0, 0.0]
+        view.CameraParallelProjection = 1
+        view.OrientationAxesVisibility = 0
+    else:
+        # An oblique view from the front right and above, z up: depth reads without hiding the top.
+        view.InteractionMode = "3D"
+        view.CameraPosition = [1.0, -1.4, 0.9]
+        view.CameraFocalPoint = [0.0, 0.0, 0.0]
+        view.CameraViewUp = [0.0, 0.0, 1.0]
+        view.CameraParallelProjection = 0
+        view.OrientationAxesVisibility = 1
+    # Keep that direction, move and zoom to fit what is shown at the current (last) time.
+    view.ResetCamera(False)
+
+    Render(view)
+    if png:
+        SaveScreenshot(png, view, ImageResolution=[1200, 800])
+        print("wrote " + png)
+
+
+main()

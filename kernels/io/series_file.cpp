@@ -1,0 +1,164 @@
+#include "kernels/io/series_file.h"
+
+#include <cmath>
+#include <set>
+
+#include "kernels/geom/check.h"
+#include "kernels/geom/error.h"
+#include "kernels/geom/lower_case.h"
+#include "kernels/io/output_file.h"
+#include "kernels/io/xml_text.h"
+
+namespace selfsim::io {
+
+namespace {
+
+struct SeriesName {
+  std::filesystem::path folder;  // where the series file is, relative to root
+  std::string stem;              // "growth"
+  std::string step_extension;    // ".vtp" or ".vtu"
+  bool json = false;             // .series rather than .pvd
+};
+
+bool ends_with(const std::string& s, const std::string& end) {
+  return s.size() >= end.size() && s.compare(s.size() - end.size(), end.size(), end) == 0;
+}
+
+SeriesName parse_name(const std::string& name) {
+  const std::filesystem::path p(name);
+  const std::string leaf = p.filename().string(), lower = lower_case(leaf);
+  SeriesName n{p.parent_path(), "", ".vtp", false};
+  if (ends_with(lower, ".pvd")) {
+    n.stem = leaf.substr(0, leaf.size() - 4);
+  } else if (ends_with(lower, ".series")) {
+    n.json = true;
+    const std::string inner = lower.substr(0, lower.size() - 7);
+    if (!ends_with(inner, ".vtp") && !ends_with(inner, ".vtu"))
+      throw Error("'" + name +
+                  "': ParaView picks a .series file's reader from the extension before '.series'; name it '" +
+                  leaf.substr(0, leaf.size() - 7) + ".vtp.series' (or .vtu.series)");
+    n.step_extension = inner.substr(inner.size() - 4);
+    n.stem = leaf.substr(0, inner.size() - 4);
+  } else {
+    throw Error("'" + name + "' is not a series name: give it the extension .pvd or .vtp.series");
+  }
+  if (n.stem.empty() || n.stem == "." || n.stem == "..")
+    throw Error("'" + name + "': a series needs a name before its extension, such as 'growth.pvd'");
+  return n;
+}
+
+std::string step_leaf(const SeriesName& n, std::size_t i, std::size_t count) {
+  std::string digits = std::to_string(i);
+  const std::size_t width = std::max<std::size_t>(3, std::to_string(count == 0 ? 0 : count - 1).size());
+  digits.insert(0, width - digits.size(), '0');
+  return n.stem + "_" + digits + n.step_extension;
+}
+
+// Whether `leaf` is named as this series names its steps: stem_DIGITS.ext.
+bool is_step_leaf(const SeriesName& n, const std::string& leaf) {
+  const std::string prefix = n.stem + "_";
+  if (leaf.size() <= prefix.size() + n.step_extension.size() || leaf.compare(0, prefix.size(), prefix) != 0 ||
+      !ends_with(leaf, n.step_extension))
+    return false;
+  const std::string digits = leaf.substr(prefix.size(), leaf.size() - prefix.size() - n.step_extension.size());
+  return digits.find_first_not_of("0123456789") == std::string::npos;
+}
+
+std::string time_text(double t) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", t);
+  return buffer;
+}
+
+std::string pvd_text(const std::vector<std::string>& files, std::span<const SeriesStep> steps) {
+  std::string s =
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      "  <Collection>\n";
+  for (std::size_t i = 0; i < files.size(); ++i)
+    s += "    <DataSet timestep=\"" + time_text(steps[i].time) + "\" group=\"\" part=\"0\" file=\"" +
+         xml_escaped(files[i]) + "\"/>\n";
+  return s + "  </Collection>\n</VTKFile>\n";
+}
+
+// JSON string content: the step names are ours (stem, digits, extension), but the stem is the recipe's.
+std::string json_escaped(const std::string& text) {
+  std::string out;
+  for (unsigned char c : text) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += static_cast<char>(c);
+    } else if (c < 0x20) {
+      char buffer[8];
+      std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
+      out += buffer;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
+}
+
+std::string series_text(const std::vector<std::string>& files, std::span<const SeriesStep> steps) {
+  std::string s = "{\n  \"file-series-version\" : \"1.0\",\n  \"files\" : [\n";
+  for (std::size_t i = 0; i < files.size(); ++i)
+    s += "    { \"name\" : \"" + json_escaped(files[i]) + "\", \"time\" : " + time_text(steps[i].time) + " }" +
+         (i + 1 < files.size() ? ",\n" : "\n");
+  return s + "  ]\n}\n";
+}
+
+}  // namespace
+
+bool is_series_name(const std::string& name) {
+  const std::string lower = lower_case(std::filesystem::path(name).filename().string());
+  return ends_with(lower, ".pvd") || ends_with(lower, ".series");
+}
+
+std::vector<std::string> series_step_names(const std::string& name, std::size_t count) {
+  const SeriesName n = parse_name(name);
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < count; ++i) names.push_back((n.folder / n.stem / step_leaf(n, i, count)).string());
+  return names;
+}
+
+SeriesFiles save_series(std::span<const SeriesStep> steps, const std::filesystem::path& root, const std::string& name,
+                        const SaveOptions& opt, Progress& progress) {
+  const SeriesName n = parse_name(name);
+  if (steps.empty()) throw Error("a series needs at least one step");
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    if (!std::isfinite(steps[i].time))
+      throw Error("the time of step " + std::to_string(i + 1) + " is not a finite number");
+    if (i > 0 && !(steps[i].time > steps[i - 1].time))
+      throw Error("the times of a series must increase: step " + std::to_string(i + 1) + " has " +
+                  number_text(steps[i].time) + " after " + number_text(steps[i - 1].time));
+  }
+  SeriesFiles written;
+  std::vector<std::string> in_series;  // relative to the series file's folder
+  std::set<std::string> leaves;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const std::string leaf = step_leaf(n, i, steps.size());
+    const std::string relative = (std::filesystem::path(n.stem) / leaf).generic_string();
+    try {
+      save(steps[i].value, root, (n.folder / relative).string(), opt, progress);
+    } catch (const Cancelled&) {
+      throw;
+    } catch (const BudgetError&) {
+      throw;
+    } catch (const Error& e) {
+      throw Error("step " + std::to_string(i + 1) + " of '" + name + "': " + e.what());
+    }
+    written.steps.push_back((n.folder / relative).string());
+    in_series.push_back(relative);
+    leaves.insert(leaf);
+  }
+  OutputFile out(root, name);
+  out.write(n.json ? series_text(in_series, steps) : pvd_text(in_series, steps));
+  if (progress.cancelled()) throw Cancelled();
+  out.commit();
+  written.series = out.path();
+  // The old series' steps that this one does not name: only now, once the new series file is in place.
+  remove_files(root, n.folder / n.stem,
+               [&](const std::string& leaf) { return is_step_leaf(n, leaf) && leaves.count(leaf) == 0; });
+  return written;
+}
+
+}  // namespace selfsim::io

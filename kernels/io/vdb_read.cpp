@@ -1,0 +1,267 @@
+// OpenVDB's part of reading .vdb files (see vdb_read.h). Only the file reader and volumeToMesh: a small
+// translation unit next to level_set.cpp, which holds the writing side.
+#include "kernels/io/vdb_read.h"
+
+#include <openvdb/io/File.h>
+#include <openvdb/openvdb.h>
+#include <openvdb/tools/VolumeToMesh.h>
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+
+#include "kernels/geom/error.h"
+#include "kernels/io/child_process.h"
+#include "kernels/io/dataset_pipe.h"
+#include "kernels/io/read_error.h"
+#include "kernels/io/regular_file.h"
+
+namespace selfsim::io {
+
+namespace {
+
+// In a forked child: OpenVDB's registries, and TBB on this thread alone.
+struct ChildSetup {
+  ChildSetup() : one_thread(tbb::global_control::max_allowed_parallelism, 1) {
+    static std::once_flag once;
+    std::call_once(once, [] { openvdb::initialize(); });
+  }
+  tbb::global_control one_thread;
+};
+
+std::string class_name(openvdb::GridClass c) {
+  switch (c) {
+    case openvdb::GRID_LEVEL_SET:
+      return "level set";
+    case openvdb::GRID_FOG_VOLUME:
+      return "fog volume";
+    case openvdb::GRID_STAGGERED:
+      return "staggered";
+    default:
+      return "unknown";
+  }
+}
+
+// A grid's declared in-memory size and active voxel count (metadata that OpenVDB writes with every grid);
+// 0 where the file does not say.
+std::uint64_t meta_count(const openvdb::GridBase& g, const char* key) {
+  if (auto m = g.getMetadata<openvdb::Int64Metadata>(key)) return static_cast<std::uint64_t>(std::max<openvdb::Int64>(m->value(), 0));
+  return 0;
+}
+
+void put_double(PipeOut& out, double v) { out.write(&v, sizeof v); }
+double get_double(PipeIn& in) {
+  double v = 0;
+  in.read(&v, sizeof v);
+  return v;
+}
+std::uint64_t get_count(PipeIn& in, std::uint64_t max) {
+  std::uint64_t n = 0;
+  in.read(&n, sizeof n);
+  if (n > max) throw Error("the OpenVDB reader sent a malformed answer");
+  return n;
+}
+std::string get_name(PipeIn& in) {
+  std::string s(static_cast<std::size_t>(get_count(in, 1 << 16)), '\0');
+  in.read(s.data(), s.size());
+  return s;
+}
+
+// 'E' and a reason, or what `answer` sends after 'D'.
+template <class Answer>
+int in_child(PipeOut& out, const std::string& name, Answer answer) {
+  try {
+    ChildSetup setup;
+    openvdb::io::File file(name);
+    file.open(false);  // read into memory, no delayed loading from a mapped file
+    answer(out, file);
+  } catch (const std::bad_alloc&) {
+    send_failure(out, "out of memory");
+  } catch (const std::exception& e) {
+    send_failure(out, e.what());
+  }
+  return 0;
+}
+
+// Runs `answer` on the opened file in a child, and `receive` on its answer after 'D'.
+template <class Answer, class Receive>
+void read_in_child(const std::filesystem::path& file, Answer answer, Receive receive) {
+  const RegularFile f(file);
+  if (f.size() > read_budget_bytes() / 8)
+    throw Error("the file is " + std::to_string(f.size() >> 20) + " MiB, over the reading limit of " +
+                std::to_string(read_budget_bytes() / 8 >> 20) + " MiB for .vdb files");
+  const std::string name = f.reopen_name(file);
+  ChildLimits limits;
+  limits.what = "the OpenVDB reader";
+  limits.memory_bytes = (std::uint64_t{1} << 30) + read_budget_bytes();
+  limits.seconds = 30 + static_cast<double>(f.size()) / (4 << 20);
+  run_in_child(
+      limits, [&](PipeOut& out) { return in_child(out, name, answer); },
+      [&](PipeIn& in) {
+        char kind = 0;
+        in.read(&kind, 1);
+        if (kind == 'E') throw Error(get_name(in).substr(0, 4096));
+        if (kind != 'D') throw Error("the OpenVDB reader sent a malformed answer");
+        receive(in);
+      });
+}
+
+template <class Read>
+auto reading(const std::filesystem::path& file, Read read) {
+  try {
+    return read();
+  } catch (const std::bad_alloc&) {
+    throw Error(cannot_read(file, "out of memory"));
+  } catch (const std::exception& e) {
+    const std::string message = e.what();
+    if (message.rfind("cannot read '", 0) == 0) throw;
+    throw Error(cannot_read(file, message));
+  }
+}
+
+void send_info(PipeOut& out, openvdb::io::File& file) {
+  const openvdb::GridPtrVecPtr grids = file.readAllGridMetadata();
+  out.write("D", 1);
+  put_count(out, grids ? grids->size() : 0);
+  if (!grids) return;
+  for (const openvdb::GridBase::Ptr& g : *grids) {
+    put_name(out, g->getName());
+    put_name(out, class_name(g->getGridClass()));
+    put_name(out, g->valueType());
+    const openvdb::Vec3d voxel = g->voxelSize();
+    for (int k = 0; k < 3; ++k) put_double(out, voxel[k]);
+    put_count(out, meta_count(*g, openvdb::GridBase::META_FILE_VOXEL_COUNT));
+    const auto lo = g->getMetadata<openvdb::Vec3IMetadata>(openvdb::GridBase::META_FILE_BBOX_MIN);
+    const auto hi = g->getMetadata<openvdb::Vec3IMetadata>(openvdb::GridBase::META_FILE_BBOX_MAX);
+    const bool has = lo && hi && lo->value().x() <= hi->value().x();
+    out.write(has ? "1" : "0", 1);
+    if (!has) continue;
+    double wlo[3], whi[3];
+    for (int corner = 0; corner < 8; ++corner) {
+      const openvdb::Vec3d index((corner & 1 ? hi : lo)->value().x(), (corner & 2 ? hi : lo)->value().y(),
+                                 (corner & 4 ? hi : lo)->value().z());
+      const openvdb::Vec3d w = g->transform().indexToWorld(index);
+      for (int k = 0; k < 3; ++k) {
+        wlo[k] = corner == 0 ? w[k] : std::min(wlo[k], w[k]);
+        whi[k] = corner == 0 ? w[k] : std::max(whi[k], w[k]);
+      }
+    }
+    for (int k = 0; k < 3; ++k) put_count(out, static_cast<std::uint64_t>(static_cast<std::int64_t>(lo->value()[k])));
+    for (int k = 0; k < 3; ++k) put_count(out, static_cast<std::uint64_t>(static_cast<std::int64_t>(hi->value()[k])));
+    for (int k = 0; k < 3; ++k) put_double(out, wlo[k]);
+    for (int k = 0; k < 3; ++k) put_double(out, whi[k]);
+  }
+}
+
+// Chooses the grid (see vdb_read.h), reads it, meshes it and sends the description and the Dataset.
+void send_surface(PipeOut& out, openvdb::io::File& file) {
+  const openvdb::GridPtrVecPtr grids = file.readAllGridMetadata();
+  openvdb::GridBase::Ptr chosen;
+  if (grids)
+    for (bool level_set : {true, false})
+      for (const openvdb::GridBase::Ptr& g : *grids)
+        if (!chosen && g->isType<openvdb::FloatGrid>() && (!level_set || g->getGridClass() == openvdb::GRID_LEVEL_SET))
+          chosen = g;
+  if (!chosen) throw Error("it holds no float grid (a level set or a fog volume) to draw a surface of");
+  // Refuse what would not fit before reading any voxel: the declared memory, or 4 bytes a voxel.
+  const std::uint64_t declared = std::max(meta_count(*chosen, openvdb::GridBase::META_FILE_MEM_BYTES),
+                                          4 * meta_count(*chosen, openvdb::GridBase::META_FILE_VOXEL_COUNT));
+  if (declared > read_budget_bytes() / 4)
+    throw Error("grid '" + shown(chosen->getName()) + "' declares " + std::to_string(declared >> 20) +
+                " MiB, over the reading limit of " + std::to_string(read_budget_bytes() / 4 >> 20) + " MiB");
+  const openvdb::FloatGrid::Ptr grid = openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid(chosen->getName()));
+  if (!grid) throw Error("grid '" + shown(chosen->getName()) + "' is not a float grid");
+  const openvdb::GridClass c = grid->getGridClass();
+  double iso = 0;
+  std::string what = class_name(c) + " '" + grid->getName() + "'";
+  if (c == openvdb::GRID_FOG_VOLUME) {
+    iso = 0.5;
+    what += " at density 0.5";
+  } else if (c != openvdb::GRID_LEVEL_SET) {
+    bool negative = false;
+    for (auto v = grid->cbeginValueOn(); v && !negative; ++v) negative = *v < 0;
+    if (!negative) {  // an unsigned distance: no inside, so a thin shell around the surface
+      iso = 0.5 * grid->voxelSize()[0];
+      what += " (no negative values: drawn at half a voxel, " + std::to_string(iso) + ")";
+    } else {
+      what += " at 0";
+    }
+  } else {
+    what += " at 0";
+  }
+  if (!std::isfinite(grid->background())) throw Error("grid '" + shown(grid->getName()) + "' has a background that is not finite");
+  std::vector<openvdb::Vec3s> points;
+  std::vector<openvdb::Vec3I> triangles;
+  std::vector<openvdb::Vec4I> quads;
+  openvdb::tools::volumeToMesh(*grid, points, triangles, quads, iso, 0.0);
+  if (points.empty()) throw Error("grid '" + shown(grid->getName()) + "' has no surface at " + std::to_string(iso));
+  out.write("D", 1);
+  put_name(out, grid->getName());
+  put_name(out, what);
+  // The Dataset in dataset_pipe.h's wire format: polygons, points, cell ends, cell points, no fields.
+  put_count(out, static_cast<std::uint64_t>(CellShapes::polygons));
+  put_count(out, points.size());
+  for (const openvdb::Vec3s& p : points)
+    for (int k = 0; k < 3; ++k) put_double(out, p[k]);
+  put_count(out, triangles.size() + quads.size());
+  std::uint64_t end = 0;
+  for (std::size_t i = 0; i < triangles.size(); ++i) put_count(out, end += 3);
+  for (std::size_t i = 0; i < quads.size(); ++i) put_count(out, end += 4);
+  put_count(out, end);
+  for (const openvdb::Vec3I& t : triangles)
+    for (int k = 0; k < 3; ++k) put_count(out, t[k]);
+  for (const openvdb::Vec4I& q : quads)
+    for (int k = 0; k < 4; ++k) put_count(out, q[k]);
+  put_count(out, 0);
+  put_count(out, 0);
+}
+
+}  // namespace
+
+std::vector<VdbGridInfo> read_vdb_info(const std::filesystem::path& file) {
+  return reading(file, [&] {
+    std::vector<VdbGridInfo> grids;
+    read_in_child(file, send_info, [&](PipeIn& in) {
+      const std::uint64_t n = get_count(in, 1 << 16);
+      for (std::uint64_t i = 0; i < n; ++i) {
+        VdbGridInfo g;
+        g.name = get_name(in);
+        g.grid_class = get_name(in);
+        g.value_type = get_name(in);
+        for (double& v : g.voxel) v = get_double(in);
+        g.active_voxels = get_count(in, ~std::uint64_t{0});
+        char has = 0;
+        in.read(&has, 1);
+        g.has_bbox = has == '1';
+        if (g.has_bbox) {
+          for (auto& v : g.index_min) v = static_cast<std::int64_t>(get_count(in, ~std::uint64_t{0}));
+          for (auto& v : g.index_max) v = static_cast<std::int64_t>(get_count(in, ~std::uint64_t{0}));
+          for (double& v : g.world_min) v = get_double(in);
+          for (double& v : g.world_max) v = get_double(in);
+        }
+        grids.push_back(std::move(g));
+      }
+    });
+    return grids;
+  });
+}
+
+VdbSurface read_vdb_surface(const std::filesystem::path& file) {
+  return reading(file, [&] {
+    VdbSurface s;
+    read_in_child(file, send_surface, [&](PipeIn& in) {
+      s.grid = get_name(in);
+      s.what = get_name(in);
+      s.mesh = receive_dataset(in, read_budget_bytes() / 8);
+    });
+    const Dataset& d = s.mesh;
+    if (d.cell_ends.empty() || d.cell_ends.back() != d.cell_points.size())
+      throw Error("the OpenVDB reader sent a malformed answer");
+    for (std::size_t p : d.cell_points)
+      if (p >= d.points.size()) throw Error("OpenVDB made a polygon with a point out of range");
+    return s;
+  });
+}
+
+}  // namespace selfsim::io

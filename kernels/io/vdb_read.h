@@ -1,0 +1,44 @@
+// Reading .vdb files back (`selfsim info`, `selfsim preview`) with OpenVDB, whose headers stay in
+// vdb_read.cpp. OpenVDB trusts the file, so reading goes the way vtk_read.cpp reads VTK files: sizes the
+// file declares are checked against the reading budget first, and OpenVDB then runs in a forked child with
+// an address-space and a time limit (child_process.h), single-threaded (TBB's state does not survive a
+// fork). Every failure is one line, "cannot read 'FILE': REASON".
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "kernels/io/dataset.h"
+
+namespace selfsim::io {
+
+// What `selfsim info` prints of one grid, from the grid's metadata alone (no voxel is read).
+struct VdbGridInfo {
+  std::string name;
+  std::string grid_class;  // "level set", "fog volume", "staggered" or "unknown"
+  std::string value_type;  // OpenVDB's name: "float", "vec3s", ...
+  std::array<double, 3> voxel{};
+  std::uint64_t active_voxels = 0;
+  bool has_bbox = false;  // false for an empty grid
+  std::array<std::int64_t, 3> index_min{}, index_max{};
+  std::array<double, 3> world_min{}, world_max{};
+};
+
+std::vector<VdbGridInfo> read_vdb_info(const std::filesystem::path& file);
+
+// A .vdb file's surface: the first float grid that is a level set (its zero isosurface) or, failing that,
+// the first float grid of any class: a fog volume at density 0.5, another grid at 0 when it holds negative
+// values and at half a voxel when it does not (an unsigned distance, as selfsim writes for an open
+// surface: its surface thickened by half a voxel). Triangles and quads from OpenVDB's volumeToMesh.
+struct VdbSurface {
+  Dataset mesh;         // polygons
+  std::string grid;     // the grid's name
+  std::string what;     // "level set 'surface' at 0", for the user
+};
+
+VdbSurface read_vdb_surface(const std::filesystem::path& file);
+
+}  // namespace selfsim::io

@@ -1,0 +1,96 @@
+#!/bin/bash
+# selfsim preview SELFSIM SRC: a PNG of one file of every format, with DISPLAY unset so that selfsim starts
+# its own Xvfb; each PNG has the expected size, is not blank and has more than one colour (read by VTK's
+# own Python). Then the errors: unknown extension, missing file, no display and no Xvfb. Skips (77) when
+# there is no Xvfb or no VTK Python to check with.
+selfsim=$1
+src=$2
+source "$src/tests/robustness/lib.sh"
+command -v Xvfb >/dev/null || { echo "skipped: no Xvfb"; exit 77; }
+/usr/bin/python3 -c 'import vtkmodules.vtkIOImage' 2>/dev/null || { echo "skipped: no VTK Python"; exit 77; }
+
+cat >"$tmp/all.lua" <<'LUA'
+local curves = require "selfsim.curves"
+local c = curves.dragon():curve{ level = 8 }
+save(c, "curve.vtp"); save(c, "curve.svg")
+local s = develop(curves.dragon(), { levels = 4, smooth = 2 })
+save(s, "mesh.vtp"); save(s, "mesh.vtu"); save(s, "mesh.stl"); save(s, "mesh.obj"); save(s, "mesh.ply")
+save(volume.sphere{ center = {0, 0, 0}, radius = 1 }, "sphere.vdb")
+LUA
+"$selfsim" run "$tmp/all.lua" -o "$tmp/in" -q 2>"$tmp/run_err"
+check "recipe runs" test -s "$tmp/in/sphere.vdb"
+
+# png_ok FILE W H: exists, W x H, more than one colour, not all background.
+png_ok() {
+  /usr/bin/python3 - "$@" <<'PY'
+import sys
+from vtkmodules.vtkIOImage import vtkPNGReader
+from vtkmodules.util.numpy_support import vtk_to_numpy
+path, w, h = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
+r = vtkPNGReader(); r.SetFileName(path); r.Update()
+img = r.GetOutput(); dims = img.GetDimensions()
+if (dims[0], dims[1]) != (w, h): sys.exit(f"{path}: {dims[0]}x{dims[1]}, expected {w}x{h}")
+px = vtk_to_numpy(img.GetPointData().GetScalars())[:, :3]
+colours = {tuple(p) for p in px[:: max(1, len(px) // 200000)]}
+drawn = (px.min(axis=1) < 200).mean()
+if len(colours) < 8 or drawn < 0.01: sys.exit(f"{path}: {len(colours)} colours, {drawn:.3%} drawn")
+PY
+}
+
+sizes="curve.vtp:800:800 curve.svg:800:800 mesh.vtp:1200:600 mesh.vtu:1200:600 mesh.stl:1200:600 mesh.obj:1200:600 mesh.ply:1200:600 sphere.vdb:1200:600"
+for entry in $sizes; do
+  IFS=: read -r name w h <<<"$entry"
+  env -u DISPLAY "$selfsim" preview "$tmp/in/$name" -o "$tmp/png/${name#*.}" >"$tmp/out" 2>"$tmp/err"
+  code=$?
+  png="$tmp/png/${name#*.}/${name%.*}.png"
+  check "$name: exit 0 ($(head -1 "$tmp/err"))" test "$code" = 0
+  check "$name: one line 'wrote $png'" grep -q "^wrote $png ($w""x$h" "$tmp/out"
+  check "$name: picture" png_ok "$png" "$w" "$h"
+done
+
+# Default folder: beside the input.
+env -u DISPLAY "$selfsim" preview "$tmp/in/curve.vtp" >"$tmp/out" 2>"$tmp/err"
+check "beside the input" test -s "$tmp/in/curve.png"
+
+# Several files at once: one line each.
+env -u DISPLAY "$selfsim" preview "$tmp/in/curve.vtp" "$tmp/in/mesh.ply" -o "$tmp/many" >"$tmp/out" 2>"$tmp/err"
+check "two files, two lines" test "$(grep -c '^wrote ' "$tmp/out")" = 2
+
+# No Xvfb process is left behind by this test's runs.
+check "no Xvfb left" bash -c "! pgrep -u $(id -u) -f -- '[X]vfb -displayfd' >/dev/null"
+
+# Errors: one line naming the file, exit 1; usage errors exit 2.
+echo hello >"$tmp/x.txt"
+run_selfsim preview "$tmp/x.txt" -o "$tmp/bad"
+check "unknown extension: exit 1" test "$code" = 1
+check "unknown extension: message" grep -q "^selfsim preview: cannot read '$tmp/x.txt': expected a " "$tmp/err"
+check "unknown extension: one line" test "$(wc -l <"$tmp/err")" = 1
+run_selfsim preview "$tmp/missing.vtp" -o "$tmp/bad"
+check "missing file: exit 1" test "$code" = 1
+check "missing file: message" grep -q "^selfsim preview: cannot read '$tmp/missing.vtp': no such file" "$tmp/err"
+printf 'not a vdb' >"$tmp/bad.vdb"
+run_selfsim preview "$tmp/bad.vdb" -o "$tmp/bad"
+check "crafted .vdb: exit 1, one line" test "$code" = 1 -a "$(wc -l <"$tmp/err")" = 1
+check "crafted .vdb: message" grep -q "^selfsim preview: cannot read '$tmp/bad.vdb': " "$tmp/err"
+check "no PNG for bad inputs" test ! -e "$tmp/bad/x.png" -a ! -e "$tmp/bad/bad.png"
+run_selfsim preview
+check "no file: usage exit 2" test "$code" = 2
+run_selfsim preview "$tmp/in/curve.vtp" --bogus
+check "unknown option: usage exit 2" test "$code" = 2
+
+# No display and no Xvfb on PATH.
+mkdir -p "$tmp/bin"
+env -u DISPLAY PATH="$tmp/bin" "$selfsim" preview "$tmp/in/curve.vtp" -o "$tmp/nox" >"$tmp/out" 2>"$tmp/err"
+code=$?
+check "no Xvfb: exit 1" test "$code" = 1
+check "no Xvfb: message" test "$(cat "$tmp/err")" = \
+  "selfsim preview: no X display and no Xvfb to start one; install it: apt-get install xvfb"
+# A DISPLAY that cannot be connected to is the same as none.
+DISPLAY=:987 PATH="$tmp/bin" "$selfsim" preview "$tmp/in/curve.vtp" -o "$tmp/nox" >"$tmp/out" 2>"$tmp/err"
+check "unreachable DISPLAY, no Xvfb: message" grep -q "no X display and no Xvfb" "$tmp/err"
+
+# info on a .vdb: its grid.
+run_selfsim info "$tmp/in/sphere.vdb"
+check "info .vdb" grep -q "class: level set" "$tmp/out"
+check "info .vdb: world bbox" grep -q "world bbox: " "$tmp/out"
+finish

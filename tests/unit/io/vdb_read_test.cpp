@@ -1,0 +1,76 @@
+// The .vdb reader on files selfsim writes: a sphere's level set meshes back to a closed surface of the
+// sphere's radius; info reads the grid's metadata; bad files are one-line errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "kernels/geom/level_set.h"
+#include "kernels/geom/volume.h"
+#include "kernels/io/vdb_read.h"
+
+namespace selfsim::io {
+namespace {
+
+std::filesystem::path temp(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("selfsim_vdb_read_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  return dir / name;
+}
+
+std::filesystem::path sphere_vdb() {
+  const Mesh m = volume_boundary(Volume::sphere({0, 0, 0}, 1), 1.0 / 32, PointBudget{}, no_progress());
+  const std::filesystem::path file = temp("sphere.vdb");
+  std::ofstream(file, std::ios::binary) << distance_vdb(m, true, 1.0 / 32, "surface", PointBudget{}, no_progress());
+  return file;
+}
+
+TEST(VdbRead, SphereSurfaceHasItsRadius) {
+  const VdbSurface s = read_vdb_surface(sphere_vdb());
+  EXPECT_EQ(s.grid, "surface");
+  EXPECT_EQ(s.what, "level set 'surface' at 0");
+  ASSERT_GT(s.mesh.points.size(), 1000u);
+  EXPECT_EQ(s.mesh.shapes, CellShapes::polygons);
+  for (const auto& p : s.mesh.points) EXPECT_NEAR(std::hypot(p[0], p[1], p[2]), 1.0, 1.0 / 32);
+  EXPECT_EQ(s.mesh.cell_ends.back(), s.mesh.cell_points.size());
+}
+
+TEST(VdbRead, InfoFromMetadata) {
+  const std::vector<VdbGridInfo> grids = read_vdb_info(sphere_vdb());
+  ASSERT_EQ(grids.size(), 1u);
+  EXPECT_EQ(grids[0].name, "surface");
+  EXPECT_EQ(grids[0].grid_class, "level set");
+  EXPECT_EQ(grids[0].value_type, "float");
+  EXPECT_DOUBLE_EQ(grids[0].voxel[0], 1.0 / 32);
+  EXPECT_GT(grids[0].active_voxels, 1000u);
+  ASSERT_TRUE(grids[0].has_bbox);
+  EXPECT_NEAR(grids[0].world_min[0], -1, 0.2);
+  EXPECT_NEAR(grids[0].world_max[2], 1, 0.2);
+}
+
+TEST(VdbRead, BadFilesAreOneLineErrors) {
+  const std::filesystem::path garbage = temp("garbage.vdb");
+  std::ofstream(garbage) << "not a vdb file at all";
+  for (const std::filesystem::path& f : {garbage, temp("missing.vdb")})
+    for (int which = 0; which < 2; ++which) try {
+        if (which == 0) read_vdb_surface(f);
+        else read_vdb_info(f);
+        ADD_FAILURE() << f << " read";
+      } catch (const Error& e) {
+        const std::string m = e.what();
+        EXPECT_EQ(m.rfind("cannot read '" + f.string() + "': ", 0), 0u) << m;
+        EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+      }
+}
+
+TEST(VdbRead, TruncatedFileIsAnError) {
+  const std::filesystem::path whole = sphere_vdb(), cut = temp("cut.vdb");
+  std::ifstream in(whole, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  std::ofstream(cut, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  EXPECT_THROW(read_vdb_surface(cut), Error);
+}
+
+}  // namespace
+}  // namespace selfsim::io
