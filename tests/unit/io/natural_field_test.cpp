@@ -1,0 +1,92 @@
+// The field views and previews colour by: class fields categorical, levels that vary, arclength for a plain
+// curve, ranges over a whole series.
+#include "kernels/io/natural_field.h"
+
+#include <gtest/gtest.h>
+
+using namespace selfsim;
+
+namespace {
+
+Mesh two_triangles() {
+  Mesh m;
+  m.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+  m.triangles = {{0, 1, 2}, {1, 3, 2}};
+  return m;
+}
+
+}  // namespace
+
+TEST(NaturalField, TileClassesAreCategoricalAndWinOverLevel) {
+  Mesh m = two_triangles();
+  m.face_fields.set(int_field("level", {0, 1}));
+  m.face_fields.set(int_field("tile_class", {5, 2}));
+  const io::ValueRef v = &m;
+  const io::Colouring c = io::natural_colouring(io::summarise(v));
+  EXPECT_EQ(c.field, "tile_class");
+  EXPECT_FALSE(c.on_points);
+  EXPECT_TRUE(c.categorical);
+  EXPECT_EQ(c.categories, (std::vector<int>{2, 5}));
+}
+
+TEST(NaturalField, OneSurfaceIdIsPassedOverForTheLevel) {
+  Mesh m = two_triangles();
+  m.face_fields.set(uniform_int("surface", 1));
+  m.face_fields.set(int_field("level", {0, 3}));
+  const io::ValueRef v = &m;
+  const io::Colouring c = io::natural_colouring(io::summarise(v));
+  EXPECT_EQ(c.field, "level");
+  EXPECT_FALSE(c.categorical);
+  EXPECT_EQ(c.max, 3);
+}
+
+TEST(NaturalField, APlainCurveIsColouredByTheArclengthItsFileCarries) {
+  Polyline c = Polyline::single({{0, 0}, {3, 4}, {3, 5}});
+  c.point_fields.set(uniform_int("level", 4));
+  const io::ValueRef v = &c;
+  const io::Colouring col = io::natural_colouring(io::summarise(v));
+  EXPECT_EQ(col.field, "arclength");
+  EXPECT_DOUBLE_EQ(col.max, 6);
+}
+
+TEST(NaturalField, TooManyClassesFallBackToAContinuousMap) {
+  Mesh m;
+  for (int i = 0; i < 300; ++i) {
+    m.points.push_back({double(i), 0, 0});
+    m.points.push_back({double(i), 1, 0});
+    m.points.push_back({double(i) + 0.5, 0, 1});
+    m.triangles.push_back({std::uint32_t(3 * i), std::uint32_t(3 * i + 1), std::uint32_t(3 * i + 2)});
+  }
+  std::vector<std::int32_t> classes(300);
+  for (int i = 0; i < 300; ++i) classes[i] = i;
+  m.face_fields.set(int_field("tile_class", classes));
+  const io::ValueRef v = &m;
+  const io::Colouring c = io::natural_colouring(io::summarise(v));
+  EXPECT_EQ(c.field, "tile_class");
+  EXPECT_FALSE(c.categorical);
+  EXPECT_TRUE(c.categories.empty());
+}
+
+TEST(NaturalField, ASeriesRangeCoversEveryStep) {
+  Polyline a = Polyline::single({{0, 0}, {1, 0}}), b = Polyline::single({{0, 0}, {0.5, 0}, {1, 0}});
+  a.point_fields.set(int_field("level", {0, 0}));
+  b.point_fields.set(int_field("level", {0, 1, 0}));
+  const std::vector<io::ValueRef> steps{&a, &b};
+  const io::Colouring c = io::series_colouring(steps);
+  EXPECT_EQ(c.field, "level");
+  EXPECT_EQ(c.min, 0);
+  EXPECT_EQ(c.max, 1);
+}
+
+TEST(NaturalField, FieldsReadBackFromAFileAreSummarisedAlike) {
+  io::Dataset d;
+  d.shapes = io::CellShapes::polygons;
+  d.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  d.cell_ends = {3};
+  d.cell_points = {0, 1, 2};
+  d.cell_fields["curve"] = {1, {1}};
+  d.point_fields["t"] = {1, {0, 0.5, 1}};
+  const io::Colouring c = io::natural_colouring(io::summarise(d));
+  EXPECT_EQ(c.field, "t");  // one curve id does not vary: the next natural field
+  EXPECT_TRUE(c.on_points);
+}

@@ -1,0 +1,57 @@
+// view.py's header: every dataset with its role, series flag and colouring as Python literals the body
+// reads, names quoted so no file name can end the string, and the body appended.
+#include "kernels/io/paraview_view.h"
+
+#include <gtest/gtest.h>
+
+using namespace selfsim;
+
+namespace {
+
+io::ViewDataset dataset(std::string file, io::ViewRole role, bool flat) {
+  io::ViewDataset d;
+  d.file = file;
+  d.name = file.substr(0, file.find('.'));
+  d.role = role;
+  d.flat = flat;
+  return d;
+}
+
+}  // namespace
+
+TEST(ParaviewView, NamesEachDatasetWithItsColouring) {
+  std::vector<io::ViewDataset> ds{dataset("growth.pvd", io::ViewRole::surface, false),
+                                  dataset("sphere.vtp", io::ViewRole::region, false)};
+  ds[0].series = true;
+  ds[0].colouring = {"tile_class", false, true, 0, 4, {0, 2, 4}};
+  const std::string text = io::paraview_view_text(ds, "/data/out");
+  EXPECT_NE(text.find("\"folder\": \"/data/out\""), std::string::npos);
+  EXPECT_NE(text.find("\"dimension\": 3"), std::string::npos);
+  EXPECT_NE(text.find("{\"file\": \"growth.pvd\", \"name\": \"growth\", \"role\": \"surface\", \"series\": True"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("\"field\": \"tile_class\", \"association\": \"CELLS\", \"categorical\": True"),
+            std::string::npos);
+  EXPECT_NE(text.find("\"categories\": [0, 2, 4]"), std::string::npos);
+  EXPECT_NE(text.find("\"role\": \"region\", \"series\": False,\n         \"field\": None"), std::string::npos);
+  EXPECT_NE(text.find("from paraview.simple import"), std::string::npos);  // the body
+}
+
+TEST(ParaviewView, FlatDatasetsMakeATopView) {
+  std::vector<io::ViewDataset> ds{dataset("a.vtp", io::ViewRole::curve, true)};
+  EXPECT_NE(io::paraview_view_text(ds, "/o").find("\"dimension\": 2"), std::string::npos);
+}
+
+TEST(ParaviewView, QuotesAndBackslashesInNamesStayInsideTheString) {
+  std::vector<io::ViewDataset> ds{dataset("a\"b\\c\n.vtp", io::ViewRole::curve, true)};
+  const std::string text = io::paraview_view_text(ds, "/o");
+  EXPECT_NE(text.find("\"file\": \"a\\\"b\\\\c\\x0a.vtp\""), std::string::npos) << text;
+}
+
+TEST(ParaviewView, NamesThatAreNotUtf8AreLeftOut) {
+  std::vector<io::ViewDataset> ds{dataset("ok.vtp", io::ViewRole::curve, true),
+                                  dataset("bad\xff.vtp", io::ViewRole::curve, true)};
+  const std::string text = io::paraview_view_text(ds, "/o");
+  EXPECT_NE(text.find("ok.vtp"), std::string::npos);
+  EXPECT_EQ(text.find("bad"), std::string::npos);
+}
