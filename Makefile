@@ -4,7 +4,10 @@ SANITIZE_BUILD ?= build-sanitize
 JOBS       ?= $(shell nproc)
 PACKAGES   := cmake g++ make libopenvdb-dev libboost-iostreams-dev liblua5.4-dev libopenmesh-dev libvtk9-dev \
               libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev python3-vtk9 xvfb xauth libgl1-mesa-dri \
-              libglx-mesa0 librsvg2-bin clang-format ghostscript python3-openvdb
+              libglx-mesa0 librsvg2-bin clang-format ghostscript python3-openvdb paraview
+# ParaView's Python modules, unpacked from Debian's python3-paraview (never installed: it conflicts with
+# python3-vtk9, which libvtk9-dev needs) for scripts/pvbatch-selfsim. README: "ParaView and selfsim on one machine".
+PARAVIEW_PYTHON ?= /opt/selfsim/paraview-python
 # Only `make fuzz` installs these (clang with libFuzzer and the sanitizer runtimes); `make test` never does.
 FUZZ_PACKAGES := clang-14 libclang-rt-14-dev
 FUZZ_BUILD ?= build-fuzz
@@ -12,12 +15,35 @@ FUZZ_SECONDS ?= 60
 
 .PHONY: deps build demo test sanitize bench fuzz clean
 
-# Installs only what is missing: one dpkg query when everything is there.
+# Installs only what is missing: one dpkg query when everything is there. Never removes a package (apt's
+# --no-remove); if what is missing would remove an installed python3-paraview, changes nothing and says why.
+# Then unpacks python3-paraview's modules (same version as paraview) into $(PARAVIEW_PYTHON), unless they are
+# there or python3-paraview is installed as a package.
 deps:
 	@missing=$$(for p in $(PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; done); \
 	if [ -n "$$missing" ]; then \
+	  apt-get update -qq || exit 1; \
+	  if dpkg-query -W -f='$${Status}\n' python3-paraview 2>/dev/null | grep -q 'install ok installed' && \
+	     apt-get install -s --no-install-recommends $$missing 2>/dev/null | grep -q '^Remv python3-paraview '; then \
+	    echo "make deps: changed nothing. Installing" $$missing "would remove python3-paraview, which is installed" \
+	         "here and conflicts with python3-vtk9 (libvtk9-dev, which selfsim builds with, needs it). See" \
+	         "README.md, section \"ParaView and selfsim on one machine\"." >&2; \
+	    exit 1; \
+	  fi; \
 	  echo "installing:" $$missing; \
-	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
+	  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends --no-remove $$missing || exit 1; \
+	fi; \
+	pv=$$(dpkg-query -W -f='$${Version}' paraview); \
+	if [ ! -f /usr/lib/python3/dist-packages/paraview/simple.py ] && \
+	   [ "$$(cat $(PARAVIEW_PYTHON)/.selfsim-version 2>/dev/null)" != "$$pv" ]; then \
+	  echo "unpacking python3-paraview $$pv's modules into $(PARAVIEW_PYTHON)"; \
+	  tmp=$$(mktemp -d) && chown _apt "$$tmp" 2>/dev/null; \
+	  ( cd "$$tmp" && { apt-get download -qq python3-paraview=$$pv || { apt-get update -qq && apt-get download -qq python3-paraview=$$pv; }; } && \
+	    dpkg-deb -x python3-paraview_*.deb unpacked && \
+	    rm -rf $(PARAVIEW_PYTHON) && mkdir -p $$(dirname $(PARAVIEW_PYTHON)) && \
+	    mv unpacked/usr/lib/python3/dist-packages $(PARAVIEW_PYTHON) && \
+	    echo "$$pv" > $(PARAVIEW_PYTHON)/.selfsim-version ); \
+	  status=$$?; rm -rf "$$tmp"; exit $$status; \
 	fi
 
 $(BUILD)/CMakeCache.txt:
@@ -26,14 +52,17 @@ $(BUILD)/CMakeCache.txt:
 build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)
 
-# Runs the gallery, then renders each SVG to a PNG beside it (librsvg) for a quick look.
+# Runs the gallery (examples/gallery.lua: one result of each part of selfsim), draws a PNG of each output
+# with `selfsim preview`, and renders the run's ParaView view (out/view.py) to out/view.png with pvbatch.
 demo: deps build
 	rm -rf out
 	$(BUILD)/selfsim run examples/gallery.lua -o out
-	@for f in out/*.svg; do rsvg-convert -w 400 -b white "$$f" -o "$${f%.svg}.png"; done
+	$(BUILD)/selfsim preview out/*.svg out/*.vtp out/*.stl out/*.pvd
+	scripts/pvbatch-selfsim out/view.py --png out/view.png
 	@echo
-	@echo "Done: out/ holds .vtp files (open them in ParaView, colour by 'arclength'), .svg files (any"
-	@echo "browser) and .png previews of each: $$(ls out | wc -l) files in $$(pwd)/out"
+	@echo "Done: $$(ls out | wc -l) files in $$(pwd)/out: .png pictures of everything, .svg for a browser, .vtp and"
+	@echo ".pvd time series for ParaView, .stl for a slicer. Open the whole gallery in ParaView, as designed:"
+	@echo "    scripts/pvbatch-selfsim --gui out/view.py     (or: paraview --script=out/view.py)"
 
 test: deps build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)

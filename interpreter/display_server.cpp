@@ -116,8 +116,8 @@ DisplayServer::DisplayServer() {
     ::dup2(log >= 0 ? log : null, 2);
     ::fcntl(ready[1], F_SETFD, 0);  // -displayfd must survive exec
     const std::string fd = std::to_string(ready[1]);
-    const char* argv[] = {xvfb.c_str(), "-displayfd", fd.c_str(), "-screen", "0", "1280x1024x24", "-nolisten", "tcp",
-                          nullptr};
+    const char* argv[] = {xvfb.c_str(),   "-displayfd", fd.c_str(), "-screen", "0",
+                          "1280x1024x24", "-nolisten",  "tcp",      nullptr};
     ::execv(xvfb.c_str(), const_cast<char* const*>(argv));
     ::_exit(127);
   }

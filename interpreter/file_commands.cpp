@@ -15,6 +15,7 @@
 #include "kernels/geom/mesh_intersections.h"
 #include "kernels/io/dataset_values.h"
 #include "kernels/io/read.h"
+#include "kernels/io/series_file.h"
 #include "kernels/io/vdb_read.h"
 
 namespace selfsim::interp {
@@ -102,11 +103,19 @@ int diff_command(const std::string& a, const std::string& b, double tol) {
   }
 }
 
-int info_command(const std::string& file) {
+int info_command(const std::string& given) {
   try {
-    if (lower_case(std::filesystem::path(file).extension().string()) == ".vdb") {
-      print_vdb(file);
+    if (lower_case(std::filesystem::path(given).extension().string()) == ".vdb") {
+      print_vdb(given);
       return 0;
+    }
+    // A time series: its steps, then the last step (the grown result) as any file.
+    std::string file = given;
+    if (io::is_series_name(given)) {
+      const std::vector<std::filesystem::path> steps = io::read_series_steps(given);
+      std::printf("series: %s, %zu steps, %s ... %s; the last:\n", shown_text(given, 4096).c_str(), steps.size(),
+                  shown_text(steps.front().string(), 4096).c_str(), shown_text(steps.back().string(), 4096).c_str());
+      file = steps.back().string();
     }
     const io::Dataset d = io::read_dataset(file);
     std::array<double, 3> lo{}, hi{};

@@ -15,13 +15,14 @@
 #include "kernels/io/preview_png.h"
 #include "kernels/io/read.h"
 #include "kernels/io/read_error.h"
+#include "kernels/io/series_file.h"
 #include "kernels/io/vdb_read.h"
 
 namespace selfsim::interp {
 
 namespace {
 
-const char* const formats = ".vtp, .vtu, .svg, .stl, .obj, .ply or .vdb";
+const char* const formats = ".vtp, .vtu, .svg, .stl, .obj, .ply, .vdb, .pvd or .series";
 
 bool known(const std::string& ext) {
   for (const char* e : {".vtp", ".vtu", ".svg", ".stl", ".obj", ".ply", ".vdb"})
@@ -67,26 +68,36 @@ int preview_command(const PreviewConfig& config) {
   for (const std::string& name : config.files) {
     const std::filesystem::path file(name);
     try {
-      const std::string ext = lower_case(file.extension().string());
-      if (!known(ext)) throw Error(io::cannot_read(file, std::string("expected a ") + formats + " file"));
+      // A time series is drawn as its last step, the grown result.
+      const bool series = io::is_series_name(name);
+      std::string stem = file.stem().string(), title = file.filename().string(), note;
+      std::filesystem::path source = file;
+      if (series) {
+        const std::vector<std::filesystem::path> steps = io::read_series_steps(file);
+        source = steps.back();
+        stem = stem.substr(0, stem.find('.'));
+        title += " (last of " + std::to_string(steps.size()) + " steps)";
+        note = ", the last of " + std::to_string(steps.size()) + " steps";
+      }
+      const std::string ext = lower_case(source.extension().string());
+      if (!known(ext)) throw Error(io::cannot_read(source, std::string("expected a ") + formats + " file"));
       io::Dataset d;
-      std::string note;
       if (ext == ".vdb") {
-        io::VdbSurface s = io::read_vdb_surface(file);
+        io::VdbSurface s = io::read_vdb_surface(source);
         d = std::move(s.mesh);
         note = ", " + s.what;
       } else {
-        d = io::read_dataset(file);
+        d = io::read_dataset(source);
       }
       if (!display) display = std::make_unique<DisplayServer>();
       // NAME.png beside the input or in DIR; a second input of the same name in this run gets NAME_EXT.png.
-      const std::filesystem::path folder = config.out_dir.empty() ? file.parent_path() : std::filesystem::path(config.out_dir);
-      std::string leaf = file.stem().string() + ".png";
+      const std::filesystem::path folder =
+          config.out_dir.empty() ? file.parent_path() : std::filesystem::path(config.out_dir);
+      std::string leaf = stem + ".png";
       const std::string key = (folder / leaf).lexically_normal().string();
-      if (!written.insert(key).second) leaf = file.stem().string() + "_" + ext.substr(1) + ".png";
+      if (!written.insert(key).second) leaf = stem + "_" + lower_case(file.extension().string()).substr(1) + ".png";
       const io::PreviewSize size = io::preview_size(d);
-      const std::string out = io::write_preview_png(d, file.filename().string(), folder.empty() ? "." : folder, leaf,
-                                                    no_progress());
+      const std::string out = io::write_preview_png(d, title, folder.empty() ? "." : folder, leaf, no_progress());
       if (!config.quiet)
         std::printf("wrote %s (%dx%d%s)\n", shown_text(out, 4096).c_str(), size.width, size.height,
                     shown_text(note, 300).c_str());

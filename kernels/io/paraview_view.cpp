@@ -58,6 +58,7 @@ std::string dataset_text(const ViewDataset& d) {
   const Colouring& c = d.colouring;
   std::string s = "        {\"file\": " + python_string(d.file) + ", \"name\": " + python_string(d.name) +
                   ", \"role\": \"" + role_name(d.role) + "\", \"series\": " + (d.series ? "True" : "False") +
+                  ", \"flat\": " + (d.flat ? "True" : "False") +
                   ",\n         \"field\": " + (c.field.empty() ? "None" : python_string(c.field)) +
                   ", \"association\": \"" + (c.on_points ? "POINTS" : "CELLS") +
                   "\", \"categorical\": " + (c.categorical ? "True" : "False") + ", \"range\": [" +

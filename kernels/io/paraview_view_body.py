@@ -9,9 +9,9 @@ import math
 import os
 import sys
 
-from paraview.simple import (ColorBy, GetActiveViewOrCreate, GetAnimationScene, GetColorTransferFunction,
-                             GetOpacityTransferFunction, GetScalarBar, OpenDataFile, Render, RenameSource,
-                             SaveScreenshot, Show)
+from paraview.simple import (AssignViewToLayout, ColorBy, CreateLayout, CreateView, GetActiveViewOrCreate,
+                             GetAnimationScene, GetColorTransferFunction, GetLayout, GetOpacityTransferFunction,
+                             GetScalarBar, OpenDataFile, Render, RenameSource, SaveScreenshot, Show)
 
 BACKGROUND = [1.0, 1.0, 1.0]
 TEXT = [0.12, 0.12, 0.15]            # dark text: ParaView's default white labels vanish on a white background
@@ -102,7 +102,7 @@ def style_scalar_bar(bar, title, index, count, categories):
     bar.LabelColor = TEXT
     bar.TitleFontSize = 16
     bar.LabelFontSize = 14
-    bar.RangeLabelFormat = "%-#.4g"      # 256 rather than ParaView's 2.6e+02 at the ends
+    bar.RangeLabelFormat = "%.4g"        # 256 rather than ParaView's 2.6e+02 at the ends
     bar.WindowLocation = "Any Location"
     bar.Orientation = "Vertical"
     bar.ScalarBarLength = 0.8 if count == 1 else max(0.25, 0.85 / count)
@@ -113,73 +113,87 @@ def style_scalar_bar(bar, title, index, count, categories):
     bar.Visibility = 1
 
 
-def main():
-    folder = view_folder()
-    png = screenshot_path()
-    view = GetActiveViewOrCreate("RenderView")
-    if png:
-        # pvbatch: lay the view out at the picture's size, so fonts and bars are placed for that size and
-        # not magnified from a small default window.
-        view.ViewSize = [1200, 800]
-    # A light background of this view only (not ParaView's global palette, which the GUI user owns).
-    view.UseColorPaletteForBackground = 0
-    view.Background = BACKGROUND
-    view.OrientationAxesLabelColor = TEXT
+def open_dataset(folder, d):
+    """The dataset's reader, named as the recipe named its file. OpenDataFile picks the reader from the
+    name: .vtp, .pvd (a Collection) and .vtp.series (JSON)."""
+    path = os.path.join(folder, d["file"])
+    reader = OpenDataFile(path)
+    if reader is None:
+        raise RuntimeError("ParaView cannot open " + path)
+    RenameSource(d["name"], reader)
+    return reader
 
-    coloured = [d for d in SELFSIM_VIEW["datasets"] if d["field"] is not None and d["role"] != "region"]
-    bars, solid = 0, 0
-    for d in SELFSIM_VIEW["datasets"]:
-        path = os.path.join(folder, d["file"])
-        # OpenDataFile picks the reader from the name: .vtp, .pvd (a Collection) and .vtp.series (JSON).
-        reader = OpenDataFile(path)
-        if reader is None:
-            raise RuntimeError("ParaView cannot open " + path)
-        RenameSource(d["name"], reader)
-        display = Show(reader, view)
-        display.Representation = "Surface"
 
-        if d["role"] == "region":
-            # The volume a surface grew in: a pale see-through shell, one colour, no scalar bar.
-            # No field. (ColorBy(display, None) fails on a file with no arrays at all, as a region's is.)
-            display.ColorArrayName = ["POINTS", ""]
-            display.AmbientColor = REGION_COLOUR
-            display.DiffuseColor = REGION_COLOUR
-            display.Opacity = 0.2
-            display.Specular = 0.0
-            continue
+def last_bounds(reader):
+    """The dataset's bounds at its last time step (a series' grown result): [xmin, xmax, ymin, ...]."""
+    times = list(getattr(reader, "TimestepValues", None) or [])
+    reader.UpdatePipeline(times[-1] if times else 0.0)
+    return reader.GetDataInformation().GetBounds()
 
-        if d["role"] == "curve":
-            display.LineWidth = 2.5       # one-pixel lines are hard to see at 1200 pixels across
 
-        if d["field"] is None:
-            display.ColorArrayName = ["POINTS", ""]
-            colour = SOLID_COLOURS[solid % len(SOLID_COLOURS)]
-            solid += 1
-            display.AmbientColor = colour
-            display.DiffuseColor = colour
-            continue
+def inside(inner, outer):
+    """Whether bounds `inner` lie within `outer`, give or take a hundredth of outer's size."""
+    size = max(outer[1] - outer[0], outer[3] - outer[2], outer[5] - outer[4])
+    slack = 0.01 * size
+    return all(inner[2 * a] >= outer[2 * a] - slack and inner[2 * a + 1] <= outer[2 * a + 1] + slack
+               for a in range(3))
 
-        # A map of its own for each dataset: two datasets with a field of the same name ('level') but
-        # different ranges or kinds must not share one.
-        ColorBy(display, (d["association"], d["field"]), separate=True)
-        lut = GetColorTransferFunction(d["field"], display, separate=True)
-        low, high = d["range"]
-        if d["categorical"]:
-            colour_categorical(lut, d["categories"])
-        else:
-            colour_continuous(display, lut, d["field"], low, high)
-        display.SetScalarBarVisibility(view, True)
-        title = d["field"] if len(coloured) == 1 else d["name"] + ": " + d["field"]
-        style_scalar_bar(GetScalarBar(lut, view), title, bars, len(coloured), d["categories"])
-        bars += 1
 
-    # Time series: the animation (the VCR controls in the GUI) steps through the data's own time steps, and
-    # the view opens on the last one, the grown result.
-    scene = GetAnimationScene()
-    scene.UpdateAnimationUsingDataTimeSteps()
-    scene.GoToLast()
+def scenes_of(datasets, bounds):
+    """Which datasets share a view. Each result (curve, surface, series) gets a view of its own, so that
+    outputs that all start at the origin - a curve from (0,0) to (1,0), a surface grown in the unit sphere -
+    do not draw over one another; a region joins the views of the results that lie inside it (the volume
+    a surface grew in), and is shown alone only when nothing lies inside it."""
+    results = [i for i, d in enumerate(datasets) if d["role"] != "region"]
+    regions = [i for i, d in enumerate(datasets) if d["role"] == "region"]
+    scenes = [[i] for i in results]
+    for r in regions:
+        homes = [scene for scene in scenes if inside(bounds[scene[0]], bounds[r]) and not datasets[scene[0]]["flat"]]
+        for scene in homes:
+            scene.insert(0, r)
+        if not homes:
+            scenes.append([r])
+    return scenes
 
-    if SELFSIM_VIEW["dimension"] == 2:
+
+def show_dataset(d, reader, view, bar_index, bar_count, solid, named):
+    """Shows one dataset in a view, coloured as its header says; returns whether it drew a scalar bar."""
+    display = Show(reader, view)
+    display.Representation = "Surface"
+    if d["role"] == "region":
+        # The volume a surface grew in: a pale see-through shell, one colour, no scalar bar.
+        # No field. (ColorBy(display, None) fails on a file with no arrays at all, as a region's is.)
+        display.ColorArrayName = ["POINTS", ""]
+        display.AmbientColor = REGION_COLOUR
+        display.DiffuseColor = REGION_COLOUR
+        display.Opacity = 0.2
+        display.Specular = 0.0
+        return False
+    if d["role"] == "curve":
+        display.LineWidth = 2.5       # one-pixel lines are hard to see at 1200 pixels across
+    if d["field"] is None:
+        display.ColorArrayName = ["POINTS", ""]
+        colour = SOLID_COLOURS[solid % len(SOLID_COLOURS)]
+        display.AmbientColor = colour
+        display.DiffuseColor = colour
+        return False
+    # A map of its own for each dataset: two datasets with a field of the same name ('level') but
+    # different ranges or kinds must not share one.
+    ColorBy(display, (d["association"], d["field"]), separate=True)
+    lut = GetColorTransferFunction(d["field"], display, separate=True)
+    low, high = d["range"]
+    if d["categorical"]:
+        colour_categorical(lut, d["categories"])
+    else:
+        colour_continuous(display, lut, d["field"], low, high)
+    display.SetScalarBarVisibility(view, True)
+    title = d["name"] + ": " + d["field"] if named or bar_count > 1 else d["field"]
+    style_scalar_bar(GetScalarBar(lut, view), title, bar_index, bar_count, d["categories"])
+    return True
+
+
+def place_camera(view, flat):
+    if flat:
         # Everything lies in z = 0: look straight down, without perspective, and keep the GUI's mouse from
         # tilting it out of the plane.
         view.InteractionMode = "2D"
@@ -199,9 +213,67 @@ def main():
     # Keep that direction, move and zoom to fit what is shown at the current (last) time.
     view.ResetCamera(False)
 
-    Render(view)
+
+def place_views(layout, cell, views, across):
+    """Puts the views into the layout's cell as a balanced grid: the cell is split in two (across, then
+    down, alternately) in proportion to the views on each side. Splitting a cell moves the view it holds
+    to the first half, where views[0], the view already in the layout, belongs."""
+    if len(views) == 1:
+        if layout.GetViewLocation(views[0]) != cell:
+            layout.AssignView(cell, views[0])
+        return
+    half = (len(views) + 1) // 2
+    fraction = half / float(len(views))
+    if across:
+        layout.SplitHorizontal(cell, fraction)
+    else:
+        layout.SplitVertical(cell, fraction)
+    place_views(layout, 2 * cell + 1, views[:half], not across)
+    place_views(layout, 2 * cell + 2, views[half:], not across)
+
+
+def main():
+    folder = view_folder()
+    png = screenshot_path()
+    datasets = SELFSIM_VIEW["datasets"]
+    readers = [open_dataset(folder, d) for d in datasets]
+    scenes = scenes_of(datasets, [last_bounds(r) for r in readers])
+    # The views side by side in one layout (a grid of about equal rows and columns); the first is the
+    # GUI's own view.
+    first = GetActiveViewOrCreate("RenderView")
+    layout = GetLayout(first)
+    if layout is None:  # pvbatch: a view outside any layout
+        layout = CreateLayout("selfsim")
+        AssignViewToLayout(view=first, layout=layout, hint=0)
     if png:
-        SaveScreenshot(png, view, ImageResolution=[1200, 800])
+        # pvbatch: lay the views out at the picture's size, so fonts and bars are placed for that size and
+        # not magnified from a small default window.
+        layout.SetSize(1200, 800)
+    views = [first] + [CreateView("RenderView") for _ in scenes[1:]]
+    place_views(layout, 0, views, True)
+    shown = []
+    for view, scene in zip(views, scenes):
+        # A light background of this view only (not ParaView's global palette, which the GUI user owns).
+        view.UseColorPaletteForBackground = 0
+        view.Background = BACKGROUND
+        view.OrientationAxesLabelColor = TEXT
+        coloured = [i for i in scene if datasets[i]["field"] is not None and datasets[i]["role"] != "region"]
+        bars = 0
+        for k, i in enumerate(scene):
+            # With several views, each bar names its dataset: the views do not say what they show.
+            bars += show_dataset(datasets[i], readers[i], view, bars, len(coloured), k, len(scenes) > 1)
+        shown.append((view, all(datasets[i]["flat"] for i in scene)))
+
+    # Time series: the animation (the VCR controls in the GUI) steps through the data's own time steps, and
+    # the views open on the last one, the grown result.
+    scene = GetAnimationScene()
+    scene.UpdateAnimationUsingDataTimeSteps()
+    scene.GoToLast()
+    for view, flat in shown:
+        place_camera(view, flat)
+        Render(view)
+    if png:
+        SaveScreenshot(png, layout, ImageResolution=[1200, 800])
         print("wrote " + png)
 
 

@@ -96,8 +96,11 @@ constexpr double ink[3] = {0.1, 0.1, 0.1};
 
 // A perceptually even blue-green-yellow ramp (after matplotlib's viridis), 256 entries.
 void continuous_table(vtkLookupTable* lut, double lo, double hi) {
-  static const double stops[][3] = {{0.267, 0.005, 0.329}, {0.231, 0.322, 0.545}, {0.129, 0.569, 0.549},
-                                    {0.369, 0.788, 0.384}, {0.992, 0.906, 0.145}};
+  static const double stops[][3] = {{0.267, 0.005, 0.329},
+                                    {0.231, 0.322, 0.545},
+                                    {0.129, 0.569, 0.549},
+                                    {0.369, 0.788, 0.384},
+                                    {0.992, 0.906, 0.145}};
   lut->SetNumberOfTableValues(256);
   for (int i = 0; i < 256; ++i) {
     const double t = i / 255.0 * 4;
@@ -144,8 +147,7 @@ vtkSmartPointer<vtkPolyData> poly_data(const Dataset& d, const Colouring& c) {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(d.points.size()));
-  for (std::size_t i = 0; i < d.points.size(); ++i)
-    points->SetPoint(static_cast<vtkIdType>(i), d.points[i].data());
+  for (std::size_t i = 0; i < d.points.size(); ++i) points->SetPoint(static_cast<vtkIdType>(i), d.points[i].data());
   poly->SetPoints(points);
   vtkNew<vtkCellArray> lines, polys, verts;
   std::vector<vtkIdType> ids;
@@ -159,7 +161,8 @@ vtkSmartPointer<vtkPolyData> poly_data(const Dataset& d, const Colouring& c) {
     for (vtkIdType i = 0; i < static_cast<vtkIdType>(d.points.size()); ++i) verts->InsertNextCell(1, &i);
   // Cell data follows VTK's order of cells: verts, lines, polys. Only a mixed dataset reorders its cells;
   // its cell field is then left out (the picture is uncoloured) rather than shown on the wrong cells.
-  const bool reordered = d.shapes == CellShapes::mixed && lines->GetNumberOfCells() > 0 && polys->GetNumberOfCells() > 0;
+  const bool reordered =
+      d.shapes == CellShapes::mixed && lines->GetNumberOfCells() > 0 && polys->GetNumberOfCells() > 0;
   poly->SetVerts(verts);
   poly->SetLines(lines);
   poly->SetPolys(polys);
@@ -238,7 +241,8 @@ int render_in_child(PipeOut& out, const Dataset& d, const std::string& title) {
   const PreviewSize size = preview_size(d);
   const Colouring colouring = natural_colouring(summarise(d));
   vtkSmartPointer<vtkPolyData> poly = poly_data(d, colouring);
-  const bool coloured = (colouring.on_points ? poly->GetPointData()->GetScalars() : poly->GetCellData()->GetScalars()) != nullptr;
+  const bool coloured =
+      (colouring.on_points ? poly->GetPointData()->GetScalars() : poly->GetCellData()->GetScalars()) != nullptr;
   const bool surface = poly->GetNumberOfPolys() > 0;
 
   vtkNew<vtkPolyDataMapper> mapper;
@@ -378,8 +382,8 @@ int render_in_child(PipeOut& out, const Dataset& d, const std::string& title) {
       bar->GetPosition2Coordinate()->SetCoordinateSystemToNormalizedViewport();
       bar->GetPosition2Coordinate()->SetValue(0.6, 0.92);
       bar->SetBarRatio(0.3);
-      for (vtkTextProperty* p : {bar->GetTitleTextProperty(), bar->GetLabelTextProperty(),
-                                 bar->GetAnnotationTextProperty()}) {
+      for (vtkTextProperty* p :
+           {bar->GetTitleTextProperty(), bar->GetLabelTextProperty(), bar->GetAnnotationTextProperty()}) {
         p->SetColor(ink[0], ink[1], ink[2]);
         p->ShadowOff();
         p->BoldOff();

@@ -1,12 +1,14 @@
 #include "kernels/io/series_file.h"
 
 #include <cmath>
+#include <fstream>
 #include <set>
 
 #include "kernels/geom/check.h"
 #include "kernels/geom/error.h"
 #include "kernels/geom/lower_case.h"
 #include "kernels/io/output_file.h"
+#include "kernels/io/read_error.h"
 #include "kernels/io/xml_text.h"
 
 namespace selfsim::io {
@@ -106,7 +108,59 @@ std::string series_text(const std::vector<std::string>& files, std::span<const S
   return s + "  ]\n}\n";
 }
 
+// The quoted strings after each `key` (after a space or at the start) followed by '=' (XML) or ':' (JSON),
+// without their quotes, entities (XML) or backslash escapes (JSON) undone. A plain scan: a crafted file of
+// any length costs one pass and no recursion.
+std::vector<std::string> quoted_values(const std::string& text, const std::string& key, bool json) {
+  std::vector<std::string> out;
+  auto space = [&](std::size_t& i) {
+    while (i < text.size() && xml_space(text[i])) ++i;
+  };
+  for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + 1)) {
+    if (at > 0 && !xml_space(text[at - 1])) continue;
+    std::size_t i = at + key.size();
+    space(i);
+    if (i >= text.size() || (text[i] != '=' && text[i] != ':')) continue;
+    ++i;
+    space(i);
+    if (i >= text.size() || text[i] != '"') continue;
+    std::string value;
+    for (++i; i < text.size() && text[i] != '"'; ++i) {
+      if (json && text[i] == '\\' && i + 1 < text.size()) ++i;
+      value += text[i];
+    }
+    if (i >= text.size()) break;
+    for (const auto& [from, to] :
+         {std::pair<std::string, std::string>{"&quot;", "\""}, {"&lt;", "<"}, {"&gt;", ">"}, {"&amp;", "&"}})
+      for (std::size_t e = json ? std::string::npos : value.find(from); e != std::string::npos;
+           e = value.find(from, e + to.size()))
+        value.replace(e, from.size(), to);
+    out.push_back(std::move(value));
+  }
+  return out;
+}
+
 }  // namespace
+
+std::vector<std::filesystem::path> read_series_steps(const std::filesystem::path& series) {
+  const bool json = ends_with(lower_case(series.filename().string()), ".series");
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(series, ec);
+  if (ec || !std::filesystem::is_regular_file(series, ec))
+    throw Error(cannot_read(series, ec ? ec.message() : "not a regular file"));
+  if (size > (std::uintmax_t{64} << 20)) throw Error(cannot_read(series, "a series file over 64 MiB"));
+  std::ifstream in(series, std::ios::binary);
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  std::vector<std::filesystem::path> steps;
+  for (const std::string& name : quoted_values(text, json ? "\"name\"" : "file", json)) {
+    const std::filesystem::path p = std::filesystem::path(name).lexically_normal();
+    if (p.empty() || p.is_absolute() || *p.begin() == "..")
+      throw Error(cannot_read(series, "it names a step outside its folder ('" + one_line(name) + "')"));
+    steps.push_back(series.parent_path() / p);
+  }
+  if (steps.empty()) throw Error(cannot_read(series, "it names no step (not a .pvd Collection or .series file)"));
+  return steps;
+}
 
 bool is_series_name(const std::string& name) {
   const std::string lower = lower_case(std::filesystem::path(name).filename().string());

@@ -41,4 +41,9 @@ std::vector<std::string> series_step_names(const std::string& name, std::size_t 
 SeriesFiles save_series(std::span<const SeriesStep> steps, const std::filesystem::path& root, const std::string& name,
                         const SaveOptions& opt, Progress& progress);
 
+// The step files a series file names, in order, as paths beside it (read back for `preview` and `info`).
+// Throws Error ("cannot read 'FILE': ...") for a file that is not a series, names no step, is over 64 MiB,
+// or names a step outside its folder (an absolute path, or one through '..').
+std::vector<std::filesystem::path> read_series_steps(const std::filesystem::path& series);
+
 }  // namespace selfsim::io

@@ -46,7 +46,8 @@ std::string class_name(openvdb::GridClass c) {
 // A grid's declared in-memory size and active voxel count (metadata that OpenVDB writes with every grid);
 // 0 where the file does not say.
 std::uint64_t meta_count(const openvdb::GridBase& g, const char* key) {
-  if (auto m = g.getMetadata<openvdb::Int64Metadata>(key)) return static_cast<std::uint64_t>(std::max<openvdb::Int64>(m->value(), 0));
+  if (auto m = g.getMetadata<openvdb::Int64Metadata>(key))
+    return static_cast<std::uint64_t>(std::max<openvdb::Int64>(m->value(), 0));
   return 0;
 }
 
@@ -190,7 +191,8 @@ void send_surface(PipeOut& out, openvdb::io::File& file) {
   } else {
     what += " at 0";
   }
-  if (!std::isfinite(grid->background())) throw Error("grid '" + shown(grid->getName()) + "' has a background that is not finite");
+  if (!std::isfinite(grid->background()))
+    throw Error("grid '" + shown(grid->getName()) + "' has a background that is not finite");
   std::vector<openvdb::Vec3s> points;
   std::vector<openvdb::Vec3I> triangles;
   std::vector<openvdb::Vec4I> quads;

@@ -34,9 +34,9 @@ std::vector<VdbGridInfo> read_vdb_info(const std::filesystem::path& file);
 // values and at half a voxel when it does not (an unsigned distance, as selfsim writes for an open
 // surface: its surface thickened by half a voxel). Triangles and quads from OpenVDB's volumeToMesh.
 struct VdbSurface {
-  Dataset mesh;         // polygons
-  std::string grid;     // the grid's name
-  std::string what;     // "level set 'surface' at 0", for the user
+  Dataset mesh;      // polygons
+  std::string grid;  // the grid's name
+  std::string what;  // "level set 'surface' at 0", for the user
 };
 
 VdbSurface read_vdb_surface(const std::filesystem::path& file);

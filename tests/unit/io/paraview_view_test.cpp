@@ -27,13 +27,16 @@ TEST(ParaviewView, NamesEachDatasetWithItsColouring) {
   const std::string text = io::paraview_view_text(ds, "/data/out");
   EXPECT_NE(text.find("\"folder\": \"/data/out\""), std::string::npos);
   EXPECT_NE(text.find("\"dimension\": 3"), std::string::npos);
-  EXPECT_NE(text.find("{\"file\": \"growth.pvd\", \"name\": \"growth\", \"role\": \"surface\", \"series\": True"),
-            std::string::npos)
+  EXPECT_NE(
+      text.find(
+          "{\"file\": \"growth.pvd\", \"name\": \"growth\", \"role\": \"surface\", \"series\": True, \"flat\": False"),
+      std::string::npos)
       << text;
   EXPECT_NE(text.find("\"field\": \"tile_class\", \"association\": \"CELLS\", \"categorical\": True"),
             std::string::npos);
   EXPECT_NE(text.find("\"categories\": [0, 2, 4]"), std::string::npos);
-  EXPECT_NE(text.find("\"role\": \"region\", \"series\": False,\n         \"field\": None"), std::string::npos);
+  EXPECT_NE(text.find("\"role\": \"region\", \"series\": False, \"flat\": False,\n         \"field\": None"),
+            std::string::npos);
   EXPECT_NE(text.find("from paraview.simple import"), std::string::npos);  // the body
 }
 

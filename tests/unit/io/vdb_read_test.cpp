@@ -1,5 +1,7 @@
 // The .vdb reader on files selfsim writes: a sphere's level set meshes back to a closed surface of the
 // sphere's radius; info reads the grid's metadata; bad files are one-line errors.
+#include "kernels/io/vdb_read.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +10,6 @@
 
 #include "kernels/geom/level_set.h"
 #include "kernels/geom/volume.h"
-#include "kernels/io/vdb_read.h"
 
 namespace selfsim::io {
 namespace {
@@ -54,8 +55,10 @@ TEST(VdbRead, BadFilesAreOneLineErrors) {
   std::ofstream(garbage) << "not a vdb file at all";
   for (const std::filesystem::path& f : {garbage, temp("missing.vdb")})
     for (int which = 0; which < 2; ++which) try {
-        if (which == 0) read_vdb_surface(f);
-        else read_vdb_info(f);
+        if (which == 0)
+          read_vdb_surface(f);
+        else
+          read_vdb_info(f);
         ADD_FAILURE() << f << " read";
       } catch (const Error& e) {
         const std::string m = e.what();
