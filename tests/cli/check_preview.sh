@@ -7,7 +7,8 @@ selfsim=$1
 src=$2
 source "$src/tests/robustness/lib.sh"
 command -v Xvfb >/dev/null || { echo "skipped: no Xvfb"; exit 77; }
-/usr/bin/python3 -c 'import vtkmodules.vtkIOImage' 2>/dev/null || { echo "skipped: no VTK Python"; exit 77; }
+# VTK's Python (python3-vtk9) or ParaView's, whichever is installed.
+python=$("$src/tests/viewer/vtk_python.sh") || { echo "skipped: no VTK Python"; exit 77; }
 
 cat >"$tmp/all.lua" <<'LUA'
 local curves = require "selfsim.curves"
@@ -22,7 +23,7 @@ check "recipe runs" test -s "$tmp/in/sphere.vdb"
 
 # png_ok FILE W H: exists, W x H, more than one colour, not all background.
 png_ok() {
-  /usr/bin/python3 - "$@" <<'PY'
+  $python - "$@" <<'PY'  # unquoted: it may be "env PYTHONPATH=... /usr/bin/python3"
 import sys
 from vtkmodules.vtkIOImage import vtkPNGReader
 from vtkmodules.util.numpy_support import vtk_to_numpy
