@@ -283,9 +283,13 @@ int save_series(lua_State* L) {
     held.push_back(std::move(*v));
   }
   if (lua_getfield(L, 1, "times") != LUA_TNIL) {
-    if (!lua_istable(L, -1) || list_length(L, -1, "the series' times") != n)
+    if (!lua_istable(L, -1))
       throw Error("the series' 'times' must be a list of " + std::to_string(n) + " numbers, one per entry, got " +
                   describe(L, -1));
+    const lua_Integer count = list_length(L, -1, "the series' 'times'");
+    if (count != n)
+      throw Error("the series' 'times' must be a list of " + std::to_string(n) + " numbers, one per entry, got " +
+                  std::to_string(count));
     for (lua_Integer i = 1; i <= n; ++i) {
       lua_rawgeti(L, -1, i);
       steps[static_cast<std::size_t>(i - 1)].time = finite_number(L, -1, "entry " + std::to_string(i) + " of 'times'");
@@ -296,8 +300,21 @@ int save_series(lua_State* L) {
   const io::Format& vtp = *io::find_format(".vtp");
   io::SaveOptions opt = read_save_options(L, 3, vtp);
   check_not_saved(L, name);
+  // A curve that draws nothing at a level (a plant's axiom "X" at level 0) has no file to be: the series
+  // starts at its first level that has one, each step keeping its time.
+  std::erase_if(steps, [](const io::SeriesStep& s) {
+    return std::visit([](const auto* v) { return v->points.empty(); }, s.value);
+  });
+  if (steps.empty()) throw Error("every entry of the series is empty: there is nothing to draw");
   const std::vector<std::string> step_names = io::series_step_names(name, steps.size());
-  for (const std::string& step : step_names) check_not_saved(L, step);
+  for (const std::string& step : step_names) {
+    try {
+      check_not_saved(L, step);
+    } catch (const Error& e) {
+      throw Error("'" + shown_text(name) + "' would write its steps into the folder of '" + shown_text(step) +
+                  "' (a .pvd and a .vtp.series of one name share it): " + e.what());
+    }
+  }
   opt.budget = run_budget(L);
   const io::SeriesFiles written = io::save_series(steps, run.config.out_dir, name, opt, run);
   for (const std::string& step : step_names) record_saved(L, step);
@@ -306,9 +323,10 @@ int save_series(lua_State* L) {
   for (const io::SeriesStep& s : steps) refs.push_back(s.value);
   record_view(L, name, role_of(refs.back()), refs, true);
   if (!run.config.quiet)
-    std::printf("wrote %s (%zu steps, %s ... %s; %zu points in the last)\n", shown_text(written.series, 4096).c_str(),
-                steps.size(), shown_text(written.steps.front(), 4096).c_str(),
-                shown_text(written.steps.back(), 4096).c_str(), held.back().points());
+    std::printf("wrote %s (%zu step%s, %s%s%s; %zu points in the last)\n", shown_text(written.series, 4096).c_str(),
+                steps.size(), steps.size() == 1 ? "" : "s", shown_text(written.steps.front(), 4096).c_str(),
+                steps.size() == 1 ? "" : " ... ",
+                steps.size() == 1 ? "" : shown_text(written.steps.back(), 4096).c_str(), held.back().points());
   return 0;
 }
 

@@ -35,10 +35,13 @@ SeriesName parse_name(const std::string& name) {
   } else if (ends_with(lower, ".series")) {
     n.json = true;
     const std::string inner = lower.substr(0, lower.size() - 7);
-    if (!ends_with(inner, ".vtp") && !ends_with(inner, ".vtu"))
-      throw Error("'" + name +
-                  "': ParaView picks a .series file's reader from the extension before '.series'; name it '" +
-                  leaf.substr(0, leaf.size() - 7) + ".vtp.series' (or .vtu.series)");
+    if (!ends_with(inner, ".vtp") && !ends_with(inner, ".vtu")) {
+      const std::string before = std::filesystem::path(leaf.substr(0, leaf.size() - 7)).extension().string();
+      const std::string stem = leaf.substr(0, leaf.size() - 7 - before.size());
+      throw Error("'" + name + "': ParaView picks a .series file's reader from the extension before '.series', which " +
+                  (before.empty() ? std::string("is missing") : "must be .vtp or .vtu, not '" + before + "'") +
+                  "; name it '" + stem + ".vtp.series'");
+    }
     n.step_extension = inner.substr(inner.size() - 4);
     n.stem = leaf.substr(0, inner.size() - 4);
   } else {

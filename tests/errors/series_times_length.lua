@@ -1,0 +1,2 @@
+local a = polyline { { 0, 0 }, { 1, 0 } }
+save({ a, a, a, times = { 0, 1 } }, "morph.pvd")
