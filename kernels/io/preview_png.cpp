@@ -41,6 +41,7 @@
 #include "kernels/io/natural_field.h"
 #include "kernels/io/output_file.h"
 #include "kernels/io/read_error.h"
+#include "kernels/io/vtk_error_text.h"
 
 // VTK's rendering classes are abstract until their OpenGL implementations register with the object
 // factory. VTK's CMake does that through vtk_module_autoinit; these lines do it in the one file that
@@ -71,22 +72,9 @@ class ErrorToPipe : public vtkOutputWindow {
   PipeOut* out = nullptr;
   bool sent = false;
 
-  // "ERROR: In .../vtkXOpenGLRenderWindow.cxx, line 42\nvtkXOpenGLRenderWindow (0x..): text\n" -> "text".
   static std::string reason(const std::string& text) {
-    std::string last;
-    std::size_t begin = 0;
-    while (begin < text.size()) {
-      std::size_t end = text.find('\n', begin);
-      if (end == std::string::npos) end = text.size();
-      std::string line = text.substr(begin, end - begin);
-      begin = end + 1;
-      if (line.empty() || line.rfind("ERROR: In ", 0) == 0) continue;
-      if (line.rfind("vtk", 0) == 0)
-        if (const std::size_t object = line.find("): "); object != std::string::npos && object < 80)
-          line.erase(0, object + 3);
-      if (last.empty()) last = line;
-    }
-    return last.empty() ? text : last;
+    const std::string line = vtk_error_line(text);
+    return line.empty() ? text : line;
   }
 };
 vtkStandardNewMacro(ErrorToPipe);

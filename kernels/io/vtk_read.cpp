@@ -42,6 +42,7 @@
 #include "kernels/io/read.h"
 #include "kernels/io/read_error.h"
 #include "kernels/io/regular_file.h"
+#include "kernels/io/vtk_error_text.h"
 #include "kernels/io/vtk_header_check.h"
 
 namespace selfsim::io {
@@ -66,20 +67,7 @@ vtkStandardNewMacro(FirstErrorWindow);
 
 // "ERROR: In .../vtkXMLReader.cxx, line 42\nvtkXMLPolyDataReader (0x55d0): Error parsing ...\n\n" -> the message.
 std::string vtk_reason(const std::string& text, const std::string& vtk_name, const std::string& shown_name) {
-  std::string reason;
-  std::size_t begin = 0;
-  while (begin < text.size()) {
-    std::size_t end = text.find('\n', begin);
-    if (end == std::string::npos) end = text.size();
-    std::string line = text.substr(begin, end - begin);
-    begin = end + 1;
-    if (line.empty() || line.rfind("ERROR: In ", 0) == 0) continue;
-    if (line.rfind("vtk", 0) == 0)
-      if (const std::size_t object = line.find("): "); object != std::string::npos && object < 80)
-        line.erase(0, object + 3);
-    reason = line;
-    break;  // the first line says what failed; what follows is VTK's dump of its pipeline, with addresses
-  }
+  std::string reason = vtk_error_line(text);
   for (std::size_t at; (at = reason.find("  ")) != std::string::npos;) reason.erase(at, 1);
   for (std::size_t at; !vtk_name.empty() && (at = reason.find(vtk_name)) != std::string::npos;)
     reason.replace(at, vtk_name.size(), shown_name);
