@@ -58,7 +58,7 @@ demo: deps build
 	rm -rf out
 	$(BUILD)/selfsim run examples/gallery.lua -o out
 	$(BUILD)/selfsim preview out/*.svg out/*.vtp out/*.stl out/*.pvd
-	scripts/pvbatch-selfsim out/view.py --png out/view.png
+	SELFSIM_PARAVIEW_PYTHON=$(PARAVIEW_PYTHON) scripts/pvbatch-selfsim out/view.py --png out/view.png
 	@echo
 	@echo "Done: $$(ls out | wc -l) files in $$(pwd)/out: .png pictures of everything, .svg for a browser, .vtp and"
 	@echo ".pvd time series for ParaView, .stl for a slicer. Open the whole gallery in ParaView, as designed:"

@@ -110,11 +110,14 @@ int develop(lua_State* L) {
                   }));
     // Its levels: the surfaces of the stack's first levels (two at least), scaled as the whole was, so a
     // growth series does not change size from step to step.
-    double retained = 0;
-    for (const auto& c : levels) retained += static_cast<double>(c->points.size());
+    // The stack's curves: kept for the levels (counted against the budget only when develop drew them: a
+    // list of curves is the recipe's own, counted already).
+    double kept = 0;
+    for (const auto& c : levels) kept += static_cast<double>(c->points.size());
+    const double retained = g ? kept : 0;
     opt.scale = opt.size > 0 ? scale : 0;
     attach_growth(L,
-                  Growth{1, static_cast<int>(levels.size()) - 1, "level",
+                  Growth{1, static_cast<int>(levels.size()) - 1, "level", kept,
                          [levels, opt](int k, const PointBudget& b, Progress& p) {
                            std::vector<const Polyline*> first;
                            for (int l = 0; l <= k; ++l) first.push_back(levels[static_cast<std::size_t>(l)].get());

@@ -89,11 +89,12 @@ int exclusion_curve(lua_State* L) {
     push_curve(L, std::move(r.curve));
     // Its levels: its points up to each level (placed points never move).
     const Held<Polyline> grown = test_curve(L, -1);
-    attach_growth(L, Growth{0, opt.levels, "level", [grown](int k, const PointBudget& b, Progress& p) {
-                              Polyline c = exclusion::curve_at_level(*grown, k, p);
-                              check_budget(budget_size(c), b, "level " + std::to_string(k));
-                              return GrownValue(std::move(c));
-                            }});
+    attach_growth(
+        L, Growth{0, opt.levels, "level", budget_size(*grown), [grown](int k, const PointBudget& b, Progress& p) {
+                    Polyline c = exclusion::curve_at_level(*grown, k, p);
+                    check_budget(budget_size(c), b, "level " + std::to_string(k));
+                    return GrownValue(std::move(c));
+                  }});
     push_report(L, r);
     return 2;
   });

@@ -109,7 +109,7 @@ int exclusion_surface(lua_State* L) {
     for (const Mesh& m : r.steps) retained += budget_size(m);
     auto steps = std::make_shared<const std::vector<Mesh>>(std::move(r.steps));
     attach_growth(L,
-                  Growth{0, opt.levels, "level",
+                  Growth{0, opt.levels, "level", retained,
                          [steps](int k, const PointBudget& b, Progress&) {
                            const Mesh& m = (*steps)[static_cast<std::size_t>(k)];
                            check_budget(budget_size(m), b, "level " + std::to_string(k));

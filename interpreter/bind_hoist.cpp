@@ -149,7 +149,8 @@ int hoist_iterate(lua_State* L) {
                  return hoist::iterate(*p, opt, RunContext::of(L));
                }));
     // Its generations: the same iteration stopped earlier.
-    attach_growth(L, Growth{0, opt.generations, "generation", [p, opt](int k, const PointBudget& b, Progress& pr) {
+    attach_growth(L, Growth{0, opt.generations, "generation", budget_size(*p),
+                            [p, opt](int k, const PointBudget& b, Progress& pr) {
                               hoist::IterateOptions at = opt;
                               at.generations = k;
                               at.budget = b;

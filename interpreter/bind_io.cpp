@@ -230,8 +230,14 @@ void record_view(lua_State* L, const std::string& name, io::ViewRole role, std::
                  bool series) {
   io::ViewDataset d;
   d.file = normal_name(name);
+  // The file's name without the extension that made it: "growth" for growth.pvd and growth.vtp.series.
   d.name = std::filesystem::path(name).filename().string();
-  d.name = d.name.substr(0, d.name.find('.'));
+  for (const char* ext : {".pvd", ".vtp.series", ".vtu.series", ".vtp", ".vtu"})
+    if (const std::string e = ext;
+        d.name.size() > e.size() && lower_case(d.name.substr(d.name.size() - e.size())) == e) {
+      d.name.erase(d.name.size() - e.size());
+      break;
+    }
   d.role = role;
   d.series = series;
   d.flat = std::all_of(steps.begin(), steps.end(), flat);
@@ -285,7 +291,7 @@ int save_series(lua_State* L) {
   if (lua_getfield(L, 1, "times") != LUA_TNIL) {
     if (!lua_istable(L, -1))
       throw Error("the series' 'times' must be a list of " + std::to_string(n) + " numbers, one per entry, got " +
-                  describe(L, -1));
+                  describe(L, -1) + " (not a list)");
     const lua_Integer count = list_length(L, -1, "the series' 'times'");
     if (count != n)
       throw Error("the series' 'times' must be a list of " + std::to_string(n) + " numbers, one per entry, got " +
@@ -297,8 +303,7 @@ int save_series(lua_State* L) {
     }
   }
   lua_pop(L, 1);
-  const io::Format& vtp = *io::find_format(".vtp");
-  io::SaveOptions opt = read_save_options(L, 3, vtp);
+  io::SaveOptions opt = read_save_options(L, 3, *io::find_format(io::series_step_extension(name)));
   check_not_saved(L, name);
   // A curve that draws nothing at a level (a plant's axiom "X" at level 0) has no file to be: the series
   // starts at its first level that has one, each step keeping its time.
@@ -326,7 +331,8 @@ int save_series(lua_State* L) {
     std::printf("wrote %s (%zu step%s, %s%s%s; %zu points in the last)\n", shown_text(written.series, 4096).c_str(),
                 steps.size(), steps.size() == 1 ? "" : "s", shown_text(written.steps.front(), 4096).c_str(),
                 steps.size() == 1 ? "" : " ... ",
-                steps.size() == 1 ? "" : shown_text(written.steps.back(), 4096).c_str(), held.back().points());
+                steps.size() == 1 ? "" : shown_text(written.steps.back(), 4096).c_str(),
+                std::visit([](const auto* v) { return v->points.size(); }, steps.back().value));
   return 0;
 }
 

@@ -121,7 +121,7 @@ int grammar_curve(lua_State* L) {
                  return lsystem::turtle2d(g, opt, run);
                }));
     // Its levels are the grammar's curves at lower levels, drawn the same way.
-    attach_growth(L, Growth{0, opt.level, "level", [held, opt](int k, const PointBudget& b, Progress& p) {
+    attach_growth(L, Growth{0, opt.level, "level", 0, [held, opt](int k, const PointBudget& b, Progress& p) {
                               lsystem::TurtleOptions at = opt;
                               at.level = k;
                               at.budget = b;

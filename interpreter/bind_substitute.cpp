@@ -50,12 +50,16 @@ int make_substitute(lua_State* L) {
                }));
     // Its levels: the same substitution done fewer times.
     auto inputs = std::make_shared<const std::pair<Polyline, Polyline>>(path, generator);
-    attach_growth(L, Growth{0, opt.levels, "level", [inputs, opt](int k, const PointBudget& b, Progress& p) {
-                              substitute::SubstituteOptions at = opt;
-                              at.levels = k;
-                              at.budget = b;
-                              return GrownValue(substitute::substitute(inputs->first, inputs->second, at, p));
-                            }});
+    const double kept = static_cast<double>(path.points.size() + generator.points.size());
+    attach_growth(L,
+                  Growth{0, opt.levels, "level", kept,
+                         [inputs, opt](int k, const PointBudget& b, Progress& p) {
+                           substitute::SubstituteOptions at = opt;
+                           at.levels = k;
+                           at.budget = b;
+                           return GrownValue(substitute::substitute(inputs->first, inputs->second, at, p));
+                         }},
+                  kept);
     return 1;
   });
 }

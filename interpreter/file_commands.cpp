@@ -113,8 +113,9 @@ int info_command(const std::string& given) {
     std::string file = given;
     if (io::is_series_name(given)) {
       const std::vector<std::filesystem::path> steps = io::read_series_steps(given);
-      std::printf("series: %s, %zu steps, %s ... %s; the last:\n", shown_text(given, 4096).c_str(), steps.size(),
-                  shown_text(steps.front().string(), 4096).c_str(), shown_text(steps.back().string(), 4096).c_str());
+      std::printf("series: %s, %zu step%s, %s ... %s; the last:\n", shown_text(given, 4096).c_str(), steps.size(),
+                  steps.size() == 1 ? "" : "s", shown_text(steps.front().string(), 4096).c_str(),
+                  shown_text(steps.back().string(), 4096).c_str());
       file = steps.back().string();
     }
     const io::Dataset d = io::read_dataset(file);

@@ -39,7 +39,7 @@ void push_level(lua_State* L, int self, const std::shared_ptr<const Growth>& g, 
   RunContext& run = RunContext::of(L);
   GrownValue v = with_budget(L, [&](const PointBudget& b) { return g->at(k, b, run); });
   std::visit([&](auto& value) { push_geometry(L, std::move(value)); }, v);
-  attach_growth(L, Growth{g->first, k, g->unit, g->at});
+  attach_growth(L, Growth{g->first, k, g->unit, g->kept, g->at}, g->kept);
 }
 
 int level_number(lua_State* L, int index, const Growth& g) {
@@ -55,6 +55,9 @@ void attach_growth(lua_State* L, Growth growth, double retained) {
   Box* box = geometry_box(L, -1);
   RunContext& run = RunContext::of(L);
   LiveValue* v = box ? run.values.find(box->id) : nullptr;
+  if (v == nullptr) return;
+  if (retained > 0) check_run_budget(L, retained, "keeping its levels");
+  v = run.values.find(box->id);  // a collection may have run
   if (v == nullptr) return;
   v->growth = std::make_shared<const Growth>(std::move(growth));
   v->points += retained;

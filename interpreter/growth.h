@@ -25,13 +25,15 @@ using GrownValue = std::variant<Polyline, Polyline3, Mesh>;
 struct Growth {
   int first = 0, last = 0;     // the levels there are; the value itself is the last
   std::string unit = "level";  // what a level is called: "level", "generation"
+  double kept = 0;             // budget points of what `at` keeps alive (earlier meshes, a stack, the value)
   // The value at level k, first <= k < last (the last is the value itself), within `budget`.
   std::function<GrownValue(int k, const PointBudget& budget, Progress& progress)> at;
 };
 
 // Records how the value on top of the stack (just pushed by push_geometry) grew. `retained` is what the
-// growth keeps alive beyond the value (earlier levels' meshes, a stack's curves), in budget points: counted
-// against --max-points with the value.
+// growth keeps alive beyond the value itself (earlier levels' meshes, a stack's curves), in budget points:
+// checked against, and counted in, --max-points with the value. A level taken from the value holds all of
+// growth.kept, the value included if `at` uses it.
 void attach_growth(lua_State* L, Growth growth, double retained = 0);
 
 // Whether the value at index is a geometry value that knows its levels.

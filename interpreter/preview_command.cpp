@@ -75,7 +75,9 @@ int preview_command(const PreviewConfig& config) {
       if (series) {
         const std::vector<std::filesystem::path> steps = io::read_series_steps(file);
         source = steps.back();
-        stem = stem.substr(0, stem.find('.'));
+        // growth.vtp.series draws growth.png, as growth.pvd does.
+        for (const char* inner : {".vtp", ".vtu"})
+          if (stem.size() > 4 && lower_case(stem.substr(stem.size() - 4)) == inner) stem.erase(stem.size() - 4);
         title += " (last of " + std::to_string(steps.size()) + " steps)";
         note = ", the last of " + std::to_string(steps.size()) + " steps";
       }
@@ -95,7 +97,13 @@ int preview_command(const PreviewConfig& config) {
           config.out_dir.empty() ? file.parent_path() : std::filesystem::path(config.out_dir);
       std::string leaf = stem + ".png";
       const std::string key = (folder / leaf).lexically_normal().string();
-      if (!written.insert(key).second) leaf = stem + "_" + lower_case(file.extension().string()).substr(1) + ".png";
+      // A later input of the same name in this run gets NAME_EXT.png, then NAME_EXT_2.png, ...
+      if (!written.insert(key).second) {
+        const std::string base = stem + "_" + lower_case(file.extension().string()).substr(1);
+        leaf = base + ".png";
+        for (int n = 2; !written.insert((folder / leaf).lexically_normal().string()).second; ++n)
+          leaf = base + "_" + std::to_string(n) + ".png";
+      }
       const io::PreviewSize size = io::preview_size(d);
       const std::string out = io::write_preview_png(d, title, folder.empty() ? "." : folder, leaf, no_progress());
       if (!config.quiet)

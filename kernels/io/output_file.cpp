@@ -191,7 +191,9 @@ static bool regular(int dir, const dirent& e) {
 void remove_files(const std::filesystem::path& root, const std::filesystem::path& folder,
                   const std::function<bool(const std::string&)>& remove) {
   const int dir = open_folder(root, folder);
-  DIR* listing = ::fdopendir(::dup(dir));
+  const int copy = ::dup(dir);
+  DIR* listing = copy >= 0 ? ::fdopendir(copy) : nullptr;
+  if (listing == nullptr && copy >= 0) ::close(copy);
   std::vector<std::string> doomed;
   if (listing != nullptr) {
     while (const dirent* e = ::readdir(listing))
@@ -200,6 +202,18 @@ void remove_files(const std::filesystem::path& root, const std::filesystem::path
   }
   for (const std::string& name : doomed) ::unlinkat(dir, name.c_str(), 0);
   ::close(dir);
+}
+
+void rename_file(const std::filesystem::path& root, const std::filesystem::path& folder, const std::string& from,
+                 const std::string& to) {
+  const int dir = open_folder(root, folder);
+  const int result = ::renameat(dir, from.c_str(), dir, to.c_str());
+  const int err = errno;
+  ::close(dir);
+  if (result != 0)
+    throw Error(
+        "cannot write '" + (root / folder / to).string() + "': " +
+        (err == EISDIR || err == ENOTEMPTY ? std::string("a folder of that name is in the way") : std::strerror(err)));
 }
 
 void remove_temporaries() noexcept {

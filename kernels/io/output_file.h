@@ -48,9 +48,13 @@ class OutputFile {
 };
 
 // Removes the regular files of root/folder (confined as OutputFile's folders are) whose names `remove`
-// picks: a series' step files that its new version no longer names.
+// picks: the step files a series' earlier version named and its new version does not.
 void remove_files(const std::filesystem::path& root, const std::filesystem::path& folder,
                   const std::function<bool(const std::string&)>& remove);
+
+// Renames root/folder/from to root/folder/to (confined as OutputFile's folders are), replacing `to`.
+void rename_file(const std::filesystem::path& root, const std::filesystem::path& folder, const std::string& from,
+                 const std::string& to);
 
 // Removes the named temporaries of every OutputFile still open: for a process ending without unwinding
 // (the watchdog). Anonymous temporaries need nothing.

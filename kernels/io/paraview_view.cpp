@@ -1,8 +1,10 @@
 #include "kernels/io/paraview_view.h"
 
+#include <cmath>
 #include <cstdio>
 
 #include "kernels/io/output_file.h"
+#include "kernels/io/utf8.h"
 
 namespace selfsim::io {
 
@@ -12,18 +14,6 @@ namespace {
 constexpr const char* view_body =
 #include "paraview_view_body.inc"
     ;
-
-bool valid_utf8(const std::string& s) {
-  for (std::size_t i = 0; i < s.size();) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    const std::size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
-    if (n == 0 || i + n > s.size()) return false;
-    for (std::size_t k = 1; k < n; ++k)
-      if ((static_cast<unsigned char>(s[i + k]) >> 6) != 0x2) return false;
-    i += n;
-  }
-  return true;
-}
 
 // A Python string literal of UTF-8 text.
 std::string python_string(const std::string& s) {
@@ -56,13 +46,16 @@ const char* role_name(ViewRole r) {
 
 std::string dataset_text(const ViewDataset& d) {
   const Colouring& c = d.colouring;
-  std::string s = "        {\"file\": " + python_string(d.file) + ", \"name\": " + python_string(d.name) +
-                  ", \"role\": \"" + role_name(d.role) + "\", \"series\": " + (d.series ? "True" : "False") +
-                  ", \"flat\": " + (d.flat ? "True" : "False") +
-                  ",\n         \"field\": " + (c.field.empty() ? "None" : python_string(c.field)) +
-                  ", \"association\": \"" + (c.on_points ? "POINTS" : "CELLS") +
-                  "\", \"categorical\": " + (c.categorical ? "True" : "False") + ", \"range\": [" +
-                  python_number(c.min) + ", " + python_number(c.max) + "],\n         \"categories\": [";
+  std::string s =
+      "        {\"file\": " + python_string(d.file) + ", \"name\": " + python_string(d.name) + ", \"role\": \"" +
+      role_name(d.role) + "\", \"series\": " + (d.series ? "True" : "False") +
+      ", \"flat\": " + (d.flat ? "True" : "False") +
+      ",\n         \"field\": " + (c.field.empty() ? "None" : python_string(c.field)) + ", \"association\": \"" +
+      (c.on_points ? "POINTS" : "CELLS") + "\", \"categorical\": " + (c.categorical ? "True" : "False") +
+      ", \"range\": " +
+      (std::isfinite(c.min) && std::isfinite(c.max) ? "[" + python_number(c.min) + ", " + python_number(c.max) + "]"
+                                                    : std::string("None")) +
+      ",\n         \"categories\": [";
   for (std::size_t i = 0; i < c.categories.size(); ++i) s += (i > 0 ? ", " : "") + std::to_string(c.categories[i]);
   return s + "]},\n";
 }
@@ -70,19 +63,14 @@ std::string dataset_text(const ViewDataset& d) {
 }  // namespace
 
 std::string paraview_view_text(std::span<const ViewDataset> datasets, const std::filesystem::path& folder) {
-  bool flat = true;
   std::string list;
-  for (const ViewDataset& d : datasets) {
-    if (!valid_utf8(d.file) || !valid_utf8(d.name) || !valid_utf8(d.colouring.field)) continue;
-    flat = flat && d.flat;
-    list += dataset_text(d);
-  }
+  for (const ViewDataset& d : datasets)
+    if (valid_utf8(d.file) && valid_utf8(d.name) && valid_utf8(d.colouring.field)) list += dataset_text(d);
   const std::string where = valid_utf8(folder.string()) ? folder.string() : ".";
   return "# ParaView view written by selfsim. Open it with:  paraview --script=view.py\n"
          "# or render it without a window:                   pvbatch view.py --png view.png\n"
          "SELFSIM_VIEW = {\n    \"folder\": " +
-         python_string(where) + ",\n    \"dimension\": " + (flat ? "2" : "3") +
-         ",  # 2 when every dataset lies in the plane z = 0\n    \"datasets\": [\n" + list + "    ],\n}\n" + view_body;
+         python_string(where) + ",\n    \"datasets\": [\n" + list + "    ],\n}\n" + view_body;
 }
 
 std::string write_paraview_view(std::span<const ViewDataset> datasets, const std::filesystem::path& root,

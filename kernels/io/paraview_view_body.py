@@ -181,7 +181,8 @@ def show_dataset(d, reader, view, bar_index, bar_count, solid, named):
     # different ranges or kinds must not share one.
     ColorBy(display, (d["association"], d["field"]), separate=True)
     lut = GetColorTransferFunction(d["field"], display, separate=True)
-    low, high = d["range"]
+    # No range: the field's values overflowed (the writer keeps non-finite numbers out of this file).
+    low, high = d["range"] if d["range"] is not None else (0.0, 1.0)
     if d["categorical"]:
         colour_categorical(lut, d["categories"])
     else:

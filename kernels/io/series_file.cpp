@@ -1,5 +1,7 @@
 #include "kernels/io/series_file.h"
 
+#include <sys/stat.h>
+
 #include <cmath>
 #include <fstream>
 #include <set>
@@ -9,6 +11,7 @@
 #include "kernels/geom/lower_case.h"
 #include "kernels/io/output_file.h"
 #include "kernels/io/read_error.h"
+#include "kernels/io/utf8.h"
 #include "kernels/io/xml_text.h"
 
 namespace selfsim::io {
@@ -34,6 +37,11 @@ SeriesName parse_name(const std::string& name) {
     n.stem = leaf.substr(0, leaf.size() - 4);
   } else if (ends_with(lower, ".series")) {
     n.json = true;
+    // ParaView matches ".vtp.series" case-sensitively: "X.VTP.SERIES" would find no reader.
+    const std::string end = lower.substr(lower.size() - std::min<std::size_t>(lower.size(), 11));
+    if ((end == ".vtp.series" || end == ".vtu.series") && !ends_with(leaf, end))
+      throw Error("'" + name + "': ParaView reads a .series file only when its extension is in lower case, '" +
+                  leaf.substr(0, leaf.size() - 11) + end + "'");
     const std::string inner = lower.substr(0, lower.size() - 7);
     if (!ends_with(inner, ".vtp") && !ends_with(inner, ".vtu")) {
       const std::string before = std::filesystem::path(leaf.substr(0, leaf.size() - 7)).extension().string();
@@ -47,6 +55,10 @@ SeriesName parse_name(const std::string& name) {
   } else {
     throw Error("'" + name + "' is not a series name: give it the extension .pvd or .vtp.series");
   }
+  // ParaView reads a series' names as UTF-8 paths in which a backslash separates folders.
+  if (name.find('\\') != std::string::npos)
+    throw Error("'" + name + "': a series name cannot hold a backslash (ParaView reads it as a folder separator)");
+  if (!valid_utf8(name)) throw Error("a series name must be UTF-8 text (ParaView's readers cannot name its steps)");
   if (n.stem.empty() || n.stem == "." || n.stem == "..")
     throw Error("'" + name + "': a series needs a name before its extension, such as 'growth.pvd'");
   return n;
@@ -120,7 +132,7 @@ std::vector<std::string> quoted_values(const std::string& text, const std::strin
     while (i < text.size() && xml_space(text[i])) ++i;
   };
   for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + 1)) {
-    if (at > 0 && !xml_space(text[at - 1])) continue;
+    if (!json && at > 0 && !xml_space(text[at - 1])) continue;  // an attribute, not the end of another's name
     std::size_t i = at + key.size();
     space(i);
     if (i >= text.size() || (text[i] != '=' && text[i] != ':')) continue;
@@ -157,6 +169,8 @@ std::vector<std::filesystem::path> read_series_steps(const std::filesystem::path
   std::vector<std::filesystem::path> steps;
   for (const std::string& name : quoted_values(text, json ? "\"name\"" : "file", json)) {
     const std::filesystem::path p = std::filesystem::path(name).lexically_normal();
+    if (name.find('\0') != std::string::npos)
+      throw Error(cannot_read(series, "it names a step with a NUL byte in its name"));
     if (p.empty() || p.is_absolute() || *p.begin() == "..")
       throw Error(cannot_read(series, "it names a step outside its folder ('" + one_line(name) + "')"));
     steps.push_back(series.parent_path() / p);
@@ -169,6 +183,8 @@ bool is_series_name(const std::string& name) {
   const std::string lower = lower_case(std::filesystem::path(name).filename().string());
   return ends_with(lower, ".pvd") || ends_with(lower, ".series");
 }
+
+std::string series_step_extension(const std::string& name) { return parse_name(name).step_extension; }
 
 std::vector<std::string> series_step_names(const std::string& name, std::size_t count) {
   const SeriesName n = parse_name(name);
@@ -188,33 +204,75 @@ SeriesFiles save_series(std::span<const SeriesStep> steps, const std::filesystem
       throw Error("the times of a series must increase: step " + std::to_string(i + 1) + " has " +
                   number_text(steps[i].time) + " after " + number_text(steps[i - 1].time));
   }
-  SeriesFiles written;
-  std::vector<std::string> in_series;  // relative to the series file's folder
-  std::set<std::string> leaves;
-  for (std::size_t i = 0; i < steps.size(); ++i) {
-    const std::string leaf = step_leaf(n, i, steps.size());
-    const std::string relative = (std::filesystem::path(n.stem) / leaf).generic_string();
-    try {
-      save(steps[i].value, root, (n.folder / relative).string(), opt, progress);
-    } catch (const Cancelled&) {
-      throw;
-    } catch (const BudgetError&) {
-      throw;
-    } catch (const Error& e) {
-      throw Error("step " + std::to_string(i + 1) + " of '" + name + "': " + e.what());
+  // The steps the series file there now names (an earlier run's): once the new one is in place, those it
+  // does not name are removed, and nothing else in the folder is.
+  std::set<std::string> old_steps;
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(root / name, ec)) try {
+      for (const std::filesystem::path& p : read_series_steps(root / name))
+        if (p.parent_path() == (root / n.folder / n.stem).lexically_normal()) old_steps.insert(p.filename().string());
+    } catch (const Error&) {
+      // Not a series we can read: nothing of it is removed.
     }
-    written.steps.push_back((n.folder / relative).string());
-    in_series.push_back(relative);
-    leaves.insert(leaf);
+  const std::filesystem::path folder = n.folder / n.stem;
+  {
+    struct stat st {};
+    if (::lstat((root / folder).c_str(), &st) == 0 && !S_ISDIR(st.st_mode))
+      throw Error("'" + name + "' writes its steps into the folder '" + folder.string() + "/', but '" +
+                  folder.string() + "' is " + (S_ISLNK(st.st_mode) ? "a symbolic link" : "a file") +
+                  "; give the series another name");
   }
+  // Each step is written whole under a hidden name first; only when every step is there are they renamed
+  // into place and the series file written. A run that fails or is stopped before then leaves the old
+  // series as it was, its steps untouched.
+  auto hidden = [&](const std::string& leaf) { return "." + leaf + ".new" + n.step_extension; };
+  // Never throws: it runs while another error is on its way, and before a write that reports its own.
+  auto remove_hidden = [&]() noexcept {
+    std::error_code missing;
+    if (!std::filesystem::is_directory(std::filesystem::symlink_status(root / folder, missing))) return;
+    try {
+      remove_files(root, folder, [&](const std::string& leaf) {
+        const std::string end = ".new" + n.step_extension;
+        return leaf.size() > 1 + end.size() && leaf[0] == '.' && ends_with(leaf, end) &&
+               is_step_leaf(n, leaf.substr(1, leaf.size() - 1 - end.size()));
+      });
+    } catch (const std::exception&) {
+      // A folder we cannot list holds no hidden steps of ours to remove.
+    }
+  };
+  remove_hidden();  // a killed earlier run's
+  SeriesFiles written;
+  std::vector<std::string> in_series, leaves;  // in_series: relative to the series file's folder
+  try {
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+      const std::string leaf = step_leaf(n, i, steps.size());
+      try {
+        save(steps[i].value, root, (folder / hidden(leaf)).string(), opt, progress);
+      } catch (const Cancelled&) {
+        throw;
+      } catch (const BudgetError&) {
+        throw;
+      } catch (const Error& e) {
+        throw Error("step " + std::to_string(i + 1) + " of '" + name + "': " + e.what());
+      }
+      leaves.push_back(leaf);
+      in_series.push_back((std::filesystem::path(n.stem) / leaf).generic_string());
+      written.steps.push_back((folder / leaf).string());
+    }
+    if (progress.cancelled()) throw Cancelled();
+  } catch (...) {
+    remove_hidden();
+    throw;
+  }
+  for (const std::string& leaf : leaves) rename_file(root, folder, hidden(leaf), leaf);
   OutputFile out(root, name);
   out.write(n.json ? series_text(in_series, steps) : pvd_text(in_series, steps));
-  if (progress.cancelled()) throw Cancelled();
   out.commit();
   written.series = out.path();
-  // The old series' steps that this one does not name: only now, once the new series file is in place.
-  remove_files(root, n.folder / n.stem,
-               [&](const std::string& leaf) { return is_step_leaf(n, leaf) && leaves.count(leaf) == 0; });
+  const std::set<std::string> kept(leaves.begin(), leaves.end());
+  remove_files(root, folder, [&](const std::string& leaf) {
+    return old_steps.count(leaf) && !kept.count(leaf) && is_step_leaf(n, leaf);
+  });
   return written;
 }
 

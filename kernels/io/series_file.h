@@ -22,6 +22,9 @@ namespace selfsim::io {
 // Whether `name` asks for a series (ends in .pvd or .series, any case).
 bool is_series_name(const std::string& name);
 
+// The extension of a series' step files: ".vtu" for NAME.vtu.series, else ".vtp". Throws Error for a bad name.
+std::string series_step_extension(const std::string& name);
+
 struct SeriesStep {
   ValueRef value;
   double time = 0;
@@ -41,7 +44,8 @@ std::vector<std::string> series_step_names(const std::string& name, std::size_t 
 SeriesFiles save_series(std::span<const SeriesStep> steps, const std::filesystem::path& root, const std::string& name,
                         const SaveOptions& opt, Progress& progress);
 
-// The step files a series file names, in order, as paths beside it (read back for `preview` and `info`).
+// The step files a series file names, in the order it lists them (selfsim writes them by increasing time),
+// as paths beside it: read back for `preview` and `info`, and to find the steps a rewrite replaces.
 // Throws Error ("cannot read 'FILE': ...") for a file that is not a series, names no step, is over 64 MiB,
 // or names a step outside its folder (an absolute path, or one through '..').
 std::vector<std::filesystem::path> read_series_steps(const std::filesystem::path& series);

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <mutex>
 
+#include "kernels/geom/check.h"
 #include "kernels/geom/error.h"
 #include "kernels/io/child_process.h"
 #include "kernels/io/dataset_pipe.h"
@@ -184,7 +185,7 @@ void send_surface(PipeOut& out, openvdb::io::File& file) {
     for (auto v = grid->cbeginValueOn(); v && !negative; ++v) negative = *v < 0;
     if (!negative) {  // an unsigned distance: no inside, so a thin shell around the surface
       iso = 0.5 * grid->voxelSize()[0];
-      what += " (no negative values: drawn at half a voxel, " + std::to_string(iso) + ")";
+      what += " (no negative values: drawn at half a voxel, " + number_text(iso) + ")";
     } else {
       what += " at 0";
     }
@@ -197,7 +198,7 @@ void send_surface(PipeOut& out, openvdb::io::File& file) {
   std::vector<openvdb::Vec3I> triangles;
   std::vector<openvdb::Vec4I> quads;
   openvdb::tools::volumeToMesh(*grid, points, triangles, quads, iso, 0.0);
-  if (points.empty()) throw Error("grid '" + shown(grid->getName()) + "' has no surface at " + std::to_string(iso));
+  if (points.empty()) throw Error("grid '" + shown(grid->getName()) + "' has no surface at " + number_text(iso));
   out.write("D", 1);
   put_name(out, grid->getName());
   put_name(out, what);

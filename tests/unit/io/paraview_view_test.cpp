@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 using namespace selfsim;
 
 namespace {
@@ -26,7 +28,6 @@ TEST(ParaviewView, NamesEachDatasetWithItsColouring) {
   ds[0].colouring = {"tile_class", false, true, 0, 4, {0, 2, 4}};
   const std::string text = io::paraview_view_text(ds, "/data/out");
   EXPECT_NE(text.find("\"folder\": \"/data/out\""), std::string::npos);
-  EXPECT_NE(text.find("\"dimension\": 3"), std::string::npos);
   EXPECT_NE(
       text.find(
           "{\"file\": \"growth.pvd\", \"name\": \"growth\", \"role\": \"surface\", \"series\": True, \"flat\": False"),
@@ -40,9 +41,17 @@ TEST(ParaviewView, NamesEachDatasetWithItsColouring) {
   EXPECT_NE(text.find("from paraview.simple import"), std::string::npos);  // the body
 }
 
-TEST(ParaviewView, FlatDatasetsMakeATopView) {
+TEST(ParaviewView, FlatDatasetsAreMarkedForATopView) {
   std::vector<io::ViewDataset> ds{dataset("a.vtp", io::ViewRole::curve, true)};
-  EXPECT_NE(io::paraview_view_text(ds, "/o").find("\"dimension\": 2"), std::string::npos);
+  EXPECT_NE(io::paraview_view_text(ds, "/o").find("\"flat\": True"), std::string::npos);
+}
+
+TEST(ParaviewView, ARangeThatIsNotFiniteIsNone) {
+  std::vector<io::ViewDataset> ds{dataset("a.vtp", io::ViewRole::curve, true)};
+  ds[0].colouring = {"arclength", true, false, 0, std::numeric_limits<double>::infinity(), {}};
+  const std::string text = io::paraview_view_text(ds, "/o");
+  EXPECT_NE(text.find("\"range\": None"), std::string::npos) << text;
+  EXPECT_EQ(text.find("inf"), std::string::npos);
 }
 
 TEST(ParaviewView, QuotesAndBackslashesInNamesStayInsideTheString) {
@@ -52,8 +61,9 @@ TEST(ParaviewView, QuotesAndBackslashesInNamesStayInsideTheString) {
 }
 
 TEST(ParaviewView, NamesThatAreNotUtf8AreLeftOut) {
-  std::vector<io::ViewDataset> ds{dataset("ok.vtp", io::ViewRole::curve, true),
-                                  dataset("bad\xff.vtp", io::ViewRole::curve, true)};
+  std::vector<io::ViewDataset> ds{
+      dataset("ok.vtp", io::ViewRole::curve, true), dataset("bad\xff.vtp", io::ViewRole::curve, true),
+      dataset("bad\xed\xa0\x80.vtp", io::ViewRole::curve, true), dataset("bad\xc0\x80.vtp", io::ViewRole::curve, true)};
   const std::string text = io::paraview_view_text(ds, "/o");
   EXPECT_NE(text.find("ok.vtp"), std::string::npos);
   EXPECT_EQ(text.find("bad"), std::string::npos);

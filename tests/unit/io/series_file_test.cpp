@@ -133,3 +133,31 @@ TEST(SeriesFile, StepsFolderThatIsALinkIsRefused) {
   EXPECT_THROW(io::save_series(steps_of(curves), dir.path, "g.pvd", {}, no_progress()), Error);
   EXPECT_TRUE(fs::is_empty(outside));
 }
+
+TEST(SeriesFile, AStepNamedLikeOneButNotInTheOldSeriesIsKept) {
+  TempDir dir;
+  const auto curves = growing(3);
+  io::save(&curves[0], dir.path, "growth/growth_9.vtp", {}, no_progress());  // the recipe's own file
+  io::save_series(steps_of(curves), dir.path, "growth.pvd", {}, no_progress());
+  const std::vector<Polyline> fewer(curves.begin(), curves.begin() + 1);
+  io::save_series(steps_of(fewer), dir.path, "growth.pvd", {}, no_progress());
+  EXPECT_TRUE(fs::exists(dir.path / "growth/growth_9.vtp"));
+  EXPECT_FALSE(fs::exists(dir.path / "growth/growth_1.vtp"));
+  EXPECT_FALSE(fs::exists(dir.path / "growth/growth_001.vtp"));
+}
+
+TEST(SeriesFile, ARewriteThatFailsLeavesTheOldSeriesAndItsStepsAsTheyWere) {
+  TempDir dir;
+  const auto curves = growing(3);
+  io::save_series(steps_of(curves), dir.path, "growth.pvd", {}, no_progress());
+  const std::string pvd = text_of(dir.path / "growth.pvd"), step0 = text_of(dir.path / "growth/growth_000.vtp");
+  auto other = growing(4);
+  other[3].points[0].x = std::nan("");  // the last step cannot be written
+  std::reverse(other.begin(), other.end() - 1);
+  EXPECT_THROW(io::save_series(steps_of(other), dir.path, "growth.pvd", {}, no_progress()), Error);
+  EXPECT_EQ(text_of(dir.path / "growth.pvd"), pvd);
+  EXPECT_EQ(text_of(dir.path / "growth/growth_000.vtp"), step0);
+  std::size_t files = 0;
+  for (const auto& e : fs::directory_iterator(dir.path / "growth")) files += e.is_regular_file();
+  EXPECT_EQ(files, 3u);  // no hidden step left behind
+}

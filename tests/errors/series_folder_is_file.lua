@@ -1,0 +1,3 @@
+local a = polyline { { 0, 0 }, { 1, 0 } }
+save(a, "x.vtp")
+save({ a, a }, "x.vtp.pvd")
