@@ -4,6 +4,8 @@
 #include <cmath>
 #include <set>
 
+#include "kernels/geom/error.h"
+
 namespace selfsim::io {
 namespace {
 
@@ -13,10 +15,11 @@ bool is_class_field(const std::string& name) {
 
 // Fills min, max and (for integer fields) distinct from values(i), i < count.
 template <class Get>
-void measure(FieldSummary& s, std::size_t count, Get values) {
+void measure(FieldSummary& s, std::size_t count, Get values, Progress& progress = no_progress()) {
   std::set<int> seen;
   bool first = true;
   for (std::size_t i = 0; i < count; ++i) {
+    if ((i & 0xfffff) == 0xfffff && progress.cancelled()) throw Cancelled();
     const double v = values(i);
     if (first || v < s.min) s.min = v;
     if (first || v > s.max) s.max = v;
@@ -26,11 +29,13 @@ void measure(FieldSummary& s, std::size_t count, Get values) {
   s.distinct.assign(seen.begin(), seen.end());
 }
 
-void add_fields(std::vector<FieldSummary>& out, const Fields& fields, std::size_t count, bool on_points) {
+void add_fields(std::vector<FieldSummary>& out, const Fields& fields, std::size_t count, bool on_points,
+                Progress& progress) {
   for (const Field& f : fields.list) {
     FieldSummary s{f.name, on_points, f.scalar() == Scalar::Int32, f.components, 0, 0, {}};
     if (f.components == 1)
-      measure(s, f.uniform ? std::min<std::size_t>(count, 1) : count, [&](std::size_t i) { return f.at(i); });
+      measure(
+          s, f.uniform ? std::min<std::size_t>(count, 1) : count, [&](std::size_t i) { return f.at(i); }, progress);
     out.push_back(std::move(s));
   }
 }
@@ -76,10 +81,10 @@ Colouring natural_colouring(std::span<const FieldSummary> fields) {
 }
 
 std::vector<FieldSummary> summarise(const Fields& points, std::size_t point_count, const Fields& cells,
-                                    std::size_t cell_count) {
+                                    std::size_t cell_count, Progress& progress) {
   std::vector<FieldSummary> out;
-  add_fields(out, points, point_count, true);
-  add_fields(out, cells, cell_count, false);
+  add_fields(out, points, point_count, true, progress);
+  add_fields(out, cells, cell_count, false, progress);
   return out;
 }
 
@@ -90,21 +95,24 @@ std::vector<FieldSummary> summarise(const Dataset& d) {
   return out;
 }
 
-std::vector<FieldSummary> summarise(const ValueRef& v) {
+std::vector<FieldSummary> summarise(const ValueRef& v, Progress& progress) {
   return std::visit(
-      [](const auto* value) {
+      [&](const auto* value) {
         using T = std::decay_t<decltype(*value)>;
         if constexpr (std::is_same_v<T, Mesh>) {
-          return summarise(value->point_fields, value->points.size(), value->face_fields, value->faces());
+          return summarise(value->point_fields, value->points.size(), value->face_fields, value->faces(), progress);
         } else {
           std::vector<FieldSummary> out =
-              summarise(value->point_fields, value->points.size(), value->cell_fields, value->paths());
+              summarise(value->point_fields, value->points.size(), value->cell_fields, value->paths(), progress);
           if (!value->point_fields.find("arclength")) {
             double longest = 0;
             for (std::size_t p = 0; p < value->paths(); ++p) {
               double length = 0;
               const auto path = value->path(p);
-              for (std::size_t i = 1; i < path.size(); ++i) length += norm(path[i] - path[i - 1]);
+              for (std::size_t i = 1; i < path.size(); ++i) {
+                if ((i & 0xfffff) == 0xfffff && progress.cancelled()) throw Cancelled();
+                length += norm(path[i] - path[i - 1]);
+              }
               longest = std::max(longest, length);
             }
             out.push_back(FieldSummary{"arclength", true, false, 1, 0, longest, {}});
@@ -115,13 +123,13 @@ std::vector<FieldSummary> summarise(const ValueRef& v) {
       v);
 }
 
-Colouring series_colouring(std::span<const ValueRef> steps) {
+Colouring series_colouring(std::span<const ValueRef> steps, Progress& progress) {
   if (steps.empty()) return {};
-  Colouring c = natural_colouring(summarise(steps.back()));
+  Colouring c = natural_colouring(summarise(steps.back(), progress));
   if (c.field.empty()) return c;
   std::set<int> categories(c.categories.begin(), c.categories.end());
   for (const ValueRef& step : steps)
-    for (const FieldSummary& f : summarise(step))
+    for (const FieldSummary& f : summarise(step, progress))
       if (f.name == c.field && f.on_points == c.on_points && f.components == 1) {
         c.min = std::min(c.min, f.min);
         c.max = std::max(c.max, f.max);

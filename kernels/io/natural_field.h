@@ -41,14 +41,15 @@ struct Colouring {
 Colouring natural_colouring(std::span<const FieldSummary> fields);
 
 // The summaries of a value's fields (points first, then cells), and of a file's fields read back.
+// Each looks for a stop every 2^20 values.
 std::vector<FieldSummary> summarise(const Fields& points, std::size_t point_count, const Fields& cells,
-                                    std::size_t cell_count);
+                                    std::size_t cell_count, Progress& progress = no_progress());
 std::vector<FieldSummary> summarise(const Dataset& d);
 // A value's fields as its VTK file holds them: a curve's file adds `arclength` (along each path).
-std::vector<FieldSummary> summarise(const ValueRef& v);
+std::vector<FieldSummary> summarise(const ValueRef& v, Progress& progress = no_progress());
 
 // The natural colouring of a time series: the last step's field, its range and categories over every step
 // (so the colours mean the same at every step). Empty steps: none.
-Colouring series_colouring(std::span<const ValueRef> steps);
+Colouring series_colouring(std::span<const ValueRef> steps, Progress& progress = no_progress());
 
 }  // namespace selfsim::io
