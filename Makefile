@@ -60,7 +60,7 @@ demo: deps build
 	$(BUILD)/selfsim preview out/*.svg out/*.vtp out/*.stl out/*.pvd
 	SELFSIM_PARAVIEW_PYTHON=$(PARAVIEW_PYTHON) scripts/pvbatch-selfsim out/view.py --png out/view.png
 	@echo
-	@echo "Done: $$(ls out | wc -l) files in $$(pwd)/out: .png pictures of everything, .svg for a browser, .vtp and"
+	@echo "Done: $$(find out -type f | wc -l) files in $$(pwd)/out: .png pictures of everything, .svg for a browser, .vtp and"
 	@echo ".pvd time series for ParaView, .stl for a slicer. Open the whole gallery in ParaView, as designed:"
 	@echo "    scripts/pvbatch-selfsim --gui out/view.py     (or: paraview --script=out/view.py)"
 

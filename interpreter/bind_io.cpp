@@ -144,6 +144,11 @@ int save(lua_State* L) {
     }
     if (lua_type(L, 2) == LUA_TSTRING && io::is_series_name(lua_tostring(L, 2))) return save_series(L);
     if (lua_type(L, 1) == LUA_TTABLE) {  // save({ a, b }, ...): the group of the list
+      // A list with times is a series (v:levels()): say so rather than call it a bad group.
+      if (lua_getfield(L, 1, "times") != LUA_TNIL)
+        throw Error("a list with 'times' is a time series (v:levels()): save it as .pvd or .vtp.series, got '" +
+                    shown_text(lua_type(L, 2) == LUA_TSTRING ? lua_tostring(L, 2) : "") + "'");
+      lua_pop(L, 1);
       push_group(L, 1, "save({...}, ...)");
       lua_replace(L, 1);
     }

@@ -19,23 +19,27 @@ usage:
                             (default 268435456)
       --max-memory SIZE     memory for the recipe's Lua strings and tables, e.g. 2G
                             (default: a quarter of this machine's memory)
-      --timeout S           stop the run after S seconds (default: none)
+      --timeout S           stop the run after S seconds (default: none); the run exits 1
       --seed N              seed for math.random (default 0): same seed, same files
       -h, --help            this text
       --threads N           threads for parallel kernels (default: all cores); the files are
                             byte-identical for any N
+      --no-view             do not write view.py, the ParaView view of the run's VTK outputs
+                            (written whenever the run saved a .vtp, .vtu, .pvd or .vtp.series)
       -q, --quiet           print nothing but errors
   selfsim diff A B [--tol T] compare two geometry files (.vtp .vtu .svg .stl .obj .ply) point by point,
                              cell by cell and field by field; T is relative (default 1e-9).
                              Exit 0 same, 1 different, 2 error
   selfsim info FILE          points, cells, bounding box and fields of a geometry file, and for a
                              surface whether it is a closed manifold; for a .vdb, each grid's name,
-                             class, value type, voxel size, active voxels and bounding boxes
+                             class, value type, voxel size, active voxels and bounding boxes; for a
+                             .pvd or .vtp.series, its steps and then the last one
   selfsim preview FILE... [-o DIR] [-q]
-                             a PNG picture of each file (.vtp .vtu .svg .stl .obj .ply, and .vdb as its
-                             surface): NAME.png beside it, or in DIR. Curves and flat drawings from above,
+                             a PNG picture of each file (.vtp .vtu .svg .stl .obj .ply, .vdb as its
+                             surface, .pvd/.vtp.series as its last step): NAME.png beside it, or in DIR. Curves and flat drawings from above,
                              anything else shaded from two sides, coloured by the field a ParaView view
-                             uses. Needs an X display; without one it starts Xvfb (apt-get install xvfb)
+                             uses. Needs an X display; without one it starts Xvfb (apt-get install xvfb).
+                             Exit 1 when a file could not be drawn (the others still are)
   selfsim --help | --version
 
 exit codes: 0 success, 1 recipe error, 2 usage error, 130 interrupted

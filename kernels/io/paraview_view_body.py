@@ -94,8 +94,9 @@ def colour_categorical(lut, categories):
     lut.InterpretValuesAsCategories = 1
 
 
-def style_scalar_bar(bar, title, index, count, categories):
-    """Bars side by side along the right edge, dark text, the field's name as the title."""
+def style_scalar_bar(bar, title, index, count, categories, below):
+    """Dark text, the field's name as the title; bars stacked along the right edge, or (`below`: a view
+    sharing the window with others, too narrow for a bar beside what it shows) one across the bottom."""
     bar.Title = title
     bar.ComponentTitle = ""
     bar.TitleColor = TEXT
@@ -104,9 +105,14 @@ def style_scalar_bar(bar, title, index, count, categories):
     bar.LabelFontSize = 14
     bar.RangeLabelFormat = "%.4g"        # 256 rather than ParaView's 2.6e+02 at the ends
     bar.WindowLocation = "Any Location"
-    bar.Orientation = "Vertical"
-    bar.ScalarBarLength = 0.8 if count == 1 else max(0.25, 0.85 / count)
-    bar.Position = [0.90, 0.1] if count == 1 else [0.90, 0.05 + (count - 1 - index) * 0.9 / count]
+    if below:
+        bar.Orientation = "Horizontal"
+        bar.ScalarBarLength = 0.7 / count
+        bar.Position = [0.15 + index * 0.7 / count, 0.03]
+    else:
+        bar.Orientation = "Vertical"
+        bar.ScalarBarLength = 0.8 if count == 1 else max(0.25, 0.85 / count)
+        bar.Position = [0.90, 0.1] if count == 1 else [0.90, 0.05 + (count - 1 - index) * 0.9 / count]
     if categories and len(categories) > 40:
         # Every class would get a label too small to read; the colours still tell the classes apart.
         bar.DrawAnnotations = 0
@@ -137,6 +143,11 @@ def inside(inner, outer):
     slack = 0.01 * size
     return all(inner[2 * a] >= outer[2 * a] - slack and inner[2 * a + 1] <= outer[2 * a + 1] + slack
                for a in range(3))
+
+
+def union(boxes):
+    """The bounds holding every one of `boxes`."""
+    return [min(b[a] for b in boxes) if a % 2 == 0 else max(b[a] for b in boxes) for a in range(6)]
 
 
 def scenes_of(datasets, bounds):
@@ -189,11 +200,31 @@ def show_dataset(d, reader, view, bar_index, bar_count, solid, named):
         colour_continuous(display, lut, d["field"], low, high)
     display.SetScalarBarVisibility(view, True)
     title = d["name"] + ": " + d["field"] if named or bar_count > 1 else d["field"]
-    style_scalar_bar(GetScalarBar(lut, view), title, bar_index, bar_count, d["categories"])
+    style_scalar_bar(GetScalarBar(lut, view), title, bar_index, bar_count, d["categories"], named)
     return True
 
 
-def place_camera(view, flat):
+def fit_flat(view, bounds, below):
+    """A top view that shows all of `bounds` whatever the view's shape: ParaView's own fit scales to the
+    view's height, which cuts a wide drawing in a narrow view. A small margin all round, and the right edge
+    (a scalar bar beside) or the bottom (`below`: a bar across it) left free."""
+    width, height = [max(1, int(x)) for x in view.ViewSize]
+    margin = 0.04
+    left, right = margin, (margin if below else 0.15)
+    bottom, top = (0.22 if below else margin), margin
+    usable_w, usable_h = 1.0 - left - right, 1.0 - bottom - top
+    dx, dy = bounds[1] - bounds[0], bounds[3] - bounds[2]
+    half = 0.5 * max(dy / usable_h, dx * height / (width * usable_w), 1e-12)  # half the visible height
+    seen_w, seen_h = 2.0 * half * width / height, 2.0 * half
+    # The drawing's centre goes to the centre of the free part of the view.
+    cx = 0.5 * (bounds[0] + bounds[1]) - (left + 0.5 * usable_w - 0.5) * seen_w
+    cy = 0.5 * (bounds[2] + bounds[3]) - (bottom + 0.5 * usable_h - 0.5) * seen_h
+    view.CameraFocalPoint = [cx, cy, 0.0]
+    view.CameraPosition = [cx, cy, 1.0]
+    view.CameraParallelScale = half
+
+
+def place_camera(view, flat, bounds, below):
     if flat:
         # Everything lies in z = 0: look straight down, without perspective, and keep the GUI's mouse from
         # tilting it out of the plane.
@@ -213,24 +244,33 @@ def place_camera(view, flat):
         view.OrientationAxesVisibility = 1
     # Keep that direction, move and zoom to fit what is shown at the current (last) time.
     view.ResetCamera(False)
+    if flat:
+        fit_flat(view, bounds, below)
+    elif below:
+        # A bar across the bottom: step back a little so the shape clears it.
+        view.GetActiveCamera().Dolly(0.8)
 
 
-def place_views(layout, cell, views, across):
+def place_views(layout, cell, views, across, size, sizes):
     """Puts the views into the layout's cell as a balanced grid: the cell is split in two (across, then
     down, alternately) in proportion to the views on each side. Splitting a cell moves the view it holds
-    to the first half, where views[0], the view already in the layout, belongs."""
+    to the first half, where views[0], the view already in the layout, belongs. `sizes` gets each view's
+    share of `size` (the cell's width and height in pixels)."""
     if len(views) == 1:
         if layout.GetViewLocation(views[0]) != cell:
             layout.AssignView(cell, views[0])
+        sizes.append(size)
         return
     half = (len(views) + 1) // 2
     fraction = half / float(len(views))
     if across:
         layout.SplitHorizontal(cell, fraction)
+        first, second = [int(size[0] * fraction), size[1]], [size[0] - int(size[0] * fraction), size[1]]
     else:
         layout.SplitVertical(cell, fraction)
-    place_views(layout, 2 * cell + 1, views[:half], not across)
-    place_views(layout, 2 * cell + 2, views[half:], not across)
+        first, second = [size[0], int(size[1] * fraction)], [size[0], size[1] - int(size[1] * fraction)]
+    place_views(layout, 2 * cell + 1, views[:half], not across, first, sizes)
+    place_views(layout, 2 * cell + 2, views[half:], not across, second, sizes)
 
 
 def main():
@@ -238,7 +278,8 @@ def main():
     png = screenshot_path()
     datasets = SELFSIM_VIEW["datasets"]
     readers = [open_dataset(folder, d) for d in datasets]
-    scenes = scenes_of(datasets, [last_bounds(r) for r in readers])
+    bounds = [last_bounds(r) for r in readers]
+    scenes = scenes_of(datasets, bounds)
     # The views side by side in one layout (a grid of about equal rows and columns); the first is the
     # GUI's own view.
     first = GetActiveViewOrCreate("RenderView")
@@ -251,7 +292,13 @@ def main():
         # not magnified from a small default window.
         layout.SetSize(1200, 800)
     views = [first] + [CreateView("RenderView") for _ in scenes[1:]]
-    place_views(layout, 0, views, True)
+    sizes = []
+    place_views(layout, 0, views, True, [1200, 800], sizes)
+    if png:
+        # pvbatch: each view at its share of the picture, so fonts, bars and the camera's fit are made for
+        # that size (the GUI sizes its views itself).
+        for view, size in zip(views, sizes):
+            view.ViewSize = size
     shown = []
     for view, scene in zip(views, scenes):
         # A light background of this view only (not ParaView's global palette, which the GUI user owns).
@@ -263,15 +310,15 @@ def main():
         for k, i in enumerate(scene):
             # With several views, each bar names its dataset: the views do not say what they show.
             bars += show_dataset(datasets[i], readers[i], view, bars, len(coloured), k, len(scenes) > 1)
-        shown.append((view, all(datasets[i]["flat"] for i in scene)))
+        shown.append((view, all(datasets[i]["flat"] for i in scene), union([bounds[i] for i in scene])))
 
     # Time series: the animation (the VCR controls in the GUI) steps through the data's own time steps, and
     # the views open on the last one, the grown result.
     scene = GetAnimationScene()
     scene.UpdateAnimationUsingDataTimeSteps()
     scene.GoToLast()
-    for view, flat in shown:
-        place_camera(view, flat)
+    for view, flat, box in shown:
+        place_camera(view, flat, box, len(scenes) > 1)
         Render(view)
     if png:
         SaveScreenshot(png, layout, ImageResolution=[1200, 800])

@@ -101,18 +101,30 @@ void continuous_table(vtkLookupTable* lut, double lo, double hi) {
   lut->SetTableRange(lo, hi > lo ? hi : lo + 1);
 }
 
-// Distinct colours for classes: hues a golden angle apart, three lightness and saturation steps, so that
-// neighbouring class numbers never look alike and 256 classes still separate.
+// One channel of a colour given as hue, lightness and saturation (the standard HLS model).
+double hls_channel(double m1, double m2, double h) {
+  h -= std::floor(h);
+  if (h < 1.0 / 6) return m1 + (m2 - m1) * h * 6;
+  if (h < 0.5) return m2;
+  if (h < 2.0 / 3) return m1 + (m2 - m1) * (2.0 / 3 - h) * 6;
+  return m1;
+}
+
+// Distinct colours for classes, the same as a ParaView view's (paraview_view_body.py, category_colours):
+// hues a golden angle apart from a blue, three lightness and saturation steps out of phase with them, so
+// that neighbouring class numbers never look alike and 256 classes still separate.
 void category_table(vtkLookupTable* lut, const std::vector<int>& categories) {
   const auto n = static_cast<vtkIdType>(categories.size());
   lut->IndexedLookupOn();
   lut->SetNumberOfTableValues(std::max<vtkIdType>(n, 1));
+  const double golden = (3 - std::sqrt(5.0)) / 2;  // the golden angle, in turns
+  static const double lightness[3] = {0.50, 0.68, 0.36}, saturation[3] = {0.75, 0.55, 0.90};
   for (vtkIdType i = 0; i < n; ++i) {
-    const double hue = std::fmod(0.08 + static_cast<double>(i) * 0.3819660112501051, 1.0);
-    static const double saturation[3] = {0.70, 0.50, 0.85}, value[3] = {0.92, 0.72, 0.55};
-    double rgb[3];
-    vtkMath::HSVToRGB(hue, saturation[i % 3], value[(i / 3) % 3], rgb, rgb + 1, rgb + 2);
-    lut->SetTableValue(i, rgb[0], rgb[1], rgb[2], 1);
+    const double hue = std::fmod(0.58 + static_cast<double>(i) * golden, 1.0);
+    const double l = lightness[i % 3], sat = saturation[(i / 3) % 3];
+    const double m2 = l <= 0.5 ? l * (1 + sat) : l + sat - l * sat, m1 = 2 * l - m2;
+    lut->SetTableValue(i, hls_channel(m1, m2, hue + 1.0 / 3), hls_channel(m1, m2, hue),
+                       hls_channel(m1, m2, hue - 1.0 / 3), 1);
     lut->SetAnnotation(vtkVariant(static_cast<double>(categories[static_cast<std::size_t>(i)])),
                        std::to_string(categories[static_cast<std::size_t>(i)]));
   }
