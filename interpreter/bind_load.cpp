@@ -17,12 +17,13 @@
 #include "kernels/io/dataset_values.h"
 #include "kernels/io/read.h"
 #include "kernels/io/regular_file.h"
+#include "kernels/io/vdb_read.h"
 
 namespace selfsim::interp {
 
 namespace {
 
-const char* const loadable[] = {".vtp", ".vtu", ".stl", ".obj", ".ply", ".svg"};
+const char* const loadable[] = {".vtp", ".vtu", ".stl", ".obj", ".ply", ".svg", ".vdb"};
 
 // Checks `name`: relative, without '..', with a loadable extension.
 void check_name(const std::string& name) {
@@ -68,13 +69,17 @@ int load(lua_State* L) {
 
 }  // namespace
 
-std::variant<Polyline, Polyline3, Mesh> load_value(lua_State* L, const std::string& name) {
+std::variant<Polyline, Polyline3, Mesh> load_value(lua_State* L, const std::string& name, const std::string& grid) {
   check_name(name);
   check_found(RunContext::of(L).config.recipe.parent_path(), name);
   // Opened without following any link, and read through that descriptor: the name cannot be swapped
   // for a link to somewhere else between the check and the read.
   const io::FileBeneath file(RunContext::of(L).config.recipe.parent_path(), name);
-  const io::Dataset read = io::read_dataset(file.name(), name);
+  const bool vdb = lower_case(std::filesystem::path(name).extension().string()) == ".vdb";
+  if (!grid.empty() && !vdb) throw Error("option 'grid' is for .vdb files, not '" + shown_text(name) + "'");
+  // A .vdb file: the surface of its level set (or the grid named), meshed by OpenVDB (vdb_read.h).
+  const io::Dataset read =
+      vdb ? io::read_vdb_surface(file.name(), grid, name).mesh : io::read_dataset(file.name(), name);
   std::variant<Polyline, Polyline3, Mesh> value;
   try {
     value = io::dataset_value(read, RunContext::of(L));

@@ -157,9 +157,19 @@ void send_info(PipeOut& out, openvdb::io::File& file) {
 }
 
 // Chooses the grid (see vdb_read.h), reads it, meshes it and sends the description and the Dataset.
-void send_surface(PipeOut& out, openvdb::io::File& file) {
+void send_surface(PipeOut& out, openvdb::io::File& file, const std::string& wanted) {
   const openvdb::GridPtrVecPtr grids = file.readAllGridMetadata();
   openvdb::GridBase::Ptr chosen;
+  if (grids && !wanted.empty()) {
+    std::string names;
+    for (const openvdb::GridBase::Ptr& g : *grids) {
+      if (g->getName() == wanted) chosen = g;
+      names += (names.empty() ? "'" : ", '") + shown(g->getName()) + "'";
+    }
+    if (!chosen) throw Error("it holds no grid named '" + shown(wanted) + "' (its grids: " + names + ")");
+    if (!chosen->isType<openvdb::FloatGrid>())
+      throw Error("grid '" + shown(wanted) + "' holds " + chosen->valueType() + " values, not a float level set");
+  }
   if (grids)
     for (bool level_set : {true, false})
       for (const openvdb::GridBase::Ptr& g : *grids)
@@ -250,10 +260,12 @@ std::vector<VdbGridInfo> read_vdb_info(const std::filesystem::path& file) {
   });
 }
 
-VdbSurface read_vdb_surface(const std::filesystem::path& file) {
-  return reading(file, [&] {
+VdbSurface read_vdb_surface(const std::filesystem::path& file, const std::string& grid,
+                            const std::filesystem::path& shown_as) {
+  return reading(shown_as.empty() ? file : shown_as, [&] {
     VdbSurface s;
-    read_in_child(file, send_surface, [&](PipeIn& in) {
+    const auto answer = [&](PipeOut& out, openvdb::io::File& f) { send_surface(out, f, grid); };
+    read_in_child(file, answer, [&](PipeIn& in) {
       s.grid = get_name(in);
       s.what = get_name(in);
       s.mesh = receive_dataset(in, read_budget_bytes() / 8);

@@ -39,6 +39,9 @@ struct VdbSurface {
   std::string what;  // "level set 'surface' at 0", for the user
 };
 
-VdbSurface read_vdb_surface(const std::filesystem::path& file);
+// `grid` names the grid to take instead (any float grid); `shown_as` is the name messages give the file (a
+// file opened under another name, FileBeneath::name()), by default `file`.
+VdbSurface read_vdb_surface(const std::filesystem::path& file, const std::string& grid = "",
+                            const std::filesystem::path& shown_as = {});
 
 }  // namespace selfsim::io
