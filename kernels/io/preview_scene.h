@@ -1,15 +1,16 @@
 // The scene of a preview (preview_png.cpp): a Dataset as VTK poly data with its colouring field, and the
-// colour tables. VTK types in its signatures: include it only from the preview's own .cpp files.
+// colour tables. VTK's types are only declared here: the .cpp files that use them include VTK's headers.
 #pragma once
-
-#include <vtkLookupTable.h>
-#include <vtkPolyData.h>
-#include <vtkSmartPointer.h>
 
 #include <vector>
 
 #include "kernels/io/dataset.h"
 #include "kernels/io/natural_field.h"
+
+class vtkLookupTable;
+class vtkPolyData;
+template <class T>
+class vtkSmartPointer;
 
 namespace selfsim::io {
 
