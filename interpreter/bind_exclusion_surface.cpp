@@ -42,7 +42,7 @@ Mesh read_start(lua_State* L, Options& o) {
   return m;
 }
 
-// { stuck = n, voxel = v, region_triangles = n, levels = { { triangles, moves, stuck, seconds }, ... } }
+// { stuck = n, voxel = v, region_triangles = n, levels = { { triangles, moves, stuck, seconds, area }, ... } }
 void push_report(lua_State* L, const exclusion::SurfaceResult& r, double voxel, std::size_t region_triangles,
                  std::size_t start_triangles) {
   lua_createtable(L, 0, 4);
@@ -82,6 +82,17 @@ int exclusion_surface(lua_State* L) {
     opt.radius = o.number("radius", opt.radius);
     opt.factor = o.number("factor", opt.factor);
     opt.levels = static_cast<int>(o.integer("levels", 1, 0, 20));
+    opt.rule = static_cast<exclusion::SurfaceRule>(o.enumeration("exclusion", {"neighbourhood", "strict"}, 0));
+    if (opt.rule == exclusion::SurfaceRule::strict)
+      for (const char* name : {"neighbourhood", "near"})
+        if (o.has(name))
+          throw Error(std::string("option '") + name +
+                      "' applies to exclusion = \"neighbourhood\" only (\"strict\" has none)");
+    // math.huge: the whole surface is the neighbourhood (a comparison, not a guarantee).
+    const bool whole = o.push("neighbourhood") == LUA_TNUMBER && lua_tonumber(L, -1) == HUGE_VAL;
+    lua_pop(L, 1);
+    opt.neighbourhood = whole ? HUGE_VAL : o.number("neighbourhood", opt.neighbourhood);
+    opt.near = o.number("near", opt.near);
     opt.keep_levels = true;  // f:levels() and growth series need no second run
     o.finish();
     opt.validate();

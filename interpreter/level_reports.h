@@ -10,7 +10,7 @@
 
 namespace selfsim::interp {
 
-// Pushes { { [triangles =,] <splits_name> =, stuck =, seconds = }, ... }. `triangles` (start_triangles
+// Pushes { { [triangles =,] <splits_name> =, stuck =, seconds = [, area =] }, ... }. `triangles` (start_triangles
 // times 4 per level) only when start_triangles is given.
 inline void push_level_reports(lua_State* L, const std::vector<exclusion::LevelReport>& levels, const char* splits_name,
                                std::size_t start_triangles = 0) {
@@ -29,6 +29,10 @@ inline void push_level_reports(lua_State* L, const std::vector<exclusion::LevelR
     lua_setfield(L, -2, "stuck");
     lua_pushnumber(L, levels[i].seconds);
     lua_setfield(L, -2, "seconds");
+    if (levels[i].area >= 0) {
+      lua_pushnumber(L, levels[i].area);
+      lua_setfield(L, -2, "area");
+    }
     lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
   }
 }

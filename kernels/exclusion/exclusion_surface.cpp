@@ -106,6 +106,10 @@ void SurfaceOptions::validate() const {
   check_between(radius, 1e-300, 1e300, "option 'radius'");
   if (!(factor > 0 && factor <= 1)) throw Error("option 'factor' must be in (0, 1], got " + number_text(factor));
   check_range(levels, 0, 20, "option 'levels'");
+  if (!(neighbourhood > 0 && (neighbourhood <= 1000 || std::isinf(neighbourhood))))
+    throw Error("option 'neighbourhood' must be in (0, 1000] radii or math.huge (the whole surface), got " +
+                number_text(neighbourhood));
+  if (!(near >= 1e-6 && near < 1)) throw Error("option 'near' must be in [1e-6, 1) radii, got " + number_text(near));
 }
 
 double surface_size(const Mesh& start, int levels, bool keep_levels) {
@@ -149,6 +153,7 @@ SurfaceResult exclusion_surface(const Mesh& boundary, const Mesh& start, const S
                 number_text(last) + " in double precision: move it nearer the origin");
 
   Surfaces s(local_boundary, local_start, final_counts.points, final_counts.triangles);
+  if (opt.rule == SurfaceRule::neighbourhood) s.set_neighbourhood(opt.neighbourhood, opt.near);
   SurfaceResult result;
   // In the caller's coordinates, the start points exactly as given.
   auto in_place = [&](Mesh m) {
@@ -169,6 +174,7 @@ SurfaceResult exclusion_surface(const Mesh& boundary, const Mesh& start, const S
     if (opt.keep_levels) result.steps.push_back(in_place(s.result()));
     s.subdivide(level, r);
     s.grow(r, report, progress);
+    report.area = s.area() / (n.scale * n.scale);
     report.seconds = since(begun);
     result.levels.push_back(report);
   }

@@ -27,10 +27,23 @@
 
 namespace selfsim::exclusion {
 
+// Which pieces a move may bring nearer than the radius (README, "Exclusion surfaces", says what each
+// guarantees).
+//   neighbourhood: pieces of the moving point's own neighbourhood — corners within `neighbourhood` radii of
+//     it along the mesh's edges — that are already nearer than the radius may come as near as `near` radii
+//     (or, starting nearer, no nearer); every other piece keeps the radius.
+//   strict: the rule before issue 23. No piece may come nearer than the radius, and one already nearer (its
+//     parent's neighbour, where the larger radius of the level before excepted it) no nearer; the fan's own
+//     static edges count as obstacles at the radius too. Deep levels mostly stop moving.
+enum class SurfaceRule { neighbourhood, strict };
+
 struct SurfaceOptions {
-  double radius = 0.1;       // exclusion radius of the first level
-  double factor = 0.8;       // radius multiplied by this at each level, in (0, 1]
-  int levels = 1;            // levels of splitting, each making four triangles of one, in [0, 20]
+  double radius = 0.1;  // exclusion radius of the first level
+  double factor = 0.8;  // radius multiplied by this at each level, in (0, 1]
+  int levels = 1;       // levels of splitting, each making four triangles of one, in [0, 20]
+  SurfaceRule rule = SurfaceRule::neighbourhood;
+  double neighbourhood = 6;  // in radii along the mesh, (0, 1000] or infinite (the whole surface)
+  double near = 0.01;        // in radii, [1e-6, 1)
   bool keep_levels = false;  // hand back the surface as it was after each level (SurfaceResult::steps)
   PointBudget budget;
 

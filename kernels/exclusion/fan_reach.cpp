@@ -132,12 +132,16 @@ bool shared(std::uint32_t a, std::uint32_t b) { return a != no_vertex && a == b;
 
 // term() for a term that is never below sqrt(least2) wherever the point goes on its line: with its radius at
 // most that, its set is empty, and neither its distance where it starts (d0()) nor its set is needed.
+// A neighbour's term (close > 0) that starts below r (its distance where it starts is at most
+// sqrt(upper2), a cheap bound) keeps only `close`: when it never comes that near either, its distance is not
+// needed. Most terms of a deep level's move are such.
 template <class D0, class SetFor>
-void bounded_term(Reach& reach, double r, double least2, D0 d0, SetFor set_for) {
+void bounded_term(Reach& reach, double r, double close, double least2, double upper2, D0 d0, SetFor set_for) {
   if (least2 >= r * r) return;
-  const double start = d0(), rho = term_radius(r, start);
+  if (close > 0 && least2 >= close * close && upper2 < r * r) return;
+  const double start = d0(), rho = term_radius(r, start, close);
   if (rho > 0 && least2 >= rho * rho) return;
-  term(reach, r, start, either, 0, set_for);
+  term(reach, r, start, either, 0, set_for, close);
 }
 
 }  // namespace
@@ -224,18 +228,21 @@ void limit_fan(const FanView& fan, const Obstacle& o, double r, Reach& reach, co
   // points and m. Most terms near a deep level's move never come below their radius at all: this finds them
   // without solving.
   const Vec2 m_flat{};
+  const bool all_near = o.near[0] && (o.corners < 2 || o.near[1]) && (o.corners < 3 || o.near[2]);
+  const double whole_close = all_near ? o.close : 0;
   if (o.corners == 1)
     bounded_term(
-        reach, r, dot(at_flat[0], at_flat[0]), [&] { return norm(at[0]); },
+        reach, r, whole_close, dot(at_flat[0], at_flat[0]), dot(at[0], at[0]), [&] { return norm(at[0]); },
         [&](double rho) { return line.point(at[0], rho); });
   else if (o.corners == 2)
     bounded_term(
-        reach, r, point_segment_distance2(m_flat, at_flat[0], at_flat[1]),
-        [&] { return point_segment_distance(origin, at[0], at[1]); },
+        reach, r, whole_close, point_segment_distance2(m_flat, at_flat[0], at_flat[1]),
+        std::min(dot(at[0], at[0]), dot(at[1], at[1])), [&] { return point_segment_distance(origin, at[0], at[1]); },
         [&](double rho) { return line.segment(at[0], at[1], rho); });
   else
     bounded_term(
-        reach, r, point_triangle_distance2(m_flat, at_flat[0], at_flat[1], at_flat[2]),
+        reach, r, whole_close, point_triangle_distance2(m_flat, at_flat[0], at_flat[1], at_flat[2]),
+        std::min({dot(at[0], at[0]), dot(at[1], at[1]), dot(at[2], at[2])}),
         [&] { return point_triangle_distance(origin, at[0], at[1], at[2]); },
         [&](double rho) { return line.triangle(at[0], at[1], at[2], rho); });
   // Corner terms: corner k within rho of fan triangle x, y, p(t) (x and y are static, never within rho).
@@ -246,8 +253,9 @@ void limit_fan(const FanView& fan, const Obstacle& o, double r, Reach& reach, co
       const Vec3 x = ring(i), y = ring(i + 1), w = at[k];
       if (out_of_reach({i, i + 1}, {k})) continue;
       const double least = point_triangle_distance2(at_flat[k], fan.flat[i], fan.flat[(i + 1) % n], m_flat);
+      const double upper = std::min({dot(w - x, w - x), dot(w - y, w - y), dot(w, w)});
       bounded_term(
-          reach, r, least, [&] { return point_triangle_distance(w, x, y, origin); },
+          reach, r, o.near[k] ? o.close : 0, least, upper, [&] { return point_triangle_distance(w, x, y, origin); },
           [&](double rho) {
             return hull(hull(line.face(x, y, w, rho), point_piece(k, rho)),
                         hull(shadow_piece(i, k, rho), shadow_piece(i + 1, k, rho)));
@@ -264,8 +272,10 @@ void limit_fan(const FanView& fan, const Obstacle& o, double r, Reach& reach, co
       const Vec3 z = ring(j), u = at[k], v = at[k1];
       if (out_of_reach({j}, {k, k1})) continue;
       const double least = segment_distance2(at_flat[k], at_flat[k1], fan.flat[j], m_flat);
+      const double upper = std::min({dot(u - z, u - z), dot(u, u), dot(v - z, v - z), dot(v, v)});
       bounded_term(
-          reach, r, least, [&] { return segment_segment_distance(u, v, z, origin); },
+          reach, r, o.near[k] && o.near[k1] ? o.close : 0, least, upper,
+          [&] { return segment_segment_distance(u, v, z, origin); },
           [&](double rho) {
             const Interval ends = hull(hull(point_piece(k, rho), point_piece(k1, rho)),
                                        hull(shadow_piece(j, k, rho), shadow_piece(j, k1, rho)));

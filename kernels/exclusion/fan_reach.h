@@ -51,6 +51,11 @@ struct Obstacle {
   std::array<Vec3, 3> at;
   std::array<std::uint32_t, 3> id{no_vertex, no_vertex, no_vertex};
   int corners = 3;
+  // Corners in the moving point's neighbourhood: the terms of a near corner, of an edge between two near
+  // corners and (all near) of the point with the whole obstacle keep `close` instead of r once closer than r
+  // (reach.h, term_radius).
+  std::array<bool, 3> near{false, false, false};
+  double close = 0;
 
   BBox3 box() const {
     BBox3 b;

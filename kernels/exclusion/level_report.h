@@ -10,6 +10,7 @@ namespace selfsim::exclusion {
 struct LevelReport {
   std::size_t splits = 0, stuck = 0;
   double seconds = 0;
+  double area = -1;  // a surface's area after the level (a curve's report has none)
 };
 
 // Points that could not move, over all levels.

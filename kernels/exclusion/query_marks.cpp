@@ -44,6 +44,8 @@ void Query::fit(std::size_t triangles, std::size_t boundary, std::size_t points)
   vertex_seen.assign(points, 0);
   piece_stamp.assign(points, 0);
   piece_slot.assign(points, 0);
+  along.assign(points, 0);
+  along_stamp.assign(points, 0);
   stamp = 0;
 }
 
@@ -54,6 +56,7 @@ void Query::next() {
     std::fill(boundary_seen.begin(), boundary_seen.end(), 0);
     std::fill(vertex_seen.begin(), vertex_seen.end(), 0);
     std::fill(piece_stamp.begin(), piece_stamp.end(), 0);
+    std::fill(along_stamp.begin(), along_stamp.end(), 0);
     stamp = 1;
   }
   pieces.clear();

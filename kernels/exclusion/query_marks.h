@@ -38,6 +38,15 @@ struct Query {
   std::vector<VertexPieces> pieces;                    // this move's, in piece_slot order
   std::vector<std::pair<double, std::uint32_t>> near;  // box gap, id
   EdgeMarks edges;
+  // The moving point's neighbourhood: each vertex's distance from it along the mesh's edges, valid where
+  // along_stamp is the move's stamp; and the search's heap.
+  std::vector<double> along;
+  std::vector<std::uint32_t> along_stamp;
+  std::vector<std::pair<double, std::uint32_t>> heap;
+
+  bool within(std::uint32_t vertex, double reach) const {
+    return along_stamp[vertex] == stamp && along[vertex] <= reach;
+  }
 
   // Sizes the marks for a level's triangles, boundary triangles and points (clearing them if they change).
   void fit(std::size_t triangles, std::size_t boundary, std::size_t points);

@@ -46,8 +46,13 @@ struct Reach {
 
 // The radius a term must keep: r, or, when it starts below r at d0 (inherited from a coarser level, where
 // the radius was larger but the split's neighbours were excepted), d0 itself less a hair, so that it may
-// not get any smaller and t = 0 stays outside its set. Zero when the term starts touching.
-inline double term_radius(double r, double d0) { return d0 < r ? d0 * (1 - 1e-9) : r; }
+// not get any smaller and t = 0 stays outside its set. Zero when the term starts touching. `close` > 0: the
+// term is between neighbours (the surface's own neighbourhood), which, once closer than r, may come as
+// near as `close` (or, starting nearer, no nearer).
+inline double term_radius(double r, double d0, double close = 0) {
+  if (d0 >= r) return r;
+  return d0 > close && close > 0 ? close : d0 * (1 - 1e-9);
+}
 
 // The side of the line where a term can shrink: the sign of t, 0 for neither, `either` when not known.
 inline constexpr int either = 2;
@@ -58,8 +63,8 @@ inline int side_of(double t) { return t > 0 ? 1 : t < 0 ? -1 : 0; }
 // split point), so it cannot act before |t| = d0 - rho, nor before `after`, and only on side `toward`. A
 // side already stopped before the term could act is left alone without solving for the set.
 template <class SetFor>
-void term(Reach& reach, double r, double d0, int toward, double after, SetFor set_for) {
-  const double rho = term_radius(r, d0);
+void term(Reach& reach, double r, double d0, int toward, double after, SetFor set_for, double close = 0) {
+  const double rho = term_radius(r, d0, close);
   if (!(rho > 0)) {  // already touching: no move can be trusted
     reach.positive = reach.negative = 0;
     return;

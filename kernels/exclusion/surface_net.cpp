@@ -5,13 +5,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <tuple>
 
 #include "kernels/geom/error.h"
 #include "kernels/geom/field.h"
 
 namespace selfsim::exclusion {
-
 namespace {
 
 constexpr std::uint32_t boundary_bit = 0x80000000u;  // grid ids of the region's boundary triangles
@@ -174,6 +174,39 @@ void Surfaces::subdivide(int level, double r) {
     grid_.insert(boundary_bit | t, box);
   }
   for (std::uint32_t t = 0; t < triangles_.size(); ++t) grid_.insert(t, triangle_box(t));
+  // Each vertex's triangles, for the neighbourhood's search, which measures the surface as it is split: the
+  // same for every move of the level, whatever the order.
+  split_ = points_;
+  face_start_.assign(points_.size() + 1, 0);
+  for (const Triangle& t : triangles_)
+    for (std::uint32_t v : t) ++face_start_[v + 1];
+  for (std::size_t v = 0; v < points_.size(); ++v) face_start_[v + 1] += face_start_[v];
+  faces_.resize(face_start_.back());
+  std::vector<std::uint32_t> filled(face_start_.begin(), face_start_.end() - 1);
+  for (std::uint32_t t = 0; t < triangles_.size(); ++t)
+    for (std::uint32_t v : triangles_[t]) faces_[filled[v]++] = t;
+}
+
+void Surfaces::mark_neighbourhood(const Midpoint& mid, double reach, Query& q) const {
+  auto& heap = q.heap;
+  const auto later = std::greater<std::pair<double, std::uint32_t>>();
+  heap.clear();
+  q.along[mid.vertex] = 0, q.along_stamp[mid.vertex] = q.stamp;
+  heap.push_back({0, mid.vertex});
+  while (!heap.empty()) {
+    std::pop_heap(heap.begin(), heap.end(), later);
+    const auto [dv, v] = heap.back();
+    heap.pop_back();
+    if (dv > q.along[v]) continue;  // reached again by a shorter path
+    for (std::uint32_t i = face_start_[v]; i < face_start_[v + 1]; ++i)
+      for (std::uint32_t w : triangles_[faces_[i]]) {
+        const double dw = dv + norm(split_[w] - split_[v]);
+        if (w == v || dw > reach || (q.along_stamp[w] == q.stamp && dw >= q.along[w])) continue;
+        q.along[w] = dw, q.along_stamp[w] = q.stamp;
+        heap.push_back({dw, w});
+        std::push_heap(heap.begin(), heap.end(), later);
+      }
+  }
 }
 
 BBox3 Surfaces::triangle_box(std::uint32_t t) const {
@@ -200,6 +233,7 @@ Reach Surfaces::reach(const Midpoint& mid, double r, Query& q, BBox3& looked) co
   for (int i = 0; i < ring_edges; ++i) {
     const int j = (i + 1) % mid.ring_size;
     Obstacle own{{ring_at[i], ring_at[j], Vec3{}}, {mid.ring[i], mid.ring[j], no_vertex}, 2};
+    if (along_ > 0) own.near = {true, true, false}, own.close = close_ * r;
     TermsWanted wanted;
     wanted.corner = {q.first_visit(mid.ring[i]), q.first_visit(mid.ring[j]), false};
     limit_fan(view, own, r, limits, wanted);
@@ -211,6 +245,9 @@ Reach Surfaces::reach(const Midpoint& mid, double r, Query& q, BBox3& looked) co
   fan_box.add(f.m);
   looked.add(fan_box);
   if (limits.stuck(mid.h)) return limits;  // most moves of a deep level: nothing else can free them
+  // The neighbourhood: searched along the mesh, or, infinite, every piece of the point's own surface.
+  const bool everywhere = std::isinf(along_);
+  if (along_ > 0 && !everywhere) mark_neighbourhood(mid, along_ * r, q);
   // The neighbours within a few edges first: most moves a large radius stops are stuck by them, and
   // collecting the whole radius at once would take in all of a small surface for every move.
   double margin = std::min(r, 4 * mid.h);
@@ -239,9 +276,11 @@ Reach Surfaces::reach(const Midpoint& mid, double r, Query& q, BBox3& looked) co
       TermsWanted wanted;
       if (!(id & boundary_bit))
         for (int k = 0; k < 3; ++k) {
+          o.near[k] = everywhere ? surface_[id] == surface_[mid.fan[0]] : along_ > 0 && q.within(o.id[k], along_ * r);
           wanted.corner[k] = q.first_visit(o.id[k]);
           wanted.edge[k] = q.edges.first_visit(o.id[k], o.id[(k + 1) % 3]);  // a neighbour shares it
         }
+      o.close = close_ * r;
       limit_fan(view, o, r, limits, wanted, id & boundary_bit ? std::array<VertexPieces*, 3>{} : q.pieces_of(o.id));
       limits.settle(mid.h);
     }
@@ -309,6 +348,7 @@ void Surfaces::grow(double r, LevelReport& report, Progress& progress, bool spec
     BBox3 looked;  // what the move measured: no change elsewhere alters it
   };
   std::vector<Outcome> outcomes;
+
   std::vector<BBox3> changed;  // the fans the round has moved so far, where they were and where they went
   std::size_t done = 0;
   for (std::size_t round = 0; round + 1 < rounds_.size(); ++round) {
@@ -355,6 +395,13 @@ void Surfaces::grow(double r, LevelReport& report, Progress& progress, bool spec
       changed.push_back(fan);
     }
   }
+}
+
+double Surfaces::area() const {
+  double a = 0;
+  for (const Triangle& c : triangles_)
+    a += 0.5 * norm(cross(points_[c[1]] - points_[c[0]], points_[c[2]] - points_[c[0]]));
+  return a;
 }
 
 Mesh Surfaces::result() const {

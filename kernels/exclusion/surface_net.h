@@ -47,7 +47,12 @@ class Surfaces {
   void grow(double r, LevelReport& report, Progress& progress, bool speculate = true);
   // Round cells `factor` times a move's usual reach instead of 2 (tests make rounds collide with small ones).
   void set_round_cells(double factor) { round_cells_ = factor; }
+  // The moving point's own neighbourhood (exclusion_surface.h, SurfaceOptions): the vertices within
+  // `along` radii of it along the mesh's edges, whose pieces already closer than the radius need only keep
+  // `close` radii. along = 0: no neighbourhood (the rule before issue 23).
+  void set_neighbourhood(double along, double close) { along_ = along, close_ = close; }
   Mesh result() const;
+  double area() const;
 
  private:
   // How far mid may move, with q's marks; `looked` grows to cover every box it measured in.
@@ -57,6 +62,9 @@ class Surfaces {
   void order_rounds(double reach);
   // A surface triangle, or a boundary triangle (id with boundary_bit), as an obstacle.
   Obstacle obstacle(std::uint32_t id) const;
+  // Marks in q the vertices within `reach` of mid's vertex along the edges of the level's split mesh
+  // (Dijkstra).
+  void mark_neighbourhood(const Midpoint& mid, double reach, Query& q) const;
   BBox3 triangle_box(std::uint32_t t) const;
 
   const Mesh& boundary_;
@@ -65,10 +73,13 @@ class Surfaces {
   std::vector<Triangle> triangles_;
   std::vector<std::int32_t> surface_;
   std::vector<Midpoint> mids_;
+  std::vector<std::uint32_t> face_start_, faces_;  // each vertex's triangles: faces_[face_start_[v] ...]
+  std::vector<Vec3> split_;                        // the points as the level's split left them
   BoxGrid3 grid_;
   std::vector<std::uint32_t> order_;  // the midpoints in the order they move
   std::vector<std::size_t> rounds_;   // where each round starts in order_, and the end
   double round_cells_ = 2;
+  double along_ = 0, close_ = 0;
   tbb::enumerable_thread_specific<Query> queries_;
   double far_;  // no point moves farther than this: twice the region's diagonal
 };

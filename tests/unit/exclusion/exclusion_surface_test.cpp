@@ -195,7 +195,60 @@ TEST(ExclusionSurface, BadStartsAndOptionsAreRefusedByName) {
   EXPECT_NE(message(inside, o).find("option 'factor'"), std::string::npos);
   o = options(21);
   EXPECT_NE(message(inside, o).find("option 'levels'"), std::string::npos);
+  o = options(1);
+  o.neighbourhood = 0;
+  EXPECT_NE(message(inside, o).find("option 'neighbourhood'"), std::string::npos);
+  o = options(1);
+  o.near = 1;
+  EXPECT_NE(message(inside, o).find("option 'near'"), std::string::npos);
   o = options(12);
   o.budget.limit = 1e6;  // 4^12 = 16.8 million triangles
   EXPECT_NE(message(inside, o).find("levels = 12 (16777216 triangles"), std::string::npos) << message(inside, o);
+}
+
+// Issue 23: under the neighbourhood rule a sheet keeps growing, where the strict rule (the rule before it)
+// leaves most points of a deep level stuck; both keep every invariant.
+TEST(ExclusionSurface, TheNeighbourhoodRuleKeepsGrowingWhereTheStrictRuleStops) {
+  const Mesh cube = box_mesh({0, 0, 0}, {1, 1, 1});
+  const Mesh start = triangles({{0.2, 0.2, 0.5}, {0.8, 0.2, 0.5}, {0.5, 0.8, 0.5}});
+  const int levels = 6;
+  auto stuck_share = [](const LevelReport& l) { return static_cast<double>(l.stuck) / static_cast<double>(l.splits); };
+  SurfaceOptions o = options(levels);
+  const SurfaceResult grown = exclusion_surface(cube, start, o, no_progress());
+  for (int level = 3; level <= levels; ++level) EXPECT_LE(stuck_share(grown.levels[level - 1]), 0.25) << level;
+  expect_grown_like_its_start(cube, start, o);
+  o.rule = SurfaceRule::strict;
+  const SurfaceResult strict = exclusion_surface(cube, start, o, no_progress());
+  EXPECT_GE(stuck_share(strict.levels.back()), 0.5);
+  EXPECT_GT(grown.levels.back().area, 1.2 * strict.levels.back().area);  // the area each report gives
+  expect_grown_like_its_start(cube, start, o);
+}
+
+// Two sheets of one surface pressed together: a strip folded into a U whose sides start 0.12 apart, more than
+// the first radius. Along the surface their pieces are far apart (around the bend), and they were never
+// nearer than the radius, so no neighbourhood lets them come nearer than the last radius: a rule whose
+// exemption reached across the gap would let them. The bend's own pieces are each side's neighbours.
+TEST(ExclusionSurface, TwoSheetsPressedTogetherKeepTheRadius) {
+  const Mesh cube = box_mesh({0, 0, 0}, {1, 1, 1});
+  Mesh u;
+  u.points = {{0.2, 0.3, 0.44}, {0.8, 0.3, 0.44}, {0.8, 0.7, 0.44}, {0.2, 0.7, 0.44},   // the lower sheet
+              {0.2, 0.3, 0.56}, {0.8, 0.3, 0.56}, {0.8, 0.7, 0.56}, {0.2, 0.7, 0.56}};  // the upper one
+  u.triangles = {{0, 1, 2}, {0, 2, 3},   // lower: start triangles 0 and 1
+                 {1, 5, 6}, {1, 6, 2},   // the bend at x = 0.8
+                 {5, 4, 7}, {5, 7, 6}};  // upper: 4 and 5
+  for (const double neighbourhood : {6.0, HUGE_VAL}) {
+    SurfaceOptions o = options(4);
+    o.neighbourhood = neighbourhood;
+    const SurfaceResult r = exclusion_surface(cube, u, o, no_progress());
+    EXPECT_FALSE(first_intersection(r.surface, no_progress()).has_value());
+    // Each face descends from start triangle face >> 2·levels (a triangle's children are 4t ... 4t + 3).
+    const double last = 0.1 * std::pow(0.8, 3);
+    double closest = INFINITY;
+    for (std::size_t a = 0; a < r.surface.faces(); ++a)
+      for (std::size_t b = 0; b < r.surface.faces(); ++b)
+        if ((a >> 8) <= 1 && (b >> 8) >= 4)
+          closest = std::min(closest, triangle_distance(r.surface, r.surface.triangles[a], r.surface.triangles[b]));
+    EXPECT_GE(closest, last * (1 - 1e-6)) << neighbourhood;
+    EXPECT_LT(closest, 0.12) << neighbourhood;  // they did grow towards each other
+  }
 }
