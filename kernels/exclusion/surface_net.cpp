@@ -174,17 +174,21 @@ void Surfaces::subdivide(int level, double r) {
     grid_.insert(boundary_bit | t, box);
   }
   for (std::uint32_t t = 0; t < triangles_.size(); ++t) grid_.insert(t, triangle_box(t));
-  // Each vertex's triangles, for the neighbourhood's search, which measures the surface as it is split: the
-  // same for every move of the level, whatever the order.
-  split_ = points_;
-  face_start_.assign(points_.size() + 1, 0);
-  for (const Triangle& t : triangles_)
-    for (std::uint32_t v : t) ++face_start_[v + 1];
-  for (std::size_t v = 0; v < points_.size(); ++v) face_start_[v + 1] += face_start_[v];
-  faces_.resize(face_start_.back());
-  std::vector<std::uint32_t> filled(face_start_.begin(), face_start_.end() - 1);
-  for (std::uint32_t t = 0; t < triangles_.size(); ++t)
-    for (std::uint32_t v : triangles_[t]) faces_[filled[v]++] = t;
+  // Each vertex's edges with their lengths, for the neighbourhood's search, which measures the surface as
+  // it is split: the same for every move of the level, whatever the order.
+  if (along_ > 0 && !std::isinf(along_)) {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> ends;
+    ends.reserve(6 * triangles_.size());
+    for (const Triangle& t : triangles_)
+      for (int k = 0; k < 3; ++k) ends.push_back({t[k], t[(k + 1) % 3]}), ends.push_back({t[(k + 1) % 3], t[k]});
+    std::sort(ends.begin(), ends.end());
+    ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+    link_start_.assign(points_.size() + 1, 0);
+    for (const auto& e : ends) ++link_start_[e.first + 1];
+    for (std::size_t v = 0; v < points_.size(); ++v) link_start_[v + 1] += link_start_[v];
+    links_.clear();
+    for (const auto& [a, b] : ends) links_.push_back({b, norm(points_[b] - points_[a])});
+  }
 }
 
 void Surfaces::mark_neighbourhood(const Midpoint& mid, double reach, Query& q) const {
@@ -198,14 +202,14 @@ void Surfaces::mark_neighbourhood(const Midpoint& mid, double reach, Query& q) c
     const auto [dv, v] = heap.back();
     heap.pop_back();
     if (dv > q.along[v]) continue;  // reached again by a shorter path
-    for (std::uint32_t i = face_start_[v]; i < face_start_[v + 1]; ++i)
-      for (std::uint32_t w : triangles_[faces_[i]]) {
-        const double dw = dv + norm(split_[w] - split_[v]);
-        if (w == v || dw > reach || (q.along_stamp[w] == q.stamp && dw >= q.along[w])) continue;
-        q.along[w] = dw, q.along_stamp[w] = q.stamp;
-        heap.push_back({dw, w});
-        std::push_heap(heap.begin(), heap.end(), later);
-      }
+    for (std::uint32_t i = link_start_[v]; i < link_start_[v + 1]; ++i) {
+      const auto [w, length] = links_[i];
+      const double dw = dv + length;
+      if (dw > reach || (q.along_stamp[w] == q.stamp && dw >= q.along[w])) continue;
+      q.along[w] = dw, q.along_stamp[w] = q.stamp;
+      heap.push_back({dw, w});
+      std::push_heap(heap.begin(), heap.end(), later);
+    }
   }
 }
 

@@ -73,8 +73,12 @@ class Surfaces {
   std::vector<Triangle> triangles_;
   std::vector<std::int32_t> surface_;
   std::vector<Midpoint> mids_;
-  std::vector<std::uint32_t> face_start_, faces_;  // each vertex's triangles: faces_[face_start_[v] ...]
-  std::vector<Vec3> split_;                        // the points as the level's split left them
+  struct Link {
+    std::uint32_t to;
+    double length;  // as the level's split left it
+  };
+  std::vector<std::uint32_t> link_start_;  // each vertex's edges: links_[link_start_[v] ...]
+  std::vector<Link> links_;
   BoxGrid3 grid_;
   std::vector<std::uint32_t> order_;  // the midpoints in the order they move
   std::vector<std::size_t> rounds_;   // where each round starts in order_, and the end
