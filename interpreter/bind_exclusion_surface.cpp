@@ -88,10 +88,11 @@ int exclusion_surface(lua_State* L) {
         if (o.has(name))
           throw Error(std::string("option '") + name +
                       "' applies to exclusion = \"neighbourhood\" only (\"strict\" has none)");
-    // math.huge: the whole surface is the neighbourhood (a comparison, not a guarantee).
-    const bool whole = o.push("neighbourhood") == LUA_TNUMBER && lua_tonumber(L, -1) == HUGE_VAL;
+    // Any number, math.huge (the whole surface) included, goes to validate(), which names the range.
+    const bool number = o.push("neighbourhood") == LUA_TNUMBER;
+    const double given = lua_tonumber(L, -1);
     lua_pop(L, 1);
-    opt.neighbourhood = whole ? HUGE_VAL : o.number("neighbourhood", opt.neighbourhood);
+    opt.neighbourhood = number ? given : o.number("neighbourhood", opt.neighbourhood);
     opt.near = o.number("near", opt.near);
     opt.keep_levels = true;  // f:levels() and growth series need no second run
     o.finish();

@@ -148,7 +148,9 @@ int enum_index(const std::string& value, const std::vector<std::string>& names, 
                const std::string& detail) {
   for (std::size_t i = 0; i < names.size(); ++i)
     if (names[i] == value) return static_cast<int>(i);
-  throw Error("invalid " + what + " '" + value + "'" + detail + ", expected one of: " + quoted_list(names));
+  const std::string near = suggestion(value, names);
+  throw Error("invalid " + what + " '" + value + "'" + detail + (near.empty() ? "" : " (did you mean '" + near + "'?)") +
+              ", expected one of: " + quoted_list(names));
 }
 
 std::vector<std::string> Options::unread() {
