@@ -115,6 +115,22 @@ int exclusion_surface(lua_State* L) {
       opt.budget.held += budget_size(boundary);
       return exclusion::exclusion_surface(boundary, start, opt, run);
     });
+    // A start nearer than the radius to the walls or between its surfaces keeps only that gap there.
+    const exclusion::StartGaps& gaps = r.start_gaps;
+    const std::string where = recipe_where(L) + "exclusion.surface: ";
+    if (std::isfinite(gaps.wall)) {
+      const std::string message = where + "start triangle " + std::to_string(gaps.wall_triangle + 1) + " lies " +
+                                  number_text(gaps.wall) + " from the region's walls, nearer than the radius " +
+                                  number_text(opt.radius) + ": the surface keeps only that gap from them";
+      lua_warning(L, message.c_str(), 0);
+    }
+    if (std::isfinite(gaps.between)) {
+      const std::string message = where + "start triangles " + std::to_string(gaps.first + 1) + " and " +
+                                  std::to_string(gaps.second + 1) + " of different surfaces lie " +
+                                  number_text(gaps.between) + " apart, nearer than the radius " +
+                                  number_text(opt.radius) + ": those surfaces keep only that gap";
+      lua_warning(L, message.c_str(), 0);
+    }
     push_geometry(L, std::move(r.surface));
     // Its levels: the meshes the kernel handed back, as they were after each level.
     double retained = 0;

@@ -149,8 +149,8 @@ int enum_index(const std::string& value, const std::vector<std::string>& names, 
   for (std::size_t i = 0; i < names.size(); ++i)
     if (names[i] == value) return static_cast<int>(i);
   const std::string near = suggestion(value, names);
-  throw Error("invalid " + what + " '" + value + "'" + detail + (near.empty() ? "" : " (did you mean '" + near + "'?)") +
-              ", expected one of: " + quoted_list(names));
+  throw Error("invalid " + what + " '" + value + "'" + detail +
+              (near.empty() ? "" : " (did you mean '" + near + "'?)") + ", expected one of: " + quoted_list(names));
 }
 
 std::vector<std::string> Options::unread() {

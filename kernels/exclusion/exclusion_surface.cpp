@@ -1,12 +1,15 @@
 #include "kernels/exclusion/exclusion_surface.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <string>
 
 #include "kernels/exclusion/surface_net.h"
+#include "kernels/geom/box_grid3.h"
 #include "kernels/geom/check.h"
+#include "kernels/geom/distance3.h"
 #include "kernels/geom/mesh_check.h"
 #include "kernels/geom/mesh_intersections.h"
 #include "kernels/geom/winding_number.h"
@@ -100,6 +103,55 @@ void check_start(const Mesh& boundary, const Mesh& start, Progress& progress) {
   }
 }
 
+// The start's gaps below radius r to the walls and between its surfaces (`surface`: each start triangle's),
+// found through a grid of the triangles' boxes.
+StartGaps start_gaps(const Mesh& boundary, const Mesh& start, const std::vector<std::int32_t>& surface, double r,
+                     Progress& progress) {
+  auto corners = [](const Mesh& m, std::size_t t) {
+    const Triangle& c = m.triangles[t];
+    return std::array<Vec3, 3>{m.points[c[0]], m.points[c[1]], m.points[c[2]]};
+  };
+  auto box_of = [](const std::array<Vec3, 3>& c, double grow) {
+    BBox3 b;
+    for (Vec3 p : c) b.add(p);
+    return BBox3{b.min - Vec3::all(grow), b.max + Vec3::all(grow)};
+  };
+  constexpr std::uint32_t wall_bit = 0x80000000u;
+  BoxGrid3 grid(boundary.bbox(), r);
+  for (std::uint32_t t = 0; t < boundary.triangles.size(); ++t)
+    grid.insert(wall_bit | t, box_of(corners(boundary, t), 0));
+  for (std::uint32_t t = 0; t < start.triangles.size(); ++t) grid.insert(t, box_of(corners(start, t), 0));
+  StartGaps gaps;
+  std::vector<std::pair<double, std::uint32_t>> near;  // box gap, id
+  for (std::uint32_t t = 0; t < start.triangles.size(); ++t) {
+    if (progress.cancelled()) throw Cancelled();
+    const std::array<Vec3, 3> a = corners(start, t);
+    const BBox3 own = box_of(a, 0);
+    near.clear();
+    grid.visit(box_of(a, r), [&](std::uint32_t id) {
+      const bool wall = id & wall_bit;
+      if (!wall && (id <= t || surface[id] == surface[t])) return;
+      const BBox3 other = box_of(corners(wall ? boundary : start, id & ~wall_bit), 0);
+      near.push_back({norm(max_each(max_each(own.min - other.max, other.min - own.max), Vec3{})), id});
+    });
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    // Nearest boxes first: once a box is farther than the least gap found (or the radius), so is the rest.
+    double wall_best = r, between_best = r;
+    for (const auto& [box_gap, id] : near) {
+      const bool wall = id & wall_bit;
+      if (box_gap >= std::max(wall_best, between_best)) break;
+      if (box_gap >= (wall ? wall_best : between_best)) continue;
+      const double d = triangle_distance(a, corners(wall ? boundary : start, id & ~wall_bit));
+      (wall ? wall_best : between_best) = std::min(wall ? wall_best : between_best, d);
+      if (d >= r * (1 - 1e-9)) continue;  // a start at the radius (to rounding) keeps it
+      if (wall && d < gaps.wall) gaps.wall = d, gaps.wall_triangle = t;
+      if (!wall && d < gaps.between) gaps.between = d, gaps.first = t, gaps.second = id;
+    }
+  }
+  return gaps;
+}
+
 }  // namespace
 
 void SurfaceOptions::validate() const {
@@ -153,8 +205,10 @@ SurfaceResult exclusion_surface(const Mesh& boundary, const Mesh& start, const S
                 number_text(last) + " in double precision: move it nearer the origin");
 
   Surfaces s(local_boundary, local_start, final_counts.points, final_counts.triangles);
-  if (opt.rule == SurfaceRule::neighbourhood) s.set_neighbourhood(opt.neighbourhood, opt.near);
   SurfaceResult result;
+  if (opt.rule == SurfaceRule::neighbourhood) s.set_neighbourhood(opt.neighbourhood, opt.near);
+  result.start_gaps = start_gaps(local_boundary, local_start, s.surfaces(), opt.radius * n.scale, progress);
+  result.start_gaps.wall /= n.scale, result.start_gaps.between /= n.scale;
   // In the caller's coordinates, the start points exactly as given.
   auto in_place = [&](Mesh m) {
     for (std::size_t i = 0; i < m.points.size(); ++i)

@@ -18,6 +18,7 @@
 // move less than 10^-6 of its half edge on both sides stays at the midpoint and is counted as stuck.
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "kernels/exclusion/level_report.h"
@@ -50,10 +51,20 @@ struct SurfaceOptions {
   void validate() const;
 };
 
+// Where the start already lies nearer than the first radius to the walls, or one surface to another: those
+// gaps are kept (no nearer) but cannot grow to the radius, so the guarantees hold only from there.
+struct StartGaps {
+  double wall = INFINITY;             // the least gap below the radius between a start triangle and the walls
+  std::size_t wall_triangle = 0;      // that start triangle, from 0
+  double between = INFINITY;          // the least gap below the radius between two start surfaces
+  std::size_t first = 0, second = 0;  // those start triangles, from 0
+};
+
 struct SurfaceResult {
   Mesh surface;  // point field `level` (0: a start point); face fields `level` (the oldest corner's) and
                  // `surface` (from 1: the start's face-connected pieces, in order)
   std::vector<LevelReport> levels;
+  StartGaps start_gaps;
   std::vector<Mesh> steps;  // with keep_levels: the surface after levels 0 (the start), 1, ..., levels − 1, with
                             // the same fields (the last level is `surface`)
 };

@@ -188,7 +188,45 @@ void Surfaces::subdivide(int level, double r) {
     for (std::size_t v = 0; v < points_.size(); ++v) link_start_[v + 1] += link_start_[v];
     links_.clear();
     for (const auto& [a, b] : ends) links_.push_back({b, norm(points_[b] - points_[a])});
+    whole_ = surfaces_within(along_ * r);
   }
+}
+
+std::vector<char> Surfaces::surfaces_within(double reach) const {
+  // From one vertex of each surface, the farthest any of its vertices lies along the edges: no two of its
+  // vertices are farther apart than twice that.
+  std::vector<double> along(points_.size(), unbounded);
+  std::vector<std::pair<double, std::uint32_t>> heap;
+  const auto later = std::greater<std::pair<double, std::uint32_t>>();
+  std::vector<double> farthest;
+  std::vector<std::int32_t> surface_of(points_.size(), 0);
+  for (std::size_t t = 0; t < triangles_.size(); ++t)
+    for (std::uint32_t v : triangles_[t]) surface_of[v] = surface_[t];
+  for (std::uint32_t start = 0; start < points_.size(); ++start) {
+    const auto s = static_cast<std::size_t>(surface_of[start]);
+    if (s == 0 || (s < farthest.size() && farthest[s] >= 0)) continue;  // not a surface's, or done
+    if (farthest.size() <= s) farthest.resize(s + 1, -1);
+    double far = 0;
+    along[start] = 0;
+    heap.assign(1, {0.0, start});
+    while (!heap.empty()) {
+      std::pop_heap(heap.begin(), heap.end(), later);
+      const auto [dv, v] = heap.back();
+      heap.pop_back();
+      if (dv > along[v]) continue;
+      far = std::max(far, dv);
+      for (std::uint32_t i = link_start_[v]; i < link_start_[v + 1]; ++i)
+        if (dv + links_[i].length < along[links_[i].to]) {
+          along[links_[i].to] = dv + links_[i].length;
+          heap.push_back({along[links_[i].to], links_[i].to});
+          std::push_heap(heap.begin(), heap.end(), later);
+        }
+    }
+    farthest[s] = far;
+  }
+  std::vector<char> whole(farthest.size(), 0);
+  for (std::size_t s = 0; s < farthest.size(); ++s) whole[s] = farthest[s] >= 0 && 2 * farthest[s] <= reach;
+  return whole;
 }
 
 void Surfaces::mark_neighbourhood(const Midpoint& mid, double reach, Query& q) const {
@@ -250,7 +288,8 @@ Reach Surfaces::reach(const Midpoint& mid, double r, Query& q, BBox3& looked) co
   looked.add(fan_box);
   if (limits.stuck(mid.h)) return limits;  // most moves of a deep level: nothing else can free them
   // The neighbourhood: searched along the mesh, or, infinite, every piece of the point's own surface.
-  const bool everywhere = std::isinf(along_);
+  const auto own = static_cast<std::size_t>(surface_[mid.fan[0]]);
+  const bool everywhere = std::isinf(along_) || (own < whole_.size() && whole_[own]);
   if (along_ > 0 && !everywhere) mark_neighbourhood(mid, along_ * r, q);
   // The neighbours within a few edges first: most moves a large radius stops are stuck by them, and
   // collecting the whole radius at once would take in all of a small surface for every move.

@@ -52,6 +52,8 @@ class Surfaces {
   // `close` radii. along = 0: no neighbourhood (the rule before issue 23).
   void set_neighbourhood(double along, double close) { along_ = along, close_ = close; }
   Mesh result() const;
+  // Each triangle's surface, from 1 (the start's face-connected pieces).
+  const std::vector<std::int32_t>& surfaces() const { return surface_; }
   double area() const;
 
  private:
@@ -65,6 +67,9 @@ class Surfaces {
   // Marks in q the vertices within `reach` of mid's vertex along the edges of the level's split mesh
   // (Dijkstra).
   void mark_neighbourhood(const Midpoint& mid, double reach, Query& q) const;
+  // By surface number: whether every two of its vertices lie within `reach` of each other along the edges
+  // (then its neighbourhood is the whole surface, and no move needs to search it).
+  std::vector<char> surfaces_within(double reach) const;
   BBox3 triangle_box(std::uint32_t t) const;
 
   const Mesh& boundary_;
@@ -79,6 +84,7 @@ class Surfaces {
   };
   std::vector<std::uint32_t> link_start_;  // each vertex's edges: links_[link_start_[v] ...]
   std::vector<Link> links_;
+  std::vector<char> whole_;  // by surface: every two of its vertices lie within the neighbourhood
   BoxGrid3 grid_;
   std::vector<std::uint32_t> order_;  // the midpoints in the order they move
   std::vector<std::size_t> rounds_;   // where each round starts in order_, and the end

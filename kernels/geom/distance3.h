@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -60,6 +61,19 @@ inline double segment_segment_distance(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
     const Vec3 w = c - a;
     const double s = dot(cross(w, d2), n) / nn, t = dot(cross(w, d1), n) / nn;
     if (s >= 0 && s <= 1 && t >= 0 && t <= 1) best = std::min(best, norm((a + s * d1) - (c + t * d2)));
+  }
+  return best;
+}
+
+// Distance between triangles a and b that do not cross: the least of each corner's distance to the other
+// triangle and of the edges' distances to each other.
+inline double triangle_distance(const std::array<Vec3, 3>& a, const std::array<Vec3, 3>& b) {
+  double best = INFINITY;
+  for (int k = 0; k < 3; ++k) {
+    best = std::min(
+        {best, point_triangle_distance(a[k], b[0], b[1], b[2]), point_triangle_distance(b[k], a[0], a[1], a[2])});
+    for (int j = 0; j < 3; ++j)
+      best = std::min(best, segment_segment_distance(a[k], a[(k + 1) % 3], b[j], b[(j + 1) % 3]));
   }
   return best;
 }

@@ -252,3 +252,28 @@ TEST(ExclusionSurface, TwoSheetsPressedTogetherKeepTheRadius) {
     EXPECT_LT(closest, 0.12) << neighbourhood;  // they did grow towards each other
   }
 }
+
+// A start nearer than the radius to the walls, or one of its surfaces to another, keeps only that gap there:
+// the result says where, so that the binding can warn; a start clear of both says nothing.
+TEST(ExclusionSurface, AStartNearerThanTheRadiusIsReported) {
+  const Mesh cube = box_mesh({0, 0, 0}, {1, 1, 1});
+  const Mesh start = triangles({{0.2, 0.2, 0.5},
+                                {0.8, 0.2, 0.5},
+                                {0.5, 0.8, 0.5},
+                                {0.2, 0.2, 0.52},
+                                {0.8, 0.2, 0.52},
+                                {0.5, 0.8, 0.52},
+                                {0.005, 0.2, 0.2},
+                                {0.005, 0.8, 0.2},
+                                {0.005, 0.5, 0.8}});
+  const SurfaceResult r = exclusion_surface(cube, start, options(1), no_progress());
+  EXPECT_NEAR(r.start_gaps.wall, 0.005, 1e-12);
+  EXPECT_EQ(r.start_gaps.wall_triangle, 2u);
+  EXPECT_NEAR(r.start_gaps.between, 0.02, 1e-12);
+  EXPECT_EQ(r.start_gaps.first, 0u);
+  EXPECT_EQ(r.start_gaps.second, 1u);
+  const SurfaceResult clear = exclusion_surface(cube, triangles({{0.2, 0.2, 0.5}, {0.8, 0.2, 0.5}, {0.5, 0.8, 0.5}}),
+                                                options(1), no_progress());
+  EXPECT_TRUE(std::isinf(clear.start_gaps.wall));
+  EXPECT_TRUE(std::isinf(clear.start_gaps.between));
+}

@@ -34,7 +34,9 @@ TEST(Surfaces, ParallelRoundsEqualMovingOneAfterAnother) {
       s.grow(r, report, no_progress(), speculate);
       stuck += report.stuck;
     }
-    if (neighbourhood == 0) EXPECT_GT(stuck, 100u);  // the strict rule: many stuck, the neighbourhood's few
+    if (neighbourhood == 0) {
+      EXPECT_GT(stuck, 100u);  // the strict rule: many stuck, the neighbourhood's few
+    }
     return s.result().points;
   };
   // The strict rule, the neighbourhood of 6 radii along the surface, and the whole surface.
