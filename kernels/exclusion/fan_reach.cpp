@@ -253,7 +253,7 @@ void limit_fan(const FanView& fan, const Obstacle& o, double r, Reach& reach, co
       const Vec3 x = ring(i), y = ring(i + 1), w = at[k];
       if (out_of_reach({i, i + 1}, {k})) continue;
       const double least = point_triangle_distance2(at_flat[k], fan.flat[i], fan.flat[(i + 1) % n], m_flat);
-      const double upper = std::min({dot(w - x, w - x), dot(w - y, w - y), dot(w, w)});
+      const double upper = o.near[k] ? std::min({dot(w - x, w - x), dot(w - y, w - y), dot(w, w)}) : 0;
       bounded_term(
           reach, r, o.near[k] ? o.close : 0, least, upper, [&] { return point_triangle_distance(w, x, y, origin); },
           [&](double rho) {
@@ -272,7 +272,8 @@ void limit_fan(const FanView& fan, const Obstacle& o, double r, Reach& reach, co
       const Vec3 z = ring(j), u = at[k], v = at[k1];
       if (out_of_reach({j}, {k, k1})) continue;
       const double least = segment_distance2(at_flat[k], at_flat[k1], fan.flat[j], m_flat);
-      const double upper = std::min({dot(u - z, u - z), dot(u, u), dot(v - z, v - z), dot(v, v)});
+      const double upper =
+          o.near[k] && o.near[k1] ? std::min({dot(u - z, u - z), dot(u, u), dot(v - z, v - z), dot(v, v)}) : 0;
       bounded_term(
           reach, r, o.near[k] && o.near[k1] ? o.close : 0, least, upper,
           [&] { return segment_segment_distance(u, v, z, origin); },
