@@ -36,8 +36,9 @@ Counts counts(const Mesh& start) {
 
 // Working memory, in budget points of 16 bytes: a point's coordinates and level, and about 260 bytes a
 // triangle (its corners and surface, grid entries, and while a level is split its half edges, midpoints and
-// fans).
-constexpr double working_points_per_triangle = 16;
+// fans); the neighbourhood rule adds about 100 (each vertex's edges with their lengths, the search's marks
+// per thread). Measured at 10 levels: 327 MiB peak for the neighbourhood rule, 232 MiB for the strict one.
+double working_points_per_triangle(SurfaceRule rule) { return rule == SurfaceRule::neighbourhood ? 22 : 16; }
 
 // The region and start moved to the origin and scaled by a power of two to a size about 1: the closed-form
 // limits take coordinates to the fourth power and more.
@@ -164,14 +165,14 @@ void SurfaceOptions::validate() const {
   if (!(near >= 1e-6 && near < 1)) throw Error("option 'near' must be in [1e-6, 1) radii, got " + number_text(near));
 }
 
-double surface_size(const Mesh& start, int levels, bool keep_levels) {
+double surface_size(const Mesh& start, int levels, bool keep_levels, SurfaceRule rule) {
   const Counts c = grown(counts(start), levels);
   double kept = 0;
   for (int l = 0; keep_levels && l < levels; ++l) {
     const Counts step = grown(counts(start), l);
     kept += step.points + step.triangles;
   }
-  return c.points + working_points_per_triangle * c.triangles + kept;
+  return c.points + working_points_per_triangle(rule) * c.triangles + kept;
 }
 
 SurfaceResult exclusion_surface(const Mesh& boundary, const Mesh& start, const SurfaceOptions& opt,
@@ -180,9 +181,9 @@ SurfaceResult exclusion_surface(const Mesh& boundary, const Mesh& start, const S
   start.validate();
   boundary.validate();
   const Counts final_counts = grown(counts(start), opt.levels);
-  check_budget(surface_size(start, opt.levels, opt.keep_levels), opt.budget,
+  check_budget(surface_size(start, opt.levels, opt.keep_levels, opt.rule), opt.budget,
                "levels = " + std::to_string(opt.levels) + " (" + count_text(final_counts.triangles) +
-                   " triangles, each " + count_text(working_points_per_triangle) +
+                   " triangles, each " + count_text(working_points_per_triangle(opt.rule)) +
                    " budget points with its working memory)");
   const MeshTopology region = mesh_topology(boundary);
   if (!region.closed()) throw Error("the region's boundary is not a closed surface: " + region.first_problem);

@@ -28,8 +28,8 @@
 
 namespace selfsim::exclusion {
 
-// Which pieces a move may bring nearer than the radius (README, "Exclusion surfaces", says what each
-// guarantees).
+// Which pieces a move may bring nearer than the radius (docs/exclusion.md, "What the output guarantees",
+// says what each keeps).
 //   neighbourhood: pieces of the moving point's own neighbourhood — corners within `neighbourhood` radii of
 //     it along the mesh's edges — that are already nearer than the radius may come as near as `near` radii
 //     (or, starting nearer, no nearer); every other piece keeps the radius.
@@ -71,7 +71,8 @@ struct SurfaceResult {
 
 // Points of the result and working memory, in budget points, for `levels` levels grown from `start` (and,
 // with keep_levels, the points and triangles of the earlier levels' meshes).
-double surface_size(const Mesh& start, int levels, bool keep_levels = false);
+double surface_size(const Mesh& start, int levels, bool keep_levels = false,
+                    SurfaceRule rule = SurfaceRule::neighbourhood);
 
 // Grows the surfaces from `start` inside the closed, outward-oriented triangle mesh `boundary`. Throws Error
 // for a start that is not inside, crosses itself or is not a manifold, and for options out of range.
