@@ -41,8 +41,9 @@ void add_fields(std::vector<FieldSummary>& out, const Fields& fields, std::size_
 }
 
 void add_values(std::vector<FieldSummary>& out, const std::map<std::string, FieldValues>& fields, bool on_points) {
-  for (const auto& [name, f] : fields) {
-    FieldSummary s{name, on_points, true, f.components, 0, 0, {}};
+  for (const auto& entry : fields) {  // not a structured binding: clang 14 cannot capture one in a lambda
+    const FieldValues& f = entry.second;
+    FieldSummary s{entry.first, on_points, true, f.components, 0, 0, {}};
     s.integer =
         std::all_of(f.values.begin(), f.values.end(), [](double v) { return std::abs(v) < 2e9 && v == std::floor(v); });
     if (f.components == 1) measure(s, f.values.size(), [&](std::size_t i) { return f.values[i]; });
