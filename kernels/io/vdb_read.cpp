@@ -86,9 +86,11 @@ int in_child(PipeOut& out, const std::string& name, Answer answer) {
   return 0;
 }
 
-// Runs `answer` on the opened file in a child, and `receive` on its answer after 'D'.
+// Runs `answer` on the opened file in a child, and `receive` on its answer after 'D'. `metadata_only`: the
+// child reads no voxels, so it may use little more memory than the file holds (a crafted string length
+// otherwise had OpenVDB zero gigabytes for 10 s before it failed, found by fuzzing).
 template <class Answer, class Receive>
-void read_in_child(const std::filesystem::path& file, Answer answer, Receive receive) {
+void read_in_child(const std::filesystem::path& file, Answer answer, Receive receive, bool metadata_only) {
   const RegularFile f(file);
   if (f.size() > read_budget_bytes() / 8)
     throw Error("the file is " + std::to_string(f.size() >> 20) + " MiB, over the reading limit of " +
@@ -96,8 +98,11 @@ void read_in_child(const std::filesystem::path& file, Answer answer, Receive rec
   const std::string name = f.reopen_name(file);
   ChildLimits limits;
   limits.what = "the OpenVDB reader";
-  limits.memory_bytes = (std::uint64_t{1} << 30) + read_budget_bytes();
-  limits.seconds = 30 + static_cast<double>(f.size()) / (4 << 20);
+  limits.memory_bytes =
+      (std::uint64_t{1} << 30) +
+      (metadata_only ? std::min<std::uint64_t>(64 * f.size(), read_budget_bytes()) : read_budget_bytes());
+  // Metadata takes milliseconds; a crafted count can keep OpenVDB looping over an ended stream instead.
+  limits.seconds = (metadata_only ? 3 : 30) + static_cast<double>(f.size()) / (4 << 20);
   run_in_child(
       limits, [&](PipeOut& out) { return in_child(out, name, answer); },
       [&](PipeIn& in) {
@@ -235,27 +240,30 @@ void send_surface(PipeOut& out, openvdb::io::File& file, const std::string& want
 std::vector<VdbGridInfo> read_vdb_info(const std::filesystem::path& file) {
   return reading(file, [&] {
     std::vector<VdbGridInfo> grids;
-    read_in_child(file, send_info, [&](PipeIn& in) {
-      const std::uint64_t n = get_count(in, 1 << 16);
-      for (std::uint64_t i = 0; i < n; ++i) {
-        VdbGridInfo g;
-        g.name = get_name(in);
-        g.grid_class = get_name(in);
-        g.value_type = get_name(in);
-        for (double& v : g.voxel) v = get_double(in);
-        g.active_voxels = get_count(in, ~std::uint64_t{0});
-        char has = 0;
-        in.read(&has, 1);
-        g.has_bbox = has == '1';
-        if (g.has_bbox) {
-          for (auto& v : g.index_min) v = static_cast<std::int64_t>(get_count(in, ~std::uint64_t{0}));
-          for (auto& v : g.index_max) v = static_cast<std::int64_t>(get_count(in, ~std::uint64_t{0}));
-          for (double& v : g.world_min) v = get_double(in);
-          for (double& v : g.world_max) v = get_double(in);
-        }
-        grids.push_back(std::move(g));
-      }
-    });
+    read_in_child(
+        file, send_info,
+        [&](PipeIn& in) {
+          const std::uint64_t n = get_count(in, 1 << 16);
+          for (std::uint64_t i = 0; i < n; ++i) {
+            VdbGridInfo g;
+            g.name = get_name(in);
+            g.grid_class = get_name(in);
+            g.value_type = get_name(in);
+            for (double& v : g.voxel) v = get_double(in);
+            g.active_voxels = get_count(in, ~std::uint64_t{0});
+            char has = 0;
+            in.read(&has, 1);
+            g.has_bbox = has == '1';
+            if (g.has_bbox) {
+              for (auto& v : g.index_min) v = static_cast<std::int64_t>(get_count(in, ~std::uint64_t{0}));
+              for (auto& v : g.index_max) v = static_cast<std::int64_t>(get_count(in, ~std::uint64_t{0}));
+              for (double& v : g.world_min) v = get_double(in);
+              for (double& v : g.world_max) v = get_double(in);
+            }
+            grids.push_back(std::move(g));
+          }
+        },
+        true);
     return grids;
   });
 }
@@ -264,12 +272,18 @@ VdbSurface read_vdb_surface(const std::filesystem::path& file, const std::string
                             const std::filesystem::path& shown_as) {
   return reading(shown_as.empty() ? file : shown_as, [&] {
     VdbSurface s;
+    // The metadata first, under the metadata's memory limit, before a child that may read voxels.
+    read_in_child(
+        file, send_info, [](PipeIn&) {}, true);
     const auto answer = [&](PipeOut& out, openvdb::io::File& f) { send_surface(out, f, grid); };
-    read_in_child(file, answer, [&](PipeIn& in) {
-      s.grid = get_name(in);
-      s.what = get_name(in);
-      s.mesh = receive_dataset(in, read_budget_bytes() / 8);
-    });
+    read_in_child(
+        file, answer,
+        [&](PipeIn& in) {
+          s.grid = get_name(in);
+          s.what = get_name(in);
+          s.mesh = receive_dataset(in, read_budget_bytes() / 8);
+        },
+        false);
     const Dataset& d = s.mesh;
     if (d.cell_ends.empty() || d.cell_ends.back() != d.cell_points.size())
       throw Error("the OpenVDB reader sent a malformed answer");
