@@ -237,33 +237,40 @@ void send_surface(PipeOut& out, openvdb::io::File& file, const std::string& want
 
 }  // namespace
 
+namespace {
+
+// What send_info sent.
+std::vector<VdbGridInfo> receive_info(PipeIn& in) {
+  std::vector<VdbGridInfo> grids;
+  const std::uint64_t n = get_count(in, 1 << 16);
+  for (std::uint64_t i = 0; i < n; ++i) {
+    VdbGridInfo g;
+    g.name = get_name(in);
+    g.grid_class = get_name(in);
+    g.value_type = get_name(in);
+    for (double& v : g.voxel) v = get_double(in);
+    g.active_voxels = get_count(in, ~std::uint64_t{0});
+    char has = 0;
+    in.read(&has, 1);
+    g.has_bbox = has == '1';
+    if (g.has_bbox) {
+      for (auto& v : g.index_min) v = static_cast<std::int64_t>(get_count(in, ~std::uint64_t{0}));
+      for (auto& v : g.index_max) v = static_cast<std::int64_t>(get_count(in, ~std::uint64_t{0}));
+      for (double& v : g.world_min) v = get_double(in);
+      for (double& v : g.world_max) v = get_double(in);
+    }
+    grids.push_back(std::move(g));
+  }
+  return grids;
+}
+
+}  // namespace
+
 std::vector<VdbGridInfo> read_vdb_info(const std::filesystem::path& file) {
   return reading(file, [&] {
     std::vector<VdbGridInfo> grids;
     read_in_child(
-        file, send_info,
-        [&](PipeIn& in) {
-          const std::uint64_t n = get_count(in, 1 << 16);
-          for (std::uint64_t i = 0; i < n; ++i) {
-            VdbGridInfo g;
-            g.name = get_name(in);
-            g.grid_class = get_name(in);
-            g.value_type = get_name(in);
-            for (double& v : g.voxel) v = get_double(in);
-            g.active_voxels = get_count(in, ~std::uint64_t{0});
-            char has = 0;
-            in.read(&has, 1);
-            g.has_bbox = has == '1';
-            if (g.has_bbox) {
-              for (auto& v : g.index_min) v = static_cast<std::int64_t>(get_count(in, ~std::uint64_t{0}));
-              for (auto& v : g.index_max) v = static_cast<std::int64_t>(get_count(in, ~std::uint64_t{0}));
-              for (double& v : g.world_min) v = get_double(in);
-              for (double& v : g.world_max) v = get_double(in);
-            }
-            grids.push_back(std::move(g));
-          }
-        },
-        true);
+        file, send_info, [&](PipeIn& in) { grids = receive_info(in); }, true);
     return grids;
   });
 }
@@ -274,7 +281,7 @@ VdbSurface read_vdb_surface(const std::filesystem::path& file, const std::string
     VdbSurface s;
     // The metadata first, under the metadata's memory limit, before a child that may read voxels.
     read_in_child(
-        file, send_info, [](PipeIn&) {}, true);
+        file, send_info, [](PipeIn& in) { receive_info(in); }, true);
     const auto answer = [&](PipeOut& out, openvdb::io::File& f) { send_surface(out, f, grid); };
     read_in_child(
         file, answer,
