@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <tuple>
 
 #include "kernels/geom/error.h"
@@ -174,81 +173,7 @@ void Surfaces::subdivide(int level, double r) {
     grid_.insert(boundary_bit | t, box);
   }
   for (std::uint32_t t = 0; t < triangles_.size(); ++t) grid_.insert(t, triangle_box(t));
-  // Each vertex's edges with their lengths, for the neighbourhood's search, which measures the surface as
-  // it is split: the same for every move of the level, whatever the order.
-  if (along_ > 0 && !std::isinf(along_)) {
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> ends;
-    ends.reserve(6 * triangles_.size());
-    for (const Triangle& t : triangles_)
-      for (int k = 0; k < 3; ++k) ends.push_back({t[k], t[(k + 1) % 3]}), ends.push_back({t[(k + 1) % 3], t[k]});
-    std::sort(ends.begin(), ends.end());
-    ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
-    link_start_.assign(points_.size() + 1, 0);
-    for (const auto& e : ends) ++link_start_[e.first + 1];
-    for (std::size_t v = 0; v < points_.size(); ++v) link_start_[v + 1] += link_start_[v];
-    links_.clear();
-    for (const auto& [a, b] : ends) links_.push_back({b, norm(points_[b] - points_[a])});
-    whole_ = surfaces_within(along_ * r);
-  }
-}
-
-std::vector<char> Surfaces::surfaces_within(double reach) const {
-  // From one vertex of each surface, the farthest any of its vertices lies along the edges: no two of its
-  // vertices are farther apart than twice that.
-  std::vector<double> along(points_.size(), unbounded);
-  std::vector<std::pair<double, std::uint32_t>> heap;
-  const auto later = std::greater<std::pair<double, std::uint32_t>>();
-  std::vector<double> farthest;
-  std::vector<std::int32_t> surface_of(points_.size(), 0);
-  for (std::size_t t = 0; t < triangles_.size(); ++t)
-    for (std::uint32_t v : triangles_[t]) surface_of[v] = surface_[t];
-  for (std::uint32_t start = 0; start < points_.size(); ++start) {
-    const auto s = static_cast<std::size_t>(surface_of[start]);
-    if (s == 0 || (s < farthest.size() && farthest[s] >= 0)) continue;  // not a surface's, or done
-    if (farthest.size() <= s) farthest.resize(s + 1, -1);
-    double far = 0;
-    along[start] = 0;
-    heap.assign(1, {0.0, start});
-    while (!heap.empty()) {
-      std::pop_heap(heap.begin(), heap.end(), later);
-      const auto [dv, v] = heap.back();
-      heap.pop_back();
-      if (dv > along[v]) continue;
-      far = std::max(far, dv);
-      for (std::uint32_t i = link_start_[v]; i < link_start_[v + 1]; ++i)
-        if (dv + links_[i].length < along[links_[i].to]) {
-          along[links_[i].to] = dv + links_[i].length;
-          heap.push_back({along[links_[i].to], links_[i].to});
-          std::push_heap(heap.begin(), heap.end(), later);
-        }
-    }
-    farthest[s] = far;
-  }
-  std::vector<char> whole(farthest.size(), 0);
-  for (std::size_t s = 0; s < farthest.size(); ++s) whole[s] = farthest[s] >= 0 && 2 * farthest[s] <= reach;
-  return whole;
-}
-
-void Surfaces::mark_neighbourhood(const Midpoint& mid, double reach, Query& q) const {
-  auto& heap = q.heap;
-  const auto later = std::greater<std::pair<double, std::uint32_t>>();
-  heap.clear();
-  q.along[mid.vertex] = 0, q.along_stamp[mid.vertex] = q.stamp;
-  heap.push_back({0, mid.vertex});
-  while (!heap.empty()) {
-    std::pop_heap(heap.begin(), heap.end(), later);
-    const auto [dv, v] = heap.back();
-    heap.pop_back();
-    if (dv > q.along[v]) continue;  // reached again by a shorter path
-    for (std::uint32_t i = link_start_[v]; i < link_start_[v + 1]; ++i) {
-      const auto [w, length] = links_[i];
-      const double dw = dv + length;
-      if (dw > reach || (q.along_stamp[w] == q.stamp && dw >= q.along[w])) continue;
-      q.along[w] = dw, q.along_stamp[w] = q.stamp;
-      heap.push_back({dw, w});
-      std::push_heap(heap.begin(), heap.end(), later);
-    }
-  }
+  if (along_ > 0 && !std::isinf(along_)) link_edges(r);
 }
 
 BBox3 Surfaces::triangle_box(std::uint32_t t) const {

@@ -67,6 +67,8 @@ class Surfaces {
   // Marks in q the vertices within `reach` of mid's vertex along the edges of the level's split mesh
   // (Dijkstra).
   void mark_neighbourhood(const Midpoint& mid, double reach, Query& q) const;
+  // Each vertex's edges with their lengths as split (surface_neighbourhood.cpp), and whole_, for radius r.
+  void link_edges(double r);
   // By surface number: whether every two of its vertices lie within `reach` of each other along the edges
   // (then its neighbourhood is the whole surface, and no move needs to search it).
   std::vector<char> surfaces_within(double reach) const;
