@@ -3,6 +3,7 @@
 // triangle, a table of its three points. The region's boundary is made at a voxel size half the last
 // level's radius unless the volume gives one. A thin adapter.
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "interpreter/bindings.h"
@@ -16,6 +17,7 @@
 #include "kernels/exclusion/exclusion_surface.h"
 #include "kernels/geom/check.h"
 #include "kernels/geom/level_set.h"
+#include "kernels/geom/wall_grid.h"
 
 namespace selfsim::interp {
 
@@ -42,10 +44,17 @@ Mesh read_start(lua_State* L, Options& o) {
   return m;
 }
 
-// { stuck = n, voxel = v, region_triangles = n, levels = { { triangles, moves, stuck, seconds, area }, ... } }
+// { stuck = n, voxel = v, region_triangles = n, walls = "mesh" | "grid", wall_error = e (grid),
+//   levels = { { triangles, moves, stuck, seconds, area }, ... } }
 void push_report(lua_State* L, const exclusion::SurfaceResult& r, double voxel, std::size_t region_triangles,
-                 std::size_t start_triangles) {
-  lua_createtable(L, 0, 4);
+                 std::size_t start_triangles, const WallGrid* walls) {
+  lua_createtable(L, 0, 6);
+  lua_pushstring(L, walls ? "grid" : "mesh");
+  lua_setfield(L, -2, "walls");
+  if (walls) {
+    lua_pushnumber(L, walls->error());
+    lua_setfield(L, -2, "wall_error");
+  }
   lua_pushinteger(L, static_cast<lua_Integer>(exclusion::total_stuck(r.levels)));
   lua_setfield(L, -2, "stuck");
   lua_pushnumber(L, voxel);
@@ -94,6 +103,7 @@ int exclusion_surface(lua_State* L) {
     lua_pop(L, 1);
     opt.neighbourhood = number ? given : o.number("neighbourhood", opt.neighbourhood);
     opt.near = o.number("near", opt.near);
+    const bool grid_walls = o.enumeration("walls", {"mesh", "grid"}, 0) == 1;
     opt.keep_levels = true;  // f:levels() and growth series need no second run
     o.finish();
     opt.validate();
@@ -110,10 +120,19 @@ int exclusion_surface(lua_State* L) {
     }
     RunContext& run = RunContext::of(L);
     const Mesh boundary = with_budget(L, [&](const PointBudget& b) { return volume_boundary(*region, voxel, b, run); });
+    // walls = "grid": the region's distance grid, resolved twice the first radius deep (deeper reads as
+    // that deep, which only shortens the steps the growth takes towards far walls).
+    std::optional<WallGrid> walls;
+    if (grid_walls)
+      walls = with_budget(L, [&](const PointBudget& b) {
+        PointBudget left = b;
+        left.held += budget_size(boundary);
+        return WallGrid(*region, voxel, 2 * opt.radius, left, run);
+      });
     exclusion::SurfaceResult r = with_budget(L, [&](const PointBudget& b) {
       opt.budget = b;
-      opt.budget.held += budget_size(boundary);
-      return exclusion::exclusion_surface(boundary, start, opt, run);
+      opt.budget.held += budget_size(boundary) + (walls ? WallGrid::size(*region, voxel, 2 * opt.radius) : 0);
+      return exclusion::exclusion_surface(boundary, start, opt, run, walls ? &*walls : nullptr);
     });
     // A start nearer than the radius to the walls or between its surfaces keeps only that gap there.
     const exclusion::StartGaps& gaps = r.start_gaps;
@@ -144,7 +163,7 @@ int exclusion_surface(lua_State* L) {
                            return GrownValue(m);
                          }},
                   retained);
-    push_report(L, r, voxel, boundary.triangles.size(), start.triangles.size());
+    push_report(L, r, voxel, boundary.triangles.size(), start.triangles.size(), walls ? &*walls : nullptr);
     return 2;
   });
 }

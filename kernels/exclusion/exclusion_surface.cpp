@@ -4,6 +4,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "kernels/exclusion/surface_net.h"
@@ -175,8 +176,8 @@ double surface_size(const Mesh& start, int levels, bool keep_levels, SurfaceRule
   return c.points + working_points_per_triangle(rule) * c.triangles + kept;
 }
 
-SurfaceResult exclusion_surface(const Mesh& boundary, const Mesh& start, const SurfaceOptions& opt,
-                                Progress& progress) {
+SurfaceResult exclusion_surface(const Mesh& boundary, const Mesh& start, const SurfaceOptions& opt, Progress& progress,
+                                const WallGrid* walls) {
   opt.validate();
   start.validate();
   boundary.validate();
@@ -206,6 +207,9 @@ SurfaceResult exclusion_surface(const Mesh& boundary, const Mesh& start, const S
                 number_text(last) + " in double precision: move it nearer the origin");
 
   Surfaces s(local_boundary, local_start, final_counts.points, final_counts.triangles);
+  const std::optional<WallGrid> local_walls =
+      walls ? std::optional<WallGrid>(walls->in_frame(n.centre, n.scale)) : std::nullopt;
+  if (local_walls) s.set_walls(&*local_walls);
   SurfaceResult result;
   if (opt.rule == SurfaceRule::neighbourhood) s.set_neighbourhood(opt.neighbourhood, opt.near);
   result.start_gaps = start_gaps(local_boundary, local_start, s.surfaces(), opt.radius * n.scale, progress);

@@ -25,6 +25,7 @@
 #include "kernels/geom/budget.h"
 #include "kernels/geom/mesh.h"
 #include "kernels/geom/progress.h"
+#include "kernels/geom/wall_grid.h"
 
 namespace selfsim::exclusion {
 
@@ -75,7 +76,10 @@ double surface_size(const Mesh& start, int levels, bool keep_levels = false,
                     SurfaceRule rule = SurfaceRule::neighbourhood);
 
 // Grows the surfaces from `start` inside the closed, outward-oriented triangle mesh `boundary`. Throws Error
-// for a start that is not inside, crosses itself or is not a manifold, and for options out of range.
-SurfaceResult exclusion_surface(const Mesh& boundary, const Mesh& start, const SurfaceOptions& opt, Progress& progress);
+// for a start that is not inside, crosses itself or is not a manifold, and for options out of range. With
+// `walls`, the same region's distance grid, the growth keeps the radius from the walls as that grid measures
+// it (wall_reach.h) instead of from the boundary's triangles; the start is still checked against `boundary`.
+SurfaceResult exclusion_surface(const Mesh& boundary, const Mesh& start, const SurfaceOptions& opt, Progress& progress,
+                                const WallGrid* walls = nullptr);
 
 }  // namespace selfsim::exclusion

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "kernels/exclusion/wall_reach.h"
 #include "kernels/geom/error.h"
 #include "kernels/geom/field.h"
 
@@ -167,7 +168,7 @@ void Surfaces::subdivide(int level, double r) {
   BBox3 bounds = boundary_.bbox();
   grid_ = BoxGrid3(bounds, 1.5 * std::max({r, mean, 1e-9 * norm(bounds.size())}));
   order_rounds(std::max(r, 2 * mean));
-  for (std::uint32_t t = 0; t < boundary_.triangles.size(); ++t) {
+  for (std::uint32_t t = 0; !walls_ && t < boundary_.triangles.size(); ++t) {
     BBox3 box;
     for (std::uint32_t v : boundary_.triangles[t]) box.add(boundary_.points[v]);
     grid_.insert(boundary_bit | t, box);
@@ -257,9 +258,13 @@ Reach Surfaces::reach(const Midpoint& mid, double r, Query& q, BBox3& looked) co
       margin = r;  // the rest of the radius, before the move may go farther
       continue;
     }
-    if ((limits.positive <= t && limits.negative <= t) || t > far_) return limits;
+    if ((limits.positive <= t && limits.negative <= t) || t > far_) break;
     t *= 2;
   }
+  // The walls last, when the neighbours have narrowed the move: a move traced towards walls it will never
+  // reach costs a few grid reads per step.
+  if (walls_) limit_by_walls(f, *walls_, r, mid.h, far_, limits);
+  return limits;
 }
 
 Obstacle Surfaces::obstacle(std::uint32_t id) const {

@@ -16,6 +16,7 @@
 #include "kernels/geom/box_grid3.h"
 #include "kernels/geom/mesh.h"
 #include "kernels/geom/progress.h"
+#include "kernels/geom/wall_grid.h"
 
 namespace selfsim::exclusion {
 
@@ -51,6 +52,9 @@ class Surfaces {
   // `along` radii of it along the mesh's edges, whose pieces already closer than the radius need only keep
   // `close` radii. along = 0: no neighbourhood (the rule before issue 23).
   void set_neighbourhood(double along, double close) { along_ = along, close_ = close; }
+  // Walls measured on this distance grid (which must outlive the surfaces) instead of the boundary's
+  // triangles (wall_reach.h). Before the first subdivide.
+  void set_walls(const WallGrid* walls) { walls_ = walls; }
   Mesh result() const;
   // Each triangle's surface, from 1 (the start's face-connected pieces).
   const std::vector<std::int32_t>& surfaces() const { return surface_; }
@@ -92,6 +96,7 @@ class Surfaces {
   std::vector<std::size_t> rounds_;   // where each round starts in order_, and the end
   double round_cells_ = 2;
   double along_ = 0, close_ = 0;
+  const WallGrid* walls_ = nullptr;
   tbb::enumerable_thread_specific<Query> queries_;
   double far_;  // no point moves farther than this: twice the region's diagonal
 };

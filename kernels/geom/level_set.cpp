@@ -2,9 +2,6 @@
 #include "kernels/geom/level_set.h"
 
 #include <openvdb/io/Stream.h>
-#include <openvdb/openvdb.h>
-#include <openvdb/tools/Composite.h>
-#include <openvdb/tools/MeshToVolume.h>
 #include <openvdb/tools/VolumeToMesh.h>
 
 #include <algorithm>
@@ -19,155 +16,13 @@
 #include "kernels/geom/check.h"
 #include "kernels/geom/mesh_check.h"
 #include "kernels/geom/mesh_intersections.h"
+#include "kernels/geom/openvdb_grid.h"
 
 namespace selfsim {
 
 namespace {
 
-// OpenVDB's interrupter concept over our Progress: its conversions ask wasInterrupted() as they go.
-struct Interrupter {
-  Progress& progress;
-  void start(const char* = nullptr) {}
-  void end() {}
-  bool wasInterrupted(int = -1) { return progress.cancelled(); }
-};
-
-void initialise_openvdb() {
-  static std::once_flag once;
-  std::call_once(once, [] { openvdb::initialize(); });
-}
-
-// The surface area of a volume's distinct boxes, spheres and meshes, each of which becomes a level set.
-double parts_area(const Volume& v) {
-  double a = 0;
-  for (const Volume* p : volume_leaves(v)) {
-    switch (p->kind) {
-      case Volume::Kind::box: {
-        const Vec3 s = p->hi - p->lo;
-        a += 2 * (s.x * s.y + s.y * s.z + s.z * s.x);
-        break;
-      }
-      case Volume::Kind::sphere:
-        a += 4 * std::numbers::pi * p->radius * p->radius;
-        break;
-      default:
-        a += surface_area(*p->mesh);
-    }
-  }
-  return a;
-}
-
-// OpenVDB converts meshes in single precision and indexes voxels with 32-bit integers, and its transforms
-// refuse voxels below about 1e-5. So every conversion works in a local frame: coordinates measured from the
-// shape's lowest corner in voxels (the grid's own voxel is 1), turned back into the caller's coordinates in
-// double precision; a .vdb file's transform gets the real voxel and corner.
-struct Frame {
-  Vec3 origin;
-  double voxel;
-  openvdb::Vec3s local(Vec3 p) const {
-    const Vec3 q = (1 / voxel) * (p - origin);
-    return {static_cast<float>(q.x), static_cast<float>(q.y), static_cast<float>(q.z)};
-  }
-  Vec3 world(const openvdb::Vec3s& q) const { return origin + voxel * Vec3{q.x(), q.y(), q.z()}; }
-};
-
-// The frame for `box` at `voxel`, refusing a voxel that is not positive and finite or below 1e-100, or a box
-// more than 2^20 voxels across (float coordinates then still resolve 1/16 of a voxel).
-Frame frame_for(const BBox3& box, double voxel) {
-  if (!(voxel > 0 && std::isfinite(voxel)))
-    throw Error("the voxel size (given as 'voxel', or 1/128 of the longest side) must be a positive number, got " +
-                number_text(voxel));
-  // Areas and volumes in voxels square and cube it: below 1e-100 they would underflow.
-  if (voxel < 1e-100)
-    throw Error("the voxel size " + number_text(voxel) +
-                " is too small for double precision (below 1e-100): scale the shape up");
-  const Vec3 s = box.size();
-  if (!std::isfinite(std::max({s.x, s.y, s.z})))
-    throw Error("the shape's extent overflows double precision (no side may reach about 1.8e308)");
-  const double across = std::max({s.x, s.y, s.z}) / voxel;
-  if (!(across <= 1 << 20))
-    throw Error("at voxel size " + number_text(voxel) + " the shape is " + number_text(across) +
-                " voxels across, more than 2^20 (give a larger 'voxel')");
-  return {box.min, voxel};
-}
-
-// Budget points of the OpenVDB trees a conversion of shapes with these corners and this area holds: the
-// narrow band's voxels (16 bytes each with the leaves, 7 across each wall), and the two levels of inner nodes
-// (4096 and 128 voxels wide, about 270 and 34 KB each) for every cell of those widths a corner falls in or the
-// area covers, three times over for the grids held at once. Scattered small parts each need their own inner
-// nodes, which area alone would miss.
-double tree_size(const std::vector<Vec3>& corners, double area, const Frame& f) {
-  double size = 7 * area / (f.voxel * f.voxel);
-  for (const double width : {4096.0, 128.0}) {
-    std::vector<std::array<std::int64_t, 3>> cells;
-    cells.reserve(corners.size());
-    for (Vec3 p : corners) {
-      const Vec3 q = (1 / (width * f.voxel)) * (p - f.origin);
-      cells.push_back({static_cast<std::int64_t>(q.x), static_cast<std::int64_t>(q.y), static_cast<std::int64_t>(q.z)});
-    }
-    std::sort(cells.begin(), cells.end());
-    const double distinct = static_cast<double>(std::unique(cells.begin(), cells.end()) - cells.begin());
-    const double covered = 2 * area / (width * width * f.voxel * f.voxel);
-    size += (distinct + covered) * 3 * (width > 1000 ? 270e3 : 34e3) / 16;
-  }
-  return size;
-}
-
-// OpenVDB's own exceptions as one-line errors.
-template <class Body>
-auto openvdb_call(Body&& body) {
-  try {
-    return body();
-  } catch (const openvdb::Exception& e) {
-    throw Error(std::string("OpenVDB: ") + e.what());
-  }
-}
-
-// The exact boundary of a box, sphere or mesh.
-Mesh exact_boundary(const Volume& v, double voxel) {
-  switch (v.kind) {
-    case Volume::Kind::box:
-      return box_mesh(v.lo, v.hi);
-    case Volume::Kind::sphere:
-      return sphere_mesh(v.centre, v.radius, voxel / 4);
-    default:
-      return *v.mesh;
-  }
-}
-
-using Grid = openvdb::FloatGrid;
-
-// A mesh's level set (closed) or unsigned distance (open), in frame f with voxel 1.
-Grid::Ptr mesh_grid(const Mesh& m, bool closed, const Frame& f, Interrupter& interrupt) {
-  std::vector<openvdb::Vec3s> points;
-  points.reserve(m.points.size());
-  for (Vec3 p : m.points) points.push_back(f.local(p));
-  std::vector<openvdb::Vec3I> triangles;
-  triangles.reserve(m.triangles.size());
-  for (const Triangle& t : m.triangles) triangles.emplace_back(t[0], t[1], t[2]);
-  const auto unit = openvdb::math::Transform::createLinearTransform(1.0);
-  Grid::Ptr g = closed
-                    ? openvdb::tools::meshToLevelSet<Grid>(interrupt, *unit, points, triangles, 3.0f)
-                    : openvdb::tools::meshToUnsignedDistanceField<Grid>(interrupt, *unit, points, triangles, {}, 3.0f);
-  if (interrupt.progress.cancelled()) throw Cancelled();
-  return g;
-}
-
-// The level set of any volume in frame f: parts converted, then combined in order (nested unions and
-// differences flattened, each distinct part once: combined_parts).
-Grid::Ptr volume_level_set(const Volume& v, const Frame& f, Interrupter& interrupt) {
-  if (v.exact()) return mesh_grid(exact_boundary(v, f.voxel), true, f, interrupt);
-  const std::vector<const Volume*> parts = combined_parts(v);
-  Grid::Ptr result = volume_level_set(*parts[0], f, interrupt);
-  for (std::size_t i = 1; i < parts.size(); ++i) {
-    Grid::Ptr next = volume_level_set(*parts[i], f, interrupt);
-    if (v.kind == Volume::Kind::unite)
-      openvdb::tools::csgUnion(*result, *next);
-    else
-      openvdb::tools::csgDifference(*result, *next);
-  }
-  return result;
-}
+using namespace vdb;
 
 // The zero surface of a level set in frame f as triangles facing outwards, each quad split along its
 // shorter diagonal.
@@ -217,19 +72,6 @@ std::string degenerate_surface(const Mesh& m, Progress& progress) {
            " meet near {" + number_text(pair->where.x) + ", " + number_text(pair->where.y) + ", " +
            number_text(pair->where.z) + "})";
   return "";
-}
-
-// The corners of a volume's parts: where the level sets' trees grow.
-void part_corners(const Volume& v, std::vector<Vec3>& out) {
-  for (const Volume* p : volume_leaves(v)) {
-    if (p->kind == Volume::Kind::mesh) {
-      out.insert(out.end(), p->mesh->points.begin(), p->mesh->points.end());
-    } else {
-      const BBox3 b = p->bbox();
-      for (int k = 0; k < 8; ++k)
-        out.push_back({k & 1 ? b.max.x : b.min.x, k & 2 ? b.max.y : b.min.y, k & 4 ? b.max.z : b.min.z});
-    }
-  }
 }
 
 // OpenVDB stamps every file with a random UUID (36 characters of text after the 21-byte magic and version

@@ -9,6 +9,8 @@
 #include "kernels/geom/distance3.h"
 #include "kernels/geom/mesh_check.h"
 #include "kernels/geom/mesh_intersections.h"
+#include "kernels/geom/volume.h"
+#include "kernels/geom/wall_grid.h"
 #include "kernels/geom/winding_number.h"
 
 using namespace selfsim;
@@ -277,3 +279,33 @@ TEST(ExclusionSurface, AStartNearerThanTheRadiusIsReported) {
   EXPECT_TRUE(std::isinf(clear.start_gaps.wall));
   EXPECT_TRUE(std::isinf(clear.start_gaps.between));
 }
+
+namespace {
+
+// walls = "grid": in a sphere, every corner (a triangle's farthest point from the centre is a corner) keeps
+// the last radius less the grid's error bound and the quarter voxel the sphere is meshed within (a voxel of
+// a sixth of the last radius: 0.19 of it in all), and the radius itself as the grid reads it; the rest of the
+// invariants hold as with the boundary's triangles.
+TEST(ExclusionSurface, GridWallsKeepTheRadiusLessTheGridsError) {
+  const Volume ball = Volume::sphere({0, 0, 0}, 1);
+  SurfaceOptions o = options(5);
+  o.radius = 0.2;
+  const double last = o.radius * std::pow(o.factor, o.levels - 1), voxel = last / 6;
+  const Mesh boundary = sphere_mesh({0, 0, 0}, 1, voxel / 4);
+  const WallGrid walls(ball, voxel, 2 * o.radius, {}, no_progress());
+  const Mesh start = triangles({{-.6, -.4, 0}, {.6, -.4, 0}, {0, .6, 0}});
+  const SurfaceResult r = exclusion_surface(boundary, start, o, no_progress(), &walls);
+  EXPECT_FALSE(first_intersection(r.surface, no_progress()).has_value());
+  EXPECT_TRUE(mesh_topology(r.surface).manifold());
+  double least = INFINITY;
+  for (Vec3 p : r.surface.points) least = std::min(least, 1 - norm(p));
+  EXPECT_GE(least, last - walls.error() - voxel / 4);
+  EXPECT_LT(least, 1.5 * last);  // it grew out to the walls
+  // As the grid reads it, every point keeps the radius itself.
+  for (Vec3 p : r.surface.points) EXPECT_GE(walls.clearance(p), last * (1 - 1e-9));
+  std::size_t moved = 0;
+  for (const LevelReport& l : r.levels) moved += l.splits - l.stuck;
+  EXPECT_GT(moved, r.levels.back().splits / 2);
+}
+
+}  // namespace

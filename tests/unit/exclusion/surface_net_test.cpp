@@ -7,9 +7,41 @@
 #include <set>
 
 #include "kernels/geom/box_mesh.h"
+#include "kernels/geom/volume.h"
+#include "kernels/geom/wall_grid.h"
 
 namespace selfsim::exclusion {
-namespace {}  // namespace
+namespace {  // The same with the walls measured on a distance grid: the walls' steps depend only on the move.
+TEST(Surfaces, ParallelRoundsEqualMovingOneAfterAnotherWithGridWalls) {
+  const Volume ball = Volume::sphere({0, 0, 0}, 1);
+  const WallGrid walls(ball, 0.03, 0.4, {}, no_progress());
+  const Mesh boundary = sphere_mesh({0, 0, 0}, 1, 0.03 / 4);
+  Mesh start;
+  start.points = {{-.6, -.4, 0}, {.6, -.4, 0}, {0, .6, 0}};
+  start.triangles = {{0, 1, 2}};
+  auto grown = [&](bool speculate) {
+    Surfaces s(boundary, start, 1 << 16, 1 << 16);
+    s.set_round_cells(0.3);
+    s.set_neighbourhood(6, 0.01);
+    s.set_walls(&walls);
+    double r = 0.2;
+    for (int level = 1; level <= 5; ++level, r *= 0.8) {
+      LevelReport report;
+      s.subdivide(level, r);
+      s.grow(r, report, no_progress(), speculate);
+    }
+    return s.result().points;
+  };
+  const std::vector<Vec3> one_by_one = grown(false), in_rounds = grown(true);
+  ASSERT_EQ(one_by_one.size(), in_rounds.size());
+  for (std::size_t i = 0; i < one_by_one.size(); ++i) {
+    ASSERT_EQ(one_by_one[i].x, in_rounds[i].x) << i;
+    ASSERT_EQ(one_by_one[i].y, in_rounds[i].y) << i;
+    ASSERT_EQ(one_by_one[i].z, in_rounds[i].z) << i;
+  }
+}
+
+}  // namespace
 }  // namespace selfsim::exclusion
 
 namespace selfsim::exclusion {

@@ -1,0 +1,75 @@
+#include "kernels/geom/wall_grid.h"
+
+#include <openvdb/tools/Interpolation.h>
+
+#include <cmath>
+#include <vector>
+
+#include "kernels/geom/check.h"
+#include "kernels/geom/openvdb_grid.h"
+
+namespace selfsim {
+
+struct WallGrid::Data {
+  vdb::Frame frame;
+  vdb::Grid::Ptr grid;  // in the frame's voxels, negative inside
+};
+
+namespace {
+
+// Voxels either side of every part's surface: the depth asked for and two more, both sides, since a
+// difference reads what it takes away from outside it.
+float band_for(double voxel, double depth) { return static_cast<float>(std::ceil(depth / voxel) + 2); }
+
+}  // namespace
+
+double WallGrid::size(const Volume& v, double voxel, double depth) {
+  const vdb::Frame f = vdb::frame_for(v.bbox(), voxel);
+  std::vector<Vec3> corners;
+  vdb::part_corners(v, corners);
+  return vdb::tree_size(corners, vdb::parts_area(v), f, 2.0 * band_for(voxel, depth) + 1);
+}
+
+WallGrid::WallGrid(const Volume& v, double voxel, double depth, const PointBudget& budget, Progress& progress) {
+  const vdb::Frame f = vdb::frame_for(v.bbox(), voxel);
+  check_budget(size(v, voxel, depth), budget,
+               "the region's distance grid at voxel size " + number_text(voxel) + " (set a larger 'voxel')");
+  vdb::initialise_openvdb();
+  vdb::Interrupter interrupt{progress};
+  auto data = std::make_shared<Data>();
+  data->frame = f;
+  data->grid = vdb::openvdb_call([&] { return vdb::volume_level_set(v, f, interrupt, band_for(voxel, depth)); });
+  if (progress.cancelled()) throw Cancelled();
+  data_ = std::move(data);
+}
+
+void WallGrid::clearances(std::span<const Vec3> points, std::span<double> out) const {
+  // An accessor per call: OpenVDB's caches are not to be shared between threads.
+  const auto access = data_->grid->getConstUnsafeAccessor();
+  const vdb::Frame& f = data_->frame;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Vec3 q = (1 / f.voxel) * (centre_ + (1 / scale_) * points[i] - f.origin);
+    const double value = openvdb::tools::BoxSampler::sample(access, openvdb::Vec3R(q.x, q.y, q.z));
+    out[i] = -value * f.voxel * scale_;
+  }
+}
+
+double WallGrid::clearance(Vec3 p) const {
+  double c = 0;
+  clearances({&p, 1}, {&c, 1});
+  return c;
+}
+
+double WallGrid::voxel() const { return data_->frame.voxel * scale_; }
+
+double WallGrid::error() const { return std::sqrt(3.0) / 2 * voxel(); }
+
+WallGrid WallGrid::in_frame(Vec3 centre, double scale) const {
+  // q = scale·(p − centre) and this view's p = scale_·(w − centre_): q = scale·scale_·(w − centre_ − centre/scale_).
+  WallGrid g = *this;
+  g.centre_ = centre_ + (1 / scale_) * centre;
+  g.scale_ = scale_ * scale;
+  return g;
+}
+
+}  // namespace selfsim

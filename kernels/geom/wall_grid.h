@@ -1,0 +1,56 @@
+// A region's walls as a signed distance grid (OpenVDB, in wall_grid.cpp): how far inside the walls a point
+// lies, read by trilinear interpolation from the grid instead of measured against a boundary mesh made from
+// it. The exclusion surface's `walls = "grid"` (issue 23).
+//
+// What the number means. The grid holds, at voxel centres, the signed distance to the region's boundary: a
+// box's, sphere's (its sphere_mesh within a quarter voxel) or mesh's exactly; a union's or difference's as
+// OpenVDB's CSG combines its parts' (the least or greatest of their distances), which inside the region is
+// never more than the true distance. Such values change by at most the distance between their centres, so
+// the interpolated value between them is within sqrt(3)/2 of a voxel of the function they sample (the
+// trilinear weights' spread is at most a quarter of a voxel squared along each axis), and itself changes by
+// at most sqrt(3) times the distance moved (along each axis its slope is a mean of differences of at most
+// one voxel per voxel). So a point whose interpolated clearance is c lies at least c - error() inside.
+#pragma once
+
+#include <memory>
+#include <span>
+
+#include "kernels/geom/budget.h"
+#include "kernels/geom/progress.h"
+#include "kernels/geom/vec3.h"
+#include "kernels/geom/volume.h"
+
+namespace selfsim {
+
+class WallGrid {
+ public:
+  // How much the interpolated clearance can change per unit moved.
+  static constexpr double slope = 1.7320508075688772;
+
+  // The walls of v at `voxel`, resolved at least `depth` inside them (a point deeper reads as deeper than
+  // `depth`, not as its distance). Throws BudgetError over the budget (size()), Error as volume_boundary
+  // does for a voxel size it refuses.
+  WallGrid(const Volume& v, double voxel, double depth, const PointBudget& budget, Progress& progress);
+  // Budget points the grid takes to build and hold.
+  static double size(const Volume& v, double voxel, double depth);
+
+  // Each point's interpolated distance inside the walls (negative outside), in this view's coordinates.
+  // Safe to call from several threads at once.
+  void clearances(std::span<const Vec3> points, std::span<double> out) const;
+  double clearance(Vec3 p) const;
+  // The most the true clearance can fall below the interpolated one, in this view's coordinates.
+  double error() const;
+  double voxel() const;
+
+  // The same walls seen in coordinates q = scale·(p − centre).
+  WallGrid in_frame(Vec3 centre, double scale) const;
+
+ private:
+  WallGrid() = default;
+  struct Data;
+  std::shared_ptr<const Data> data_;
+  Vec3 centre_{};
+  double scale_ = 1;
+};
+
+}  // namespace selfsim
