@@ -2,6 +2,7 @@
 // surface (kernels/exclusion/exclusion_surface.h) grown inside a Volume. The start is a Mesh or, for one
 // triangle, a table of its three points. The region's boundary is made at a voxel size half the last
 // level's radius unless the volume gives one. A thin adapter.
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -111,7 +112,10 @@ int exclusion_surface(lua_State* L) {
     const double last = opt.radius * std::pow(opt.factor, std::max(opt.levels - 1, 0));
     const double suggested = last / 2;
     double voxel = region->voxel > 0 ? region->voxel : suggested;
-    if (region->voxel > suggested && region->kind != Volume::Kind::box && region->kind != Volume::Kind::mesh) {
+    // Its walls are as fine as the voxels where they come from a grid: a union's or difference's, and any
+    // region's with walls = "grid".
+    if (region->voxel > suggested &&
+        (grid_walls || (region->kind != Volume::Kind::box && region->kind != Volume::Kind::mesh))) {
       const std::string message =
           recipe_where(L) + "exclusion.surface: the region's voxel size " + number_text(region->voxel) +
           " is coarse for the last level's radius " + number_text(last) +
@@ -120,18 +124,21 @@ int exclusion_surface(lua_State* L) {
     }
     RunContext& run = RunContext::of(L);
     const Mesh boundary = with_budget(L, [&](const PointBudget& b) { return volume_boundary(*region, voxel, b, run); });
-    // walls = "grid": the region's distance grid, resolved twice the first radius deep (deeper reads as
-    // that deep, which only shortens the steps the growth takes towards far walls).
+    // walls = "grid": the region's distance grid, resolved twice the first radius deep and no deeper than
+    // the middle of the region's box (a point deeper reads as that deep, and takes shorter steps towards far
+    // walls; resolving all of a region's inside at a fine voxel takes long).
+    const Vec3 extent = region->bbox().size();
+    const double depth = std::min(2 * opt.radius, 0.5 * std::min({extent.x, extent.y, extent.z}));
     std::optional<WallGrid> walls;
     if (grid_walls)
       walls = with_budget(L, [&](const PointBudget& b) {
         PointBudget left = b;
         left.held += budget_size(boundary);
-        return WallGrid(*region, voxel, 2 * opt.radius, left, run);
+        return WallGrid(*region, voxel, depth, left, run);
       });
     exclusion::SurfaceResult r = with_budget(L, [&](const PointBudget& b) {
       opt.budget = b;
-      opt.budget.held += budget_size(boundary) + (walls ? WallGrid::size(*region, voxel, 2 * opt.radius) : 0);
+      opt.budget.held += budget_size(boundary) + (walls ? WallGrid::size(*region, voxel, depth) : 0);
       return exclusion::exclusion_surface(boundary, start, opt, run, walls ? &*walls : nullptr);
     });
     // A start nearer than the radius to the walls or between its surfaces keeps only that gap there.

@@ -6,8 +6,9 @@
 // WallGrid::slope times the farthest corner, split 1 -> 4 where that is not enough, down to max_wall_depth.
 // From a place t_k of the point where that bound is b, no point of the fan moves more than |t - t_k| by t, so
 // the fan keeps r while |t - t_k| <= (b - r) / slope: the point steps that far and measures again (sphere
-// tracing), until the step falls below 1/100 of the half edge (it stops there, short of the exact limit by
-// about that) or the reach already found. The true clearance is then at least r - WallGrid::error().
+// tracing), until the step falls below 1/100 of the half edge or the reach already found. A move the walls
+// stop keeps a quarter of its half edge beyond r (wall_reach.cpp says why), unless it starts nearer. The true
+// clearance is then at least r - WallGrid::error().
 #pragma once
 
 #include "kernels/exclusion/fan_reach.h"

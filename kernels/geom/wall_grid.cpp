@@ -1,6 +1,7 @@
 #include "kernels/geom/wall_grid.h"
 
 #include <openvdb/tools/Interpolation.h>
+#include <openvdb/tools/LevelSetRebuild.h>
 
 #include <cmath>
 #include <vector>
@@ -17,9 +18,8 @@ struct WallGrid::Data {
 
 namespace {
 
-// Voxels either side of every part's surface: the depth asked for and two more, both sides, since a
-// difference reads what it takes away from outside it.
-float band_for(double voxel, double depth) { return static_cast<float>(std::ceil(depth / voxel) + 2); }
+// Voxels of the band inside the walls: the depth asked for and two more.
+float inside_band(double voxel, double depth) { return static_cast<float>(std::ceil(depth / voxel) + 2); }
 
 }  // namespace
 
@@ -27,7 +27,8 @@ double WallGrid::size(const Volume& v, double voxel, double depth) {
   const vdb::Frame f = vdb::frame_for(v.bbox(), voxel);
   std::vector<Vec3> corners;
   vdb::part_corners(v, corners);
-  return vdb::tree_size(corners, vdb::parts_area(v), f, 2.0 * band_for(voxel, depth) + 1);
+  // The parts' narrow bands (7 voxels across) and the rebuilt band (3 outside, the depth inside).
+  return vdb::tree_size(corners, vdb::parts_area(v), f, 7 + 4 + inside_band(voxel, depth));
 }
 
 WallGrid::WallGrid(const Volume& v, double voxel, double depth, const PointBudget& budget, Progress& progress) {
@@ -38,7 +39,14 @@ WallGrid::WallGrid(const Volume& v, double voxel, double depth, const PointBudge
   vdb::Interrupter interrupt{progress};
   auto data = std::make_shared<Data>();
   data->frame = f;
-  data->grid = vdb::openvdb_call([&] { return vdb::volume_level_set(v, f, interrupt, band_for(voxel, depth)); });
+  // The volume's level set as its boundary is made (a union or difference combined on narrow bands), then
+  // its zero surface measured again (levelSetRebuild): the distance to the region's own walls, deep inside
+  // it. The combined bands alone read a union's parts' distances, so a wall where two parts touch.
+  data->grid = vdb::openvdb_call([&] {
+    const vdb::Grid::Ptr combined = vdb::volume_level_set(v, f, interrupt);
+    if (progress.cancelled()) throw Cancelled();
+    return openvdb::tools::levelSetRebuild(*combined, 0.0f, 3.0f, inside_band(voxel, depth), nullptr, &interrupt);
+  });
   if (progress.cancelled()) throw Cancelled();
   data_ = std::move(data);
 }

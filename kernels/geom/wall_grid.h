@@ -2,13 +2,13 @@
 // lies, read by trilinear interpolation from the grid instead of measured against a boundary mesh made from
 // it. The exclusion surface's `walls = "grid"` (issue 23).
 //
-// What the number means. The grid holds, at voxel centres, the signed distance to the region's boundary: a
-// box's, sphere's (its sphere_mesh within a quarter voxel) or mesh's exactly; a union's or difference's as
-// OpenVDB's CSG combines its parts' (the least or greatest of their distances), which inside the region is
-// never more than the true distance. Such values change by at most the distance between their centres, so
-// the interpolated value between them is within sqrt(3)/2 of a voxel of the function they sample (the
-// trilinear weights' spread is at most a quarter of a voxel squared along each axis), and itself changes by
-// at most sqrt(3) times the distance moved (along each axis its slope is a mean of differences of at most
+// What the number means. The grid holds, at voxel centres, the signed distance to the region's boundary as
+// OpenVDB meshes it from the volume's level set (the boundary volume_boundary makes: a box's, sphere's (its
+// sphere_mesh within a quarter voxel) or mesh's own, a union's or difference's as fine as the voxels), measured
+// again from that surface (levelSetRebuild). Such values change by at most the distance between their
+// centres, so the interpolated value between them is within sqrt(3)/2 of a voxel of the function they sample
+// (the trilinear weights' spread is at most a quarter of a voxel squared along each axis), and itself changes
+// by at most sqrt(3) times the distance moved (along each axis its slope is a mean of differences of at most
 // one voxel per voxel). So a point whose interpolated clearance is c lies at least c - error() inside.
 #pragma once
 

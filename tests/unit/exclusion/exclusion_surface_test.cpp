@@ -308,4 +308,37 @@ TEST(ExclusionSurface, GridWallsKeepTheRadiusLessTheGridsError) {
   EXPECT_GT(moved, r.levels.back().splits / 2);
 }
 
+// A point whose neighbour has gone out to the walls still moves: a move the walls stop keeps a margin
+// beyond the radius, so the fans that share its point can prove they keep the radius (stopped exactly at
+// the radius, it left both other midpoints of the first level stuck, 0.85 from any wall).
+TEST(ExclusionSurface, GridWallsLeaveTheNeighboursOfAStoppedPointFree) {
+  const Volume box = Volume::box({-1, -1, -1}, {1, 1, 1});
+  const WallGrid walls(box, 0.04, 0.2, {}, no_progress());
+  const Mesh start = triangles({{-.3, -.2, 0}, {.3, -.2, 0}, {0, .2, 0}});
+  const SurfaceResult r =
+      exclusion_surface(box_mesh({-1, -1, -1}, {1, 1, 1}), start, options(2), no_progress(), &walls);
+  ASSERT_EQ(r.levels.size(), 2u);
+  EXPECT_EQ(r.levels[0].stuck, 0u);
+  EXPECT_LE(r.levels[1].stuck, 1u);
+  double nearest = INFINITY;  // one point went out to the walls
+  for (Vec3 p : r.surface.points) nearest = std::min(nearest, walls.clearance(p));
+  EXPECT_LT(nearest, 0.2);
+  EXPECT_GE(nearest, 0.08 * (1 - 1e-9));
+}
+
+// Nor do static corners near the walls hold a move back: only the moving point must keep the margin, and the
+// parts of the fan near a static corner, which move slowly, keep the radius. Held to the margin as a whole,
+// with the margin then dropped, this start (corners 0.28 from a sphere's wall, within radius and margin) left
+// 2 of the first level's 3 points stuck.
+TEST(ExclusionSurface, GridWallsLetAFanMoveBesideCornersNearTheWalls) {
+  const Volume ball = Volume::sphere({0, 0, 0}, 1);
+  const WallGrid walls(ball, 0.05, 0.4, {}, no_progress());
+  const Mesh start = triangles({{-.6, -.4, 0}, {.6, -.4, 0}, {0, .6, 0}});
+  SurfaceOptions o = options(2);
+  o.radius = 0.2;
+  const SurfaceResult r = exclusion_surface(sphere_mesh({0, 0, 0}, 1, 0.05 / 4), start, o, no_progress(), &walls);
+  EXPECT_EQ(r.levels[0].stuck, 0u);
+  EXPECT_EQ(r.levels[1].stuck, 0u);
+}
+
 }  // namespace

@@ -72,6 +72,17 @@ TEST(WallGrid, ADifferenceReadsBothItsWalls) {
   EXPECT_GT(measured, 1000);
 }
 
+// Where two parts of a union touch there is no wall: the grid measures the union's own surface again, not
+// the least of its parts' distances (which reads 0 along the shared face).
+TEST(WallGrid, TwoBoxesSideBySideHaveNoWallBetweenThem) {
+  const double voxel = 0.05;
+  const Volume v = Volume::combine(
+      Volume::Kind::unite, {shared(Volume::box({0, 0, 0}, {1, 1, 1})), shared(Volume::box({1, 0, 0}, {2, 1, 1}))});
+  const WallGrid g(v, voxel, 0.5, {}, no_progress());
+  for (const double x : {0.9, 1.0, 1.1}) EXPECT_NEAR(g.clearance({x, 0.5, 0.5}), 0.5, g.error() + 1e-6) << x;
+  EXPECT_NEAR(g.clearance({1, 0.3, 0.5}), 0.3, g.error() + 1e-6);
+}
+
 // Seen in another frame, q = s·(p − c), the same walls read s times the clearance.
 TEST(WallGrid, AnotherFrameScalesTheClearance) {
   const WallGrid g(Volume::box({0, 0, 0}, {4, 2, 2}), 0.1, 0.5, {}, no_progress());
