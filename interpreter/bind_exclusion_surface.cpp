@@ -113,12 +113,14 @@ int exclusion_surface(lua_State* L) {
     const double suggested = last / 2;
     double voxel = region->voxel > 0 ? region->voxel : suggested;
     // Its walls are as fine as the voxels where they come from a grid: a union's or difference's, and any
-    // region's with walls = "grid".
-    if (region->voxel > suggested &&
+    // region's with walls = "grid" (a .vdb level set's: its own voxels).
+    const bool own_grid = grid_walls && region->samples;
+    const double grid_voxel = own_grid ? region->samples->voxel : region->voxel;
+    if (grid_voxel > suggested &&
         (grid_walls || (region->kind != Volume::Kind::box && region->kind != Volume::Kind::mesh))) {
       const std::string message =
-          recipe_where(L) + "exclusion.surface: the region's voxel size " + number_text(region->voxel) +
-          " is coarse for the last level's radius " + number_text(last) +
+          recipe_where(L) + "exclusion.surface: the region's voxel size " + number_text(grid_voxel) +
+          (own_grid ? " (its .vdb grid's)" : "") + " is coarse for the last level's radius " + number_text(last) +
           " (its boundary is only as fine as a voxel); suggested voxel = " + number_text(suggested);
       lua_warning(L, message.c_str(), 0);
     }

@@ -69,7 +69,8 @@ int load(lua_State* L) {
 
 }  // namespace
 
-std::variant<Polyline, Polyline3, Mesh> load_value(lua_State* L, const std::string& name, const std::string& grid) {
+std::variant<Polyline, Polyline3, Mesh> load_value(lua_State* L, const std::string& name, const std::string& grid,
+                                                   GridSamples* samples) {
   check_name(name);
   check_found(RunContext::of(L).config.recipe.parent_path(), name);
   // Opened without following any link, and read through that descriptor: the name cannot be swapped
@@ -77,9 +78,20 @@ std::variant<Polyline, Polyline3, Mesh> load_value(lua_State* L, const std::stri
   const io::FileBeneath file(RunContext::of(L).config.recipe.parent_path(), name);
   const bool vdb = lower_case(std::filesystem::path(name).extension().string()) == ".vdb";
   if (!grid.empty() && !vdb) throw Error("option 'grid' is for .vdb files, not '" + shown_text(name) + "'");
-  // A .vdb file: the surface of its level set (or the grid named), meshed by OpenVDB (vdb_read.h).
-  const io::Dataset read =
-      vdb ? io::read_vdb_surface(file.name(), grid, name).mesh : io::read_dataset(file.name(), name);
+  // A .vdb file: the surface of its level set (or the grid named), meshed by OpenVDB (vdb_read.h), and the
+  // level set's voxels for a caller that asks.
+  io::Dataset read;
+  if (vdb) {
+    io::VdbSurface surface = io::read_vdb_surface(file.name(), grid, name);
+    read = std::move(surface.mesh);
+    if (samples) {
+      check_run_budget(L, static_cast<double>(surface.samples.bytes()) / 16,
+                       "the level set of '" + shown_text(name) + "'");
+      *samples = std::move(surface.samples);
+    }
+  } else {
+    read = io::read_dataset(file.name(), name);
+  }
   std::variant<Polyline, Polyline3, Mesh> value;
   try {
     value = io::dataset_value(read, RunContext::of(L));

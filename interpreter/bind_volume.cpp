@@ -98,7 +98,7 @@ int volume_mesh(lua_State* L) {
 
 // volume.vdb("shape.vdb"[, { grid = name, voxel = v }]): the inside of a level set saved by OpenVDB (Houdini,
 // Blender, selfsim): its zero isosurface, meshed by OpenVDB at the grid's own voxels, then a closed mesh
-// region as volume.mesh makes one (checked closed and not crossing itself).
+// region as volume.mesh makes one (checked closed and not crossing itself), keeping the level set's voxels.
 int volume_vdb(lua_State* L) {
   return call_kernel(L, "volume.vdb", [&] {
     if (lua_type(L, 1) != LUA_TSTRING)
@@ -114,9 +114,14 @@ int volume_vdb(lua_State* L) {
       voxel = read_voxel(o);
       o.finish();
     }
-    Mesh m = std::get<Mesh>(load_value(L, name, grid));
+    GridSamples samples;
+    Mesh m = std::get<Mesh>(load_value(L, name, grid, &samples));
     Volume v = Volume::closed_mesh(std::move(m), RunContext::of(L));
     v.voxel = voxel;
+    if (!samples.index.empty()) {  // a level set: walls = "grid" measures them on it
+      v.held_bytes += static_cast<double>(samples.bytes());
+      v.samples = std::make_shared<const GridSamples>(std::move(samples));
+    }
     push_volume(L, std::move(v));
     return 1;
   });

@@ -38,7 +38,8 @@ int exclusion_surface(lua_State* L);
 Held<Volume> test_volume(lua_State* L, int index);
 // bind_load.cpp: what load(name) reads, checked against the run's budget but not yet pushed.
 // `grid`: for a .vdb, the grid whose surface to take (else its first level set).
-std::variant<Polyline, Polyline3, Mesh> load_value(lua_State* L, const std::string& name, const std::string& grid = "");
+std::variant<Polyline, Polyline3, Mesh> load_value(lua_State* L, const std::string& name, const std::string& grid = "",
+                                                   GridSamples* samples = nullptr);
 // bind_group.cpp: pushes group{...} of the list at index (save({ a, b }, ...) uses it too, naming the list
 // `into` in messages).
 void push_group(lua_State* L, int index, const char* into = "group{...}");

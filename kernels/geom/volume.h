@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "kernels/geom/bbox.h"
+#include "kernels/geom/grid_samples.h"
 #include "kernels/geom/mesh.h"
 #include "kernels/geom/progress.h"
 
@@ -31,6 +32,7 @@ struct Volume {
   Vec3 centre;                                       // sphere
   double radius = 0;                                 // sphere, > 0
   std::shared_ptr<const Mesh> mesh;                  // mesh: closed, not crossing itself, facing outwards
+  std::shared_ptr<const GridSamples> samples;        // mesh read from a .vdb: the level set it was meshed from
   std::vector<std::shared_ptr<const Volume>> parts;  // unite: all of them; subtract: the first less the others
   double voxel = 0;                                  // the voxel size given by the recipe; 0: chosen by each use
   BBox3 bounds;                                      // kept when made: a union 20,000 deep is not walked again

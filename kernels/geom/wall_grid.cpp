@@ -2,6 +2,7 @@
 
 #include <openvdb/tools/Interpolation.h>
 #include <openvdb/tools/LevelSetRebuild.h>
+#include <openvdb/tools/SignedFloodFill.h>
 
 #include <cmath>
 #include <vector>
@@ -24,6 +25,7 @@ float inside_band(double voxel, double depth) { return static_cast<float>(std::c
 }  // namespace
 
 double WallGrid::size(const Volume& v, double voxel, double depth) {
+  if (v.samples) voxel = v.samples->voxel;
   const vdb::Frame f = vdb::frame_for(v.bbox(), voxel);
   std::vector<Vec3> corners;
   vdb::part_corners(v, corners);
@@ -31,8 +33,26 @@ double WallGrid::size(const Volume& v, double voxel, double depth) {
   return vdb::tree_size(corners, vdb::parts_area(v), f, 7 + 4 + inside_band(voxel, depth));
 }
 
+namespace {
+
+// A .vdb file's level set from its voxels, in its own frame (index (0, 0, 0) at its origin), the inside
+// below its band made negative again.
+vdb::Grid::Ptr samples_grid(const GridSamples& s) {
+  const vdb::Grid::Ptr g = vdb::Grid::create(static_cast<float>(s.background / s.voxel));
+  auto access = g->getAccessor();
+  for (std::size_t i = 0; i < s.index.size(); ++i)
+    access.setValue(openvdb::Coord(s.index[i][0], s.index[i][1], s.index[i][2]),
+                    static_cast<float>(s.value[i] / s.voxel));
+  openvdb::tools::signedFloodFill(g->tree());
+  g->setGridClass(openvdb::GRID_LEVEL_SET);
+  return g;
+}
+
+}  // namespace
+
 WallGrid::WallGrid(const Volume& v, double voxel, double depth, const PointBudget& budget, Progress& progress) {
-  const vdb::Frame f = vdb::frame_for(v.bbox(), voxel);
+  if (v.samples) voxel = v.samples->voxel;  // the file's own lattice
+  const vdb::Frame f = v.samples ? vdb::Frame{v.samples->origin, voxel} : vdb::frame_for(v.bbox(), voxel);
   check_budget(size(v, voxel, depth), budget,
                "the region's distance grid at voxel size " + number_text(voxel) + " (set a larger 'voxel')");
   vdb::initialise_openvdb();
@@ -43,7 +63,7 @@ WallGrid::WallGrid(const Volume& v, double voxel, double depth, const PointBudge
   // its zero surface measured again (levelSetRebuild): the distance to the region's own walls, deep inside
   // it. The combined bands alone read a union's parts' distances, so a wall where two parts touch.
   data->grid = vdb::openvdb_call([&] {
-    const vdb::Grid::Ptr combined = vdb::volume_level_set(v, f, interrupt);
+    const vdb::Grid::Ptr combined = v.samples ? samples_grid(*v.samples) : vdb::volume_level_set(v, f, interrupt);
     if (progress.cancelled()) throw Cancelled();
     return openvdb::tools::levelSetRebuild(*combined, 0.0f, 3.0f, inside_band(voxel, depth), nullptr, &interrupt);
   });

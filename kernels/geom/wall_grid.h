@@ -4,12 +4,12 @@
 //
 // What the number means. The grid holds, at voxel centres, the signed distance to the region's boundary as
 // OpenVDB meshes it from the volume's level set (the boundary volume_boundary makes: a box's, sphere's (its
-// sphere_mesh within a quarter voxel) or mesh's own, a union's or difference's as fine as the voxels), measured
-// again from that surface (levelSetRebuild). Such values change by at most the distance between their
-// centres, so the interpolated value between them is within sqrt(3)/2 of a voxel of the function they sample
-// (the trilinear weights' spread is at most a quarter of a voxel squared along each axis), and itself changes
-// by at most sqrt(3) times the distance moved (along each axis its slope is a mean of differences of at most
-// one voxel per voxel). So a point whose interpolated clearance is c lies at least c - error() inside.
+// sphere_mesh within a quarter voxel) or mesh's own, a union's or difference's as fine as the voxels; a .vdb
+// file's zero surface on its own lattice), measured again from that surface (levelSetRebuild). Such values change by at
+// most the distance between their centres, so the interpolated value between them is within sqrt(3)/2 of a voxel of the
+// function they sample (the trilinear weights' spread is at most a quarter of a voxel squared along each axis), and
+// itself changes by at most sqrt(3) times the distance moved (along each axis its slope is a mean of differences of at
+// most one voxel per voxel). So a point whose interpolated clearance is c lies at least c - error() inside.
 #pragma once
 
 #include <memory>
@@ -28,8 +28,9 @@ class WallGrid {
   static constexpr double slope = 1.7320508075688772;
 
   // The walls of v at `voxel`, resolved at least `depth` inside them (a point deeper reads as deeper than
-  // `depth`, not as its distance). Throws BudgetError over the budget (size()), Error as volume_boundary
-  // does for a voxel size it refuses.
+  // `depth`, not as its distance). A volume read from a .vdb level set (Volume::samples) is measured on that
+  // grid, at its own voxel and lattice, whatever `voxel` says. Throws BudgetError over the budget (size()),
+  // Error as volume_boundary does for a voxel size it refuses.
   WallGrid(const Volume& v, double voxel, double depth, const PointBudget& budget, Progress& progress);
   // Budget points the grid takes to build and hold.
   static double size(const Volume& v, double voxel, double depth);

@@ -233,6 +233,51 @@ void send_surface(PipeOut& out, openvdb::io::File& file, const std::string& want
     for (int k = 0; k < 4; ++k) put_count(out, q[k]);
   put_count(out, 0);
   put_count(out, 0);
+  // A level set's own voxels (GridSamples), or none: a count, then the voxel, origin and background, then
+  // each voxel's index and value.
+  const auto map = grid->transform().mapType();
+  const bool uniform =
+      map == openvdb::math::UniformScaleMap::mapType() || map == openvdb::math::UniformScaleTranslateMap::mapType();
+  if (c != openvdb::GRID_LEVEL_SET || !uniform || !(grid->background() > 0)) {
+    put_count(out, 0);
+    return;
+  }
+  put_count(out, grid->activeVoxelCount());
+  put_double(out, grid->voxelSize()[0]);
+  const openvdb::Vec3d origin = grid->indexToWorld(openvdb::Vec3d(0, 0, 0));
+  for (int k = 0; k < 3; ++k) put_double(out, origin[k]);
+  put_double(out, grid->background());
+  for (auto v = grid->cbeginValueOn(); v; ++v) {
+    const openvdb::Coord ijk = v.getCoord();
+    for (int k = 0; k < 3; ++k) put_double(out, ijk[k]);
+    put_double(out, *v);
+  }
+}
+
+// What send_surface sent after the surface: the level set's voxels, each checked finite and in range.
+GridSamples receive_samples(PipeIn& in) {
+  GridSamples g;
+  const std::uint64_t n = get_count(in, read_budget_bytes() / 32);
+  if (n == 0) return g;
+  g.voxel = get_double(in);
+  g.origin = {get_double(in), get_double(in), get_double(in)};
+  g.background = get_double(in);
+  if (!(g.voxel > 0 && std::isfinite(g.voxel) && is_finite(g.origin) && g.background > 0 &&
+        std::isfinite(g.background)))
+    throw Error("the OpenVDB reader sent a malformed answer");
+  g.index.resize(n);
+  g.value.resize(n);
+  for (std::uint64_t i = 0; i < n; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      const double x = get_double(in);
+      if (!(std::abs(x) < 2147483647.0)) throw Error("the OpenVDB reader sent a malformed answer");
+      g.index[i][k] = static_cast<std::int32_t>(x);
+    }
+    const double v = get_double(in);
+    if (!std::isfinite(v)) throw Error("grid values that are not finite");
+    g.value[i] = static_cast<float>(v);
+  }
+  return g;
 }
 
 }  // namespace
@@ -289,6 +334,7 @@ VdbSurface read_vdb_surface(const std::filesystem::path& file, const std::string
           s.grid = get_name(in);
           s.what = get_name(in);
           s.mesh = receive_dataset(in, read_budget_bytes() / 8);
+          s.samples = receive_samples(in);
         },
         false);
     const Dataset& d = s.mesh;

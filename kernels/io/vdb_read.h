@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "kernels/geom/grid_samples.h"
 #include "kernels/io/dataset.h"
 
 namespace selfsim::io {
@@ -37,6 +38,9 @@ struct VdbSurface {
   Dataset mesh;      // polygons
   std::string grid;  // the grid's name
   std::string what;  // "level set 'surface' at 0", for the user
+  // A level set's active voxels, when its transform is a uniform scale and translation (empty otherwise,
+  // and for fog volumes and other grids): its walls measured on the grid itself (WallGrid).
+  GridSamples samples;
 };
 
 // `grid` names the grid to take instead (any float grid); `shown_as` is the name messages give the file (a

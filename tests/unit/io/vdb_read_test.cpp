@@ -10,6 +10,7 @@
 
 #include "kernels/geom/level_set.h"
 #include "kernels/geom/volume.h"
+#include "kernels/geom/wall_grid.h"
 
 namespace selfsim::io {
 namespace {
@@ -35,6 +36,29 @@ TEST(VdbRead, SphereSurfaceHasItsRadius) {
   EXPECT_EQ(s.mesh.shapes, CellShapes::polygons);
   for (const auto& p : s.mesh.points) EXPECT_NEAR(std::hypot(p[0], p[1], p[2]), 1.0, 1.0 / 32);
   EXPECT_EQ(s.mesh.cell_ends.back(), s.mesh.cell_points.size());
+}
+
+// A level set's own voxels come back too: each the sphere's signed distance at its centre, and a WallGrid
+// measured on them reads the distance inside within its bound, at the file's voxel whatever it is asked.
+TEST(VdbRead, ALevelSetsVoxelsComeBackForTheWalls) {
+  const VdbSurface s = read_vdb_surface(sphere_vdb());
+  const GridSamples& g = s.samples;
+  EXPECT_DOUBLE_EQ(g.voxel, 1.0 / 32);
+  ASSERT_GT(g.index.size(), 10000u);
+  ASSERT_EQ(g.index.size(), g.value.size());
+  EXPECT_NEAR(g.background, 3.0 / 32, 1e-6);
+  for (std::size_t i = 0; i < g.index.size(); i += 7) {
+    const Vec3 p = g.origin + g.voxel * Vec3{static_cast<double>(g.index[i][0]), static_cast<double>(g.index[i][1]),
+                                             static_cast<double>(g.index[i][2])};
+    EXPECT_NEAR(g.value[i], norm(p) - 1, g.voxel / 4) << i;
+  }
+  Volume v = Volume::closed_mesh(sphere_mesh({0, 0, 0}, 1, 1.0 / 128), no_progress());
+  v.samples = std::make_shared<const GridSamples>(g);
+  const WallGrid walls(v, 0.2, 0.5, {}, no_progress());
+  EXPECT_DOUBLE_EQ(walls.voxel(), 1.0 / 32);
+  for (const Vec3 p : {Vec3{0.9, 0, 0}, Vec3{0, -0.7, 0.1}, Vec3{0.3, 0.3, -0.6}, Vec3{0, 1.01, 0}})
+    EXPECT_NEAR(walls.clearance(p), 1 - norm(p), walls.error() + 1.0 / 128) << p.y;
+  EXPECT_GE(walls.clearance({0.1, 0.2, 0.3}), 0.5);  // deeper than asked: at least that deep
 }
 
 TEST(VdbRead, InfoFromMetadata) {
