@@ -4,7 +4,9 @@
 #include <openvdb/tools/LevelSetRebuild.h>
 #include <openvdb/tools/SignedFloodFill.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "kernels/geom/check.h"
@@ -22,6 +24,21 @@ namespace {
 // Voxels of the band inside the walls: the depth asked for and two more.
 float inside_band(double voxel, double depth) { return static_cast<float>(std::ceil(depth / voxel) + 2); }
 
+// Budget points of the tree a .vdb file's voxels make: OpenVDB's nodes (4096, 128 and 8 voxels wide, about
+// 270 KB, 34 KB and 2 KB each) for every cell of those widths a voxel falls in, so that a crafted file
+// scattering its voxels far apart is refused before each one takes a node of every size.
+double samples_size(const GridSamples& s) {
+  double bytes = 0;
+  for (const auto& [shift, node] : {std::pair{12, 270e3}, std::pair{7, 34e3}, std::pair{3, 2.1e3}}) {
+    std::vector<std::array<std::int32_t, 3>> cells;
+    cells.reserve(s.index.size());
+    for (const auto& i : s.index) cells.push_back({i[0] >> shift, i[1] >> shift, i[2] >> shift});
+    std::sort(cells.begin(), cells.end());
+    bytes += node * static_cast<double>(std::unique(cells.begin(), cells.end()) - cells.begin());
+  }
+  return bytes / 16;
+}
+
 }  // namespace
 
 double WallGrid::size(const Volume& v, double voxel, double depth) {
@@ -29,8 +46,10 @@ double WallGrid::size(const Volume& v, double voxel, double depth) {
   const vdb::Frame f = vdb::frame_for(v.bbox(), voxel);
   std::vector<Vec3> corners;
   vdb::part_corners(v, corners);
-  // The parts' narrow bands (7 voxels across) and the rebuilt band (3 outside, the depth inside).
-  return vdb::tree_size(corners, vdb::parts_area(v), f, 7 + 4 + inside_band(voxel, depth));
+  // The parts' narrow bands (7 voxels across) or the file's voxels, and the rebuilt band (3 outside, the
+  // depth inside).
+  return vdb::tree_size(corners, vdb::parts_area(v), f, 7 + 4 + inside_band(voxel, depth)) +
+         (v.samples ? samples_size(*v.samples) : 0);
 }
 
 namespace {

@@ -103,5 +103,19 @@ TEST(WallGrid, ALargeGridIsRefusedBeforeItIsBuilt) {
   EXPECT_THROW(WallGrid(v, 0.01, 0.5, small, no_progress()), BudgetError);
 }
 
+// A crafted .vdb's voxels scattered far apart would each take a tree node of every size: refused first.
+TEST(WallGrid, ScatteredFileVoxelsAreRefusedBeforeTheyAreBuilt) {
+  Volume v = Volume::closed_mesh(sphere_mesh({0, 0, 0}, 1, 0.01), no_progress());
+  GridSamples s;
+  s.voxel = 0.05;
+  s.background = 0.15;
+  for (std::int32_t i = 0; i < 2000; ++i) s.index.push_back({i * 5000, -i * 5000, i * 4099}), s.value.push_back(-0.1f);
+  v.samples = std::make_shared<const GridSamples>(s);
+  EXPECT_GT(WallGrid::size(v, 0.05, 0.2), 2000 * 300e3 / 16);
+  PointBudget budget;
+  budget.limit = 1e7;
+  EXPECT_THROW(WallGrid(v, 0.05, 0.2, budget, no_progress()), BudgetError);
+}
+
 }  // namespace
 }  // namespace selfsim
