@@ -1,7 +1,15 @@
-// Every OpenVDB call of selfsim lives here, in one translation unit (see level_set.h for why).
+// Every OpenVDB call of selfsim lives here, in one translation unit (see level_set.h for why): volumes
+// converted to level sets in a local frame, their boundaries, .vdb files, and the walls' distance grid
+// (wall_grid.h).
 #include "kernels/geom/level_set.h"
 
 #include <openvdb/io/Stream.h>
+#include <openvdb/openvdb.h>
+#include <openvdb/tools/Composite.h>
+#include <openvdb/tools/Interpolation.h>
+#include <openvdb/tools/LevelSetRebuild.h>
+#include <openvdb/tools/MeshToVolume.h>
+#include <openvdb/tools/SignedFloodFill.h>
 #include <openvdb/tools/VolumeToMesh.h>
 
 #include <algorithm>
@@ -11,18 +19,176 @@
 #include <mutex>
 #include <numbers>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "kernels/geom/box_mesh.h"
 #include "kernels/geom/check.h"
 #include "kernels/geom/mesh_check.h"
 #include "kernels/geom/mesh_intersections.h"
-#include "kernels/geom/openvdb_grid.h"
+#include "kernels/geom/wall_grid.h"
 
 namespace selfsim {
 
 namespace {
 
-using namespace vdb;
+// OpenVDB's interrupter concept over our Progress: its conversions ask wasInterrupted() as they go.
+struct Interrupter {
+  Progress& progress;
+  void start(const char* = nullptr) {}
+  void end() {}
+  bool wasInterrupted(int = -1) { return progress.cancelled(); }
+};
+
+// OpenVDB converts meshes in single precision and indexes voxels with 32-bit integers, and its transforms
+// refuse voxels below about 1e-5. So every conversion works in a local frame: coordinates measured from the
+// shape's lowest corner in voxels (the grid's own voxel is 1), turned back into the caller's coordinates in
+// double precision; a .vdb file's transform gets the real voxel and corner.
+struct Frame {
+  Vec3 origin;
+  double voxel;
+  openvdb::Vec3s local(Vec3 p) const {
+    const Vec3 q = (1 / voxel) * (p - origin);
+    return {static_cast<float>(q.x), static_cast<float>(q.y), static_cast<float>(q.z)};
+  }
+  Vec3 world(const openvdb::Vec3s& q) const { return origin + voxel * Vec3{q.x(), q.y(), q.z()}; }
+};
+
+// OpenVDB's own exceptions as one-line errors.
+template <class Body>
+auto openvdb_call(Body&& body) {
+  try {
+    return body();
+  } catch (const openvdb::Exception& e) {
+    throw Error(std::string("OpenVDB: ") + e.what());
+  }
+}
+
+using Grid = openvdb::FloatGrid;
+
+void initialise_openvdb() {
+  static std::once_flag once;
+  std::call_once(once, [] { openvdb::initialize(); });
+}
+
+// The surface area of a volume's distinct boxes, spheres and meshes, each of which becomes a level set.
+double parts_area(const Volume& v) {
+  double a = 0;
+  for (const Volume* p : volume_leaves(v)) {
+    switch (p->kind) {
+      case Volume::Kind::box: {
+        const Vec3 s = p->hi - p->lo;
+        a += 2 * (s.x * s.y + s.y * s.z + s.z * s.x);
+        break;
+      }
+      case Volume::Kind::sphere:
+        a += 4 * std::numbers::pi * p->radius * p->radius;
+        break;
+      default:
+        a += surface_area(*p->mesh);
+    }
+  }
+  return a;
+}
+
+// The frame for `box` at `voxel`, refusing a voxel that is not positive and finite or below 1e-100, or a box
+// more than 2^20 voxels across (float coordinates then still resolve 1/16 of a voxel).
+Frame frame_for(const BBox3& box, double voxel) {
+  if (!(voxel > 0 && std::isfinite(voxel)))
+    throw Error("the voxel size (given as 'voxel', or 1/128 of the longest side) must be a positive number, got " +
+                number_text(voxel));
+  // Areas and volumes in voxels square and cube it: below 1e-100 they would underflow.
+  if (voxel < 1e-100)
+    throw Error("the voxel size " + number_text(voxel) +
+                " is too small for double precision (below 1e-100): scale the shape up");
+  const Vec3 s = box.size();
+  if (!std::isfinite(std::max({s.x, s.y, s.z})))
+    throw Error("the shape's extent overflows double precision (no side may reach about 1.8e308)");
+  const double across = std::max({s.x, s.y, s.z}) / voxel;
+  if (!(across <= 1 << 20))
+    throw Error("at voxel size " + number_text(voxel) + " the shape is " + number_text(across) +
+                " voxels across, more than 2^20 (give a larger 'voxel')");
+  return {box.min, voxel};
+}
+
+// Budget points of the OpenVDB trees a conversion of shapes with these corners and this area holds: the
+// band's voxels (16 bytes each with the leaves, `across` voxels across each wall), and the two levels of
+// inner nodes (4096 and 128 voxels wide, about 270 and 34 KB each) for every cell of those widths a corner
+// falls in or the area covers, three times over for the grids held at once. Scattered small parts each need
+// their own inner nodes, which area alone would miss.
+double tree_size(const std::vector<Vec3>& corners, double area, const Frame& f, double across = 7) {
+  double size = across * area / (f.voxel * f.voxel);
+  for (const double width : {4096.0, 128.0}) {
+    std::vector<std::array<std::int64_t, 3>> cells;
+    cells.reserve(corners.size());
+    for (Vec3 p : corners) {
+      const Vec3 q = (1 / (width * f.voxel)) * (p - f.origin);
+      cells.push_back({static_cast<std::int64_t>(q.x), static_cast<std::int64_t>(q.y), static_cast<std::int64_t>(q.z)});
+    }
+    std::sort(cells.begin(), cells.end());
+    const double distinct = static_cast<double>(std::unique(cells.begin(), cells.end()) - cells.begin());
+    const double covered = 2 * area / (width * width * f.voxel * f.voxel);
+    size += (distinct + covered) * 3 * (width > 1000 ? 270e3 : 34e3) / 16;
+  }
+  return size;
+}
+
+// The exact boundary of a box, sphere or mesh.
+Mesh exact_boundary(const Volume& v, double voxel) {
+  switch (v.kind) {
+    case Volume::Kind::box:
+      return box_mesh(v.lo, v.hi);
+    case Volume::Kind::sphere:
+      return sphere_mesh(v.centre, v.radius, voxel / 4);
+    default:
+      return *v.mesh;
+  }
+}
+
+// A mesh's level set (closed) or unsigned distance (open), in frame f with voxel 1, `band` voxels either side.
+Grid::Ptr mesh_grid(const Mesh& m, bool closed, const Frame& f, Interrupter& interrupt, float band = 3) {
+  std::vector<openvdb::Vec3s> points;
+  points.reserve(m.points.size());
+  for (Vec3 p : m.points) points.push_back(f.local(p));
+  std::vector<openvdb::Vec3I> triangles;
+  triangles.reserve(m.triangles.size());
+  for (const Triangle& t : m.triangles) triangles.emplace_back(t[0], t[1], t[2]);
+  const auto unit = openvdb::math::Transform::createLinearTransform(1.0);
+  Grid::Ptr g = closed
+                    ? openvdb::tools::meshToLevelSet<Grid>(interrupt, *unit, points, triangles, band)
+                    : openvdb::tools::meshToUnsignedDistanceField<Grid>(interrupt, *unit, points, triangles, {}, band);
+  if (interrupt.progress.cancelled()) throw Cancelled();
+  return g;
+}
+
+// The level set of any volume in frame f, `band` voxels either side of every part: parts converted, then
+// combined in order (nested unions and differences flattened, each distinct part once: combined_parts).
+Grid::Ptr volume_level_set(const Volume& v, const Frame& f, Interrupter& interrupt, float band = 3) {
+  if (v.exact()) return mesh_grid(exact_boundary(v, f.voxel), true, f, interrupt, band);
+  const std::vector<const Volume*> parts = combined_parts(v);
+  Grid::Ptr result = volume_level_set(*parts[0], f, interrupt, band);
+  for (std::size_t i = 1; i < parts.size(); ++i) {
+    Grid::Ptr next = volume_level_set(*parts[i], f, interrupt, band);
+    if (v.kind == Volume::Kind::unite)
+      openvdb::tools::csgUnion(*result, *next);
+    else
+      openvdb::tools::csgDifference(*result, *next);
+  }
+  return result;
+}
+
+// The corners of a volume's parts: where the level sets' trees grow.
+void part_corners(const Volume& v, std::vector<Vec3>& out) {
+  for (const Volume* p : volume_leaves(v)) {
+    if (p->kind == Volume::Kind::mesh) {
+      out.insert(out.end(), p->mesh->points.begin(), p->mesh->points.end());
+    } else {
+      const BBox3 b = p->bbox();
+      for (int k = 0; k < 8; ++k)
+        out.push_back({k & 1 ? b.max.x : b.min.x, k & 2 ? b.max.y : b.min.y, k & 4 ? b.max.z : b.min.z});
+    }
+  }
+}
 
 // The zero surface of a level set in frame f as triangles facing outwards, each quad split along its
 // shorter diagonal.
@@ -163,6 +329,111 @@ std::string distance_vdb(const Mesh& m, bool closed, double voxel, const std::st
     openvdb::io::Stream(bytes).write(openvdb::GridCPtrVec{g});
     return with_content_uuid(bytes.str());
   });
+}
+
+struct WallGrid::Data {
+  Frame frame;
+  Grid::Ptr grid;  // in the frame's voxels, negative inside
+};
+
+namespace {
+
+// Voxels of the band inside the walls: the depth asked for and two more.
+float inside_band(double voxel, double depth) { return static_cast<float>(std::ceil(depth / voxel) + 2); }
+
+// Budget points of the tree a .vdb file's voxels make: OpenVDB's nodes (4096, 128 and 8 voxels wide, about
+// 270 KB, 34 KB and 2 KB each) for every cell of those widths a voxel falls in, so that a crafted file
+// scattering its voxels far apart is refused before each one takes a node of every size.
+double samples_size(const GridSamples& s) {
+  double bytes = 0;
+  for (const auto& [shift, node] : {std::pair{12, 270e3}, std::pair{7, 34e3}, std::pair{3, 2.1e3}}) {
+    std::vector<std::array<std::int32_t, 3>> cells;
+    cells.reserve(s.index.size());
+    for (const auto& i : s.index) cells.push_back({i[0] >> shift, i[1] >> shift, i[2] >> shift});
+    std::sort(cells.begin(), cells.end());
+    bytes += node * static_cast<double>(std::unique(cells.begin(), cells.end()) - cells.begin());
+  }
+  return bytes / 16;
+}
+
+}  // namespace
+
+double WallGrid::size(const Volume& v, double voxel, double depth) {
+  if (v.samples) voxel = v.samples->voxel;
+  const Frame f = frame_for(v.bbox(), voxel);
+  std::vector<Vec3> corners;
+  part_corners(v, corners);
+  // The parts' narrow bands (7 voxels across) or the file's voxels, and the rebuilt band (3 outside, the
+  // depth inside).
+  return tree_size(corners, parts_area(v), f, 7 + 4 + inside_band(voxel, depth)) +
+         (v.samples ? samples_size(*v.samples) : 0);
+}
+
+namespace {
+
+// A .vdb file's level set from its voxels, in its own frame (index (0, 0, 0) at its origin), the inside
+// below its band made negative again.
+Grid::Ptr samples_grid(const GridSamples& s) {
+  const Grid::Ptr g = Grid::create(static_cast<float>(s.background / s.voxel));
+  auto access = g->getAccessor();
+  for (std::size_t i = 0; i < s.index.size(); ++i)
+    access.setValue(openvdb::Coord(s.index[i][0], s.index[i][1], s.index[i][2]),
+                    static_cast<float>(s.value[i] / s.voxel));
+  openvdb::tools::signedFloodFill(g->tree());
+  g->setGridClass(openvdb::GRID_LEVEL_SET);
+  return g;
+}
+
+}  // namespace
+
+WallGrid::WallGrid(const Volume& v, double voxel, double depth, const PointBudget& budget, Progress& progress) {
+  if (v.samples) voxel = v.samples->voxel;  // the file's own lattice
+  const Frame f = v.samples ? Frame{v.samples->origin, voxel} : frame_for(v.bbox(), voxel);
+  check_budget(size(v, voxel, depth), budget,
+               "the region's distance grid at voxel size " + number_text(voxel) + " (set a larger 'voxel')");
+  initialise_openvdb();
+  Interrupter interrupt{progress};
+  auto data = std::make_shared<Data>();
+  data->frame = f;
+  // The volume's level set as its boundary is made (a union or difference combined on narrow bands), then
+  // its zero surface measured again (levelSetRebuild): the distance to the region's own walls, deep inside
+  // it. The combined bands alone read a union's parts' distances, so a wall where two parts touch.
+  data->grid = openvdb_call([&] {
+    const Grid::Ptr combined = v.samples ? samples_grid(*v.samples) : volume_level_set(v, f, interrupt);
+    if (progress.cancelled()) throw Cancelled();
+    return openvdb::tools::levelSetRebuild(*combined, 0.0f, 3.0f, inside_band(voxel, depth), nullptr, &interrupt);
+  });
+  if (progress.cancelled()) throw Cancelled();
+  data_ = std::move(data);
+}
+
+void WallGrid::clearances(std::span<const Vec3> points, std::span<double> out) const {
+  // An accessor per call: OpenVDB's caches are not to be shared between threads.
+  const auto access = data_->grid->getConstUnsafeAccessor();
+  const Frame& f = data_->frame;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Vec3 q = (1 / f.voxel) * (centre_ + (1 / scale_) * points[i] - f.origin);
+    const double value = openvdb::tools::BoxSampler::sample(access, openvdb::Vec3R(q.x, q.y, q.z));
+    out[i] = -value * f.voxel * scale_;
+  }
+}
+
+double WallGrid::clearance(Vec3 p) const {
+  double c = 0;
+  clearances({&p, 1}, {&c, 1});
+  return c;
+}
+
+double WallGrid::voxel() const { return data_->frame.voxel * scale_; }
+
+double WallGrid::error() const { return std::sqrt(3.0) / 2 * voxel(); }
+
+WallGrid WallGrid::in_frame(Vec3 centre, double scale) const {
+  // q = scale·(p − centre) and this view's p = scale_·(w − centre_): q = scale·scale_·(w − centre_ − centre/scale_).
+  WallGrid g = *this;
+  g.centre_ = centre_ + (1 / scale_) * centre;
+  g.scale_ = scale_ * scale;
+  return g;
 }
 
 }  // namespace selfsim

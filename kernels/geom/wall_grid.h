@@ -1,4 +1,4 @@
-// A region's walls as a signed distance grid (OpenVDB, in wall_grid.cpp): how far inside the walls a point
+// A region's walls as a signed distance grid (OpenVDB, in level_set.cpp): how far inside the walls a point
 // lies, read by trilinear interpolation from the grid instead of measured against a boundary mesh made from
 // it. The exclusion surface's `walls = "grid"` (issue 23).
 //
