@@ -8,6 +8,7 @@
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
 #include "interpreter/point_reader.h"
+#include "kernels/geom/similarity3.h"
 
 namespace selfsim::interp {
 
@@ -33,9 +34,10 @@ int curve_length(lua_State* L) {
 }
 // c:level(): the construction level a kernel recorded (its uniform `level` field), or nil; c:level(k): the
 // curve at level k (growth.h).
+template <class T>
 int curve_level(lua_State* L) {
   if (lua_gettop(L) >= 2) return value_level(L);
-  const Held<Polyline> c = geometry_self<Polyline>(L, "level");
+  const Held<T> c = geometry_self<T>(L, "level");
   const Field* level = c->point_fields.find("level");
   if (level != nullptr && level->uniform)
     lua_pushinteger(L, static_cast<lua_Integer>(level->at(0)));
@@ -65,14 +67,53 @@ int curve_transform(lua_State* L) {
   });
 }
 
+// c:transform{ mirror, scale, rotate, axis, translate } on a 3D curve: mirrored across the xz-plane (y
+// negated), scaled about the origin, rotated by degrees about `axis` (default {0, 0, 1}: as a 2D curve
+// turns), then translated.
+int curve3_transform(lua_State* L) {
+  const Held<Polyline3> held = geometry_self<Polyline3>(L, "transform");
+  const Polyline3& c = *held;
+  return call_kernel(L, "transform", [&] {
+    Options o(L, 2);
+    const bool mirror = o.boolean("mirror", false);
+    const double scale = o.number("scale", 1);
+    const double degrees = o.number("rotate", 0);
+    const Vec3 axis = o.point3("axis").value_or(Vec3{0, 0, 1});
+    const Vec3 shift = o.point3("translate").value_or(Vec3{});
+    o.finish();
+    if (!(scale != 0)) throw Error("option 'scale' must be non-zero");
+    if (!(norm(axis) > 0)) throw Error("option 'axis' must be a non-zero vector");
+    Similarity3 t =
+        Similarity3::rotation(axis / norm(axis), std::fmod(degrees, 360.0)).after(Similarity3::scaling(scale));
+    if (mirror) t = t.after(Similarity3{{Vec3{1, 0, 0}, Vec3{0, -1, 0}, Vec3{0, 0, 1}}, {}});
+    t.t = shift;
+    check_run_budget(L, static_cast<double>(c.points.size()), "transform");
+    Polyline3 result = transformed(c, t);
+    if (!result.finite()) throw Error("the result has non-finite coordinates (an overflow: scale the input down)");
+    push_geometry(L, std::move(result));
+    return 1;
+  });
+}
+
+// polyline{ {x, y}, ... } or polygon{...}: a Curve; with {x, y, z} points, a Curve3.
+template <class V>
+void push_polyline(lua_State* L, const char* fn, bool closed) {
+  std::vector<V> pts = read_point_list<V>(L, 1, "");
+  if (pts.size() < (closed ? 3u : 2u))
+    throw Error(std::string("needs at least ") + (closed ? "3" : "2") + " points, got " + std::to_string(pts.size()));
+  if (closed && !(pts.front() == pts.back())) pts.push_back(pts.front());
+  check_run_budget(L, static_cast<double>(pts.size()), fn);
+  push_geometry(L, PolylineT<V>::single(std::move(pts)));
+}
+
 int make_polyline(lua_State* L, const char* fn, bool closed) {
   return call_kernel(L, fn, [&] {
-    std::vector<Vec2> pts = read_point_list<Vec2>(L, 1, "");
-    if (pts.size() < (closed ? 3u : 2u))
-      throw Error(std::string("needs at least ") + (closed ? "3" : "2") + " points, got " + std::to_string(pts.size()));
-    if (closed && !(pts.front() == pts.back())) pts.push_back(pts.front());
-    check_run_budget(L, static_cast<double>(pts.size()), fn);
-    push_curve(L, Polyline::single(std::move(pts)));
+    // The first point's size decides: {x, y} or {x, y, z}.
+    const bool three = lua_type(L, 1) == LUA_TTABLE && lua_rawgeti(L, 1, 1) == LUA_TTABLE && lua_rawlen(L, -1) == 3;
+    if (three)
+      push_polyline<Vec3>(L, fn, closed);
+    else
+      push_polyline<Vec2>(L, fn, closed);
     return 1;
   });
 }
@@ -96,13 +137,15 @@ void open_curve(lua_State* L) {
   register_geometry<Polyline>(L, {{"segments", curve_segments<Polyline>},
                                   {"paths", curve_paths<Polyline>},
                                   {"length", curve_length<Polyline>},
-                                  {"level", curve_level},
+                                  {"level", curve_level<Polyline>},
                                   {"transform", curve_transform},
                                   {"reverse", curve_reverse<Vec2>},
                                   {"rounded", curve_rounded}});
   register_geometry<Polyline3>(L, {{"segments", curve_segments<Polyline3>},
                                    {"paths", curve_paths<Polyline3>},
                                    {"length", curve_length<Polyline3>},
+                                   {"level", curve_level<Polyline3>},
+                                   {"transform", curve3_transform},
                                    {"reverse", curve_reverse<Vec3>}});
   lua_register(L, "polyline", [](lua_State* S) { return make_polyline(S, "polyline", false); });
   lua_register(L, "polygon", [](lua_State* S) { return make_polyline(S, "polygon", true); });

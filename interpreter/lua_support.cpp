@@ -120,6 +120,30 @@ void push_error(lua_State* L, const char* fn, const std::string& message) {
   lua_pushfstring(L, "%s%s: %s", where.c_str(), fn, message.c_str());
 }
 
+namespace {
+const char* const detail_key = "selfsim.error_detail";
+const char* const detail_for_key = "selfsim.error_detail_for";
+}  // namespace
+
+void note_error_detail(lua_State* L, const std::string& detail) {
+  lua_pushvalue(L, -1);
+  lua_setfield(L, LUA_REGISTRYINDEX, detail_for_key);
+  lua_pushlstring(L, detail.data(), detail.size());
+  lua_setfield(L, LUA_REGISTRYINDEX, detail_key);
+}
+
+std::string error_detail(lua_State* L, int index) {
+  index = lua_absindex(L, index);
+  lua_getfield(L, LUA_REGISTRYINDEX, detail_for_key);
+  const bool same = lua_type(L, index) == LUA_TSTRING && lua_rawequal(L, -1, index);
+  lua_pop(L, 1);
+  if (!same) return "";
+  lua_getfield(L, LUA_REGISTRYINDEX, detail_key);
+  std::string detail = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : "";
+  lua_pop(L, 1);
+  return detail;
+}
+
 std::string shown_text(std::string_view text, std::size_t max_bytes) {
   std::string out;
   for (std::size_t i = 0; i < text.size() && out.size() < max_bytes; ++i) {

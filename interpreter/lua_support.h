@@ -43,6 +43,11 @@ std::string describe(lua_State* L, int index);
 // no C++ object with a destructor is alive in the frame: lua_error longjmps past destructors.
 void push_error(lua_State* L, const char* fn, const std::string& message);
 
+// Records `detail` (lines shown under the message) for the error value on top of the stack.
+void note_error_detail(lua_State* L, const std::string& detail);
+// The detail recorded for the error value at index, or "" (another error, or none recorded).
+std::string error_detail(lua_State* L, int index);
+
 // True once the recipe has returned or failed.
 bool run_has_ended(lua_State* L);
 
@@ -58,7 +63,7 @@ void end_progress(lua_State* L) noexcept;
 template <class Body>
 int call_kernel(lua_State* L, const char* fn, Body&& body) {
   {
-    std::string message;
+    std::string message, detail;
     try {
       // Finalizers may run after the recipe has returned or failed (while the state closes, Lua no longer
       // finalizes new values): nothing is made or written then.
@@ -69,6 +74,9 @@ int call_kernel(lua_State* L, const char* fn, Body&& body) {
       return results;
     } catch (const Cancelled&) {
       message = cancel_message(L);
+    } catch (const DetailedError& e) {
+      message = e.what();
+      detail = e.detail;
     } catch (const Error& e) {
       message = e.what();
     } catch (const std::bad_alloc&) {
@@ -78,6 +86,7 @@ int call_kernel(lua_State* L, const char* fn, Body&& body) {
     }
     end_progress(L);
     push_error(L, fn, message);
+    if (!detail.empty()) note_error_detail(L, detail);
   }  // message freed before the longjmp
   return lua_error(L);
 }
@@ -168,7 +177,7 @@ Held<T> test_value(lua_State* L, int index, const char* type) {
 template <class T>
 Held<T> check_self(lua_State* L, const char* type, const char* method) {
   {
-    std::string message;
+    std::string message, detail;
     try {
       if (Held<T> v = test_value<T>(L, 1, type)) return v;
       message =

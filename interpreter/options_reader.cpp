@@ -253,7 +253,7 @@ void Options::finish() {
   // Without a likely meaning, the valid options themselves (a short list: every binding reads few).
   const std::string hint = !near.empty()        ? " (did you mean '" + near + "'?)"
                            : known.empty()      ? " (it takes no options)"
-                           : known.size() <= 12 ? " (valid options: " + quoted_list(known) + ")"
+                           : known.size() <= 16 ? " (valid options: " + quoted_list(known) + ")"
                                                 : "";
   throw Error("unknown option '" + shown_text(unknown.front()) + "'" + hint +
               (unknown.size() > 1 ? " (and " + std::to_string(unknown.size() - 1) + " more unknown)" : ""));

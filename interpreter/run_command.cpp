@@ -1,6 +1,7 @@
 // `selfsim run RECIPE.lua`: runs a recipe in the sandbox and reports its outputs or its one-line error.
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -80,6 +81,14 @@ std::string failure_message(lua_State* L, RunContext& run, int status) {
   std::string message = shown_text(std::string_view(text, n), 2000);
   // Lua adds no location to some errors ("error in error handling", error("x", 0)): add the recipe's.
   if (!starts_with_location(message)) message = where + message;
+  // Lines a kernel gave to show under its message (a rule with a caret under the fault), each kept to one
+  // line of its own.
+  const std::string detail = error_detail(L, -1);
+  for (std::size_t begin = 0; begin < detail.size();) {
+    const std::size_t end = std::min(detail.find('\n', begin), detail.size());
+    message += "\n" + shown_text(std::string_view(detail).substr(begin, end - begin), 400);
+    begin = end + 1;
+  }
   return message;
 }
 

@@ -4,12 +4,19 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace selfsim {
 
 struct Error : std::runtime_error {
   using std::runtime_error::runtime_error;
+};
+
+// An error with lines to show under its one-line message, such as a rule with a caret under the fault.
+struct DetailedError : Error {
+  std::string detail;
+  DetailedError(const std::string& message, std::string detail) : Error(message), detail(std::move(detail)) {}
 };
 
 // Thrown by kernels when Progress::cancelled() became true (Ctrl-C, --timeout).

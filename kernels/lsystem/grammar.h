@@ -5,9 +5,14 @@
 // symbol only takes part in rewriting.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "kernels/geom/vec3.h"
+#include "kernels/lsystem/production.h"
 
 namespace selfsim::lsystem {
 
@@ -21,6 +26,19 @@ struct Grammar {
   std::string draw = "FG";                // symbols that step forward drawing a segment
   std::string move = "f";                 // symbols that step forward without drawing
 
+  // Module grammars (production.h): rules with parameters, conditions, contexts or weighted choices.
+  // For them `start` holds the axiom parsed as modules and `productions` the rules, in order; `rules`
+  // stays empty, and module_rewrite.h derives the levels instead of rewrite.h.
+  std::vector<Call> start;
+  std::vector<Production> productions;
+  std::vector<std::pair<std::string, double>> constants;  // names every expression may read (option 'define')
+  std::string ignore = "+-&^\\/|$";                       // symbols a context skips over (the turtle's turns)
+  std::uint64_t seed = 0;                                 // stochastic choices follow from it
+  int dimension = 0;  // the turtle's: 2, 3, or 0 to choose by the symbols (module_turtle.h)
+  Vec3 tropism{};     // 3D: the heading bends toward it after each step (turtle_frame3.h)
+
+  bool modules() const { return !start.empty(); }
+  bool stochastic() const;
   // Throws selfsim::Error naming the first bad field.
   void validate() const;
   // Degrees turned by symbol c, or 0 if c does not turn.
@@ -30,6 +48,8 @@ struct Grammar {
   double start_angle(int level) const { return start_angles[static_cast<std::size_t>(level) % start_angles.size()]; }
 };
 
+// Most constants a grammar may define (option 'define').
+constexpr std::size_t max_constants = 32;
 // Highest level any kernel accepts: depth-first expansion keeps one frame per level.
 constexpr int max_level = 256;
 // Most symbols the axiom and all rules may hold together (a megabyte of grammar).

@@ -26,13 +26,17 @@ namespace {
 
 constexpr double symbols_per_point = 64;
 
+}  // namespace
+
 // Closed when the turtle ends within a tiny fraction of the distance it walked. Open curves are normalised,
 // so shrink never matters to them (nor can shrink^level underflow them to a point).
-Similarity2 placement(const Grammar& g, const TurtleOptions& opt, Vec2 end, double steps) {
+Similarity2 turtle_placement(const Grammar& g, const TurtleOptions& opt, Vec2 end, double steps) {
   const bool closed = norm(end) <= 1e-9 * steps;
   return opt.normalize && !closed ? Similarity2::to_unit({0, 0}, end)
                                   : Similarity2{{std::pow(g.shrink, opt.level), 0}, {0, 0}};
 }
+
+namespace {
 
 Error non_finite(int level) {
   return Error("level " + std::to_string(level) + " has non-finite coordinates (shrink^level overflows)");
@@ -54,7 +58,7 @@ void draw_sequential(const Grammar& g, const TurtleOptions& opt, const Compiled&
   rewrite(c, g.axiom, opt.level, turtle);
   out.close_path();
   progress.fraction(1);
-  const Similarity2 place = placement(g, opt, turtle.pos, counts.segments + counts.breaks);
+  const Similarity2 place = turtle_placement(g, opt, turtle.pos, counts.segments + counts.breaks);
   for (Vec2& p : out.points) p = place(p);
   if (turtle.tree != nullptr) {
     const double scale = norm(place.a);  // unit steps to the curve's own length
@@ -71,7 +75,7 @@ void draw_parallel(const Grammar& g, const TurtleOptions& opt, const Compiled& c
                    const TurtleSplit& split, Polyline& out, Progress& progress) {
   const int remaining = opt.level - split.depth;
   const LatticeBlocks blocks(g, c, table, remaining, progress);
-  const Similarity2 place = placement(g, opt, split.end, static_cast<double>(split.points));
+  const Similarity2 place = turtle_placement(g, opt, split.end, static_cast<double>(split.points));
   out.points.resize(split.points);
   Vec2* points = out.points.data();
   points[0] = place(Vec2{});

@@ -8,6 +8,7 @@
 #include "kernels/geom/budget.h"
 #include "kernels/geom/polyline.h"
 #include "kernels/geom/progress.h"
+#include "kernels/geom/similarity.h"
 #include "kernels/lsystem/grammar.h"
 
 namespace selfsim::lsystem {
@@ -19,6 +20,10 @@ struct TurtleOptions {
 
   void validate() const;
 };
+
+// Where a turtle's drawing in unit steps goes: open curves (turtle ending at `end`, away from its start after
+// `steps` unit steps) onto (0,0)-(1,0) when opt.normalize, others scaled by shrink^level (see below).
+Similarity2 turtle_placement(const Grammar& g, const TurtleOptions& opt, Vec2 end, double steps);
 
 // The curve of grammar g at opt.level, with a uniform point field `level`.
 // Normalisation: when the turtle ends away from where it started, the direct similarity taking its start

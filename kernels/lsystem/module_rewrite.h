@@ -1,0 +1,48 @@
+// Rewriting of module grammars (parametric, conditional, stochastic, context-sensitive: production.h),
+// apart from drawing. Context-free grammars are expanded depth-first straight into the sink, one evaluated
+// successor per level on a stack, like the byte kernel (rewrite.h); context-sensitive ones need each level's
+// neighbours, so levels below the last are held in memory and the last is streamed.
+//
+// Stochastic choice is a pure function of the seed and the module's lineage: a module's lineage is a hash
+// of its parent's and of its place among the same symbols in the parent's successor (the axiom's modules
+// have the seed as parent). So the result does not depend on evaluation order or threads, and changing
+// one rule changes only the choices below the modules that rule writes.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+
+#include "kernels/geom/progress.h"
+#include "kernels/lsystem/grammar.h"
+#include "kernels/lsystem/module_string.h"
+
+namespace selfsim::lsystem {
+
+// Receives a level's modules in order.
+class ModuleSink {
+ public:
+  virtual ~ModuleSink() = default;
+  virtual void module(std::uint8_t symbol, std::span<const double> args) = 0;
+};
+
+struct ModuleLimits {
+  double work = 1e12;   // modules read and written over all levels before refusing (BudgetError)
+  double held = 2.7e8;  // modules a context-sensitive grammar may hold in memory at once
+};
+
+// Derives level `level` of g (g.modules() must be true) and feeds it to sink. Throws Error naming the rule
+// and level when a parameter evaluates to a division by zero or a non-finite number; BudgetError past
+// `limits`; Cancelled when progress says so.
+void rewrite_modules(const Grammar& g, int level, ModuleSink& sink, const ModuleLimits& limits, Progress& progress);
+
+// The level as ABOP text, modules with their parameters ("F(1)[+(30)A(0.5)]"); refuses one longer than
+// max_modules.
+std::string module_string_text(const Grammar& g, int level, double max_modules, Progress& progress);
+
+// The option that the choice u in [0, 1) picks, in proportion to the weights (not all zero).
+std::size_t choose_option(std::span<const Successor> options, double u);
+// A child module's lineage from its parent's and its salt (symbol and ordinal in the successor).
+std::uint64_t child_lineage(std::uint64_t parent, std::uint64_t salt);
+
+}  // namespace selfsim::lsystem

@@ -1,0 +1,361 @@
+#include "kernels/lsystem/module_turtle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string_view>
+#include <vector>
+
+#include "kernels/geom/budget.h"
+#include "kernels/geom/error.h"
+#include "kernels/geom/polygon_triangles.h"
+#include "kernels/geom/similarity3.h"
+#include "kernels/lsystem/compiled_grammar.h"
+#include "kernels/lsystem/module_rewrite.h"
+#include "kernels/lsystem/turtle_frame3.h"
+
+namespace selfsim::lsystem {
+
+namespace {
+
+// Modules read per point drawn before a level is refused as all rewriting and no drawing (as turtle2d).
+constexpr double modules_per_point = 64;
+// What `$` keeps the left vector perpendicular to: up on the screen, where plants grow (start_angle 90).
+constexpr Vec3 vertical{0, 1, 0};
+constexpr std::string_view turns_3d = "&^\\/$";
+
+// The 2D turtle's heading: an angle, so any number of turns leaves no drift. 3D turns do nothing.
+struct Heading2 {
+  double radians;
+  explicit Heading2(double degrees) : radians(degrees * degree) {}
+  Vec2 forward() const { return {std::cos(radians), std::sin(radians)}; }
+  void yaw(double degrees) { radians = std::remainder(radians + degrees * degree, 2 * std::numbers::pi); }
+  void turn_around() { yaw(180); }
+  void pitch(double) {}
+  void roll(double) {}
+  void level() {}
+  void bend(Vec3) {}
+};
+
+struct Heading3 {
+  TurtleFrame3 frame;
+  unsigned turns = 0;
+  explicit Heading3(double degrees) : frame(TurtleFrame3::heading(degrees)) {}
+  Vec3 forward() const { return frame.h; }
+  void yaw(double degrees) { turned(), frame.yaw(degrees); }
+  void turn_around() { frame.turn_around(); }
+  void pitch(double degrees) { turned(), frame.pitch(degrees); }
+  void roll(double degrees) { turned(), frame.roll(degrees); }
+  void level() { turned(), frame.level(vertical); }
+  void bend(Vec3 t) { turned(), frame.bend(t); }
+  void turned() {
+    if (++turns % 1024 == 0) frame.orthonormalise();
+  }
+};
+
+Vec3 lift(Vec2 p) { return {p.x, p.y, 0}; }
+Vec3 lift(Vec3 p) { return p; }
+
+// Whether the axiom or a successor writes a symbol that `wanted` accepts.
+template <class F>
+bool writes(const Grammar& g, F wanted) {
+  auto in = [&](const std::vector<Call>& calls) {
+    return std::any_of(calls.begin(), calls.end(), [&](const Call& c) { return wanted(c.symbol); });
+  };
+  if (in(g.start)) return true;
+  for (const Production& p : g.productions)
+    for (const Successor& o : p.options)
+      if (in(o.modules)) return true;
+  return false;
+}
+
+template <class V, class Heading>
+class Turtle : public ModuleSink {
+ public:
+  Turtle(const Grammar& g, const TurtleOptions& opt, PolylineT<V>& out, Mesh* polygons)
+      : g_(g),
+        c_(g),
+        opt_(opt),
+        out_(out),
+        polygons_(polygons),
+        tree_(writes(g, [](std::uint8_t s) { return s == '['; })),
+        style_(writes(g, [](std::uint8_t s) { return s == '!' || s == '\''; })),
+        heading_(g.start_angle(opt.level)) {
+    // '+', '-' and '|' turn by their parameter even where the grammar's angle makes them turn by nothing.
+    for (std::uint8_t s : {'+', '-', '|'})
+      if (c_.action[s] == Action::None) c_.action[s] = Action::Turn;
+    if constexpr (std::is_same_v<V, Vec3>)
+      for (char s : turns_3d)
+        if (c_.action[static_cast<std::uint8_t>(s)] == Action::Turn)
+          c_.action[static_cast<std::uint8_t>(s)] = Action::None;
+  }
+
+  void module(std::uint8_t s, std::span<const double> a) override {
+    switch (c_.action[s]) {
+      case Action::Draw:
+      case Action::Move:
+        step(s, a);
+        return;
+      case Action::Turn:
+        if (s == '|')
+          heading_.turn_around();
+        else
+          heading_.yaw(a.empty() ? c_.turn[s] : (s == '-' || (s != '+' && c_.turn[s] < 0)) ? -a[0] : a[0]);
+        return;
+      case Action::Push:
+        saved_.push_back({pos_, heading_, walked_, width_, color_});
+        return;
+      case Action::Pop:
+        if (saved_.empty()) throw Error("option 'axiom'/'rules': ']' without a matching '['");
+        out_.close_path();
+        path_open_ = false;
+        pos_ = saved_.back().pos;
+        heading_ = saved_.back().heading;
+        walked_ = saved_.back().walked;
+        width_ = saved_.back().width;
+        color_ = saved_.back().color;
+        saved_.pop_back();
+        return;
+      case Action::None:
+        break;
+    }
+    const double degrees = a.empty() ? angle_of(s) : a[0];
+    switch (s) {
+      case '&':
+        heading_.pitch(degrees);
+        break;
+      case '^':
+        heading_.pitch(-degrees);
+        break;
+      case '\\':
+        heading_.roll(degrees);
+        break;
+      case '/':
+        heading_.roll(-degrees);
+        break;
+      case '$':
+        heading_.level();
+        break;
+      case '!':
+        width_ = a.empty() ? std::max(0.0, width_ - 1) : a[0];
+        break;
+      case '\'':
+        color_ = a.empty() ? color_ + 1 : static_cast<std::int32_t>(std::clamp(a[0], -1e9, 1e9));
+        break;
+      case '{':
+        polygon_.push_back({lift(pos_)});
+        break;
+      case '.':
+        corner();
+        break;
+      case '}':
+        close_polygon();
+        break;
+      default:
+        break;
+    }
+  }
+
+  // Places everything drawn (unit steps) and attaches the fields.
+  void finish() {
+    out_.close_path();
+    const double steps = std::max(walked_, 1.0);
+    double scale = 1;
+    if constexpr (std::is_same_v<V, Vec2>) {
+      const Similarity2 place = turtle_placement(g_, opt_, pos_, steps);
+      for (Vec2& p : out_.points) p = place(p);
+      scale = norm(place.a);
+    } else {
+      const bool closed = norm(pos_) <= 1e-9 * steps;
+      const Similarity3 place = opt_.normalize && !closed ? Similarity3::to_unit({}, pos_)
+                                                          : Similarity3::scaling(std::pow(g_.shrink, opt_.level));
+      for (Vec3& p : out_.points) p = place(p);
+      if (polygons_ != nullptr)
+        for (Vec3& p : polygons_->points) p = place(p);
+      scale = place.scale();
+    }
+    if (tree_) {
+      for (double& d : root_distance_) d *= scale;
+      out_.point_fields.set(int_field("depth", std::move(depth_)));
+      out_.point_fields.set(real_field("root_distance", std::move(root_distance_)));
+    }
+    if (style_) {
+      for (double& w : widths_) w *= scale;  // widths are in turtle steps, like lengths
+      out_.point_fields.set(real_field("width", std::move(widths_)));
+      out_.point_fields.set(int_field("color", std::move(colors_)));
+    }
+    if (polygons_ != nullptr) {
+      polygons_->face_fields.set(int_field("polygon", std::move(polygon_ids_)));
+      polygons_->face_fields.set(int_field("color", std::move(polygon_colors_)));
+    }
+  }
+
+ private:
+  struct State {
+    V pos;
+    Heading heading;
+    double walked, width;
+    std::int32_t color;
+  };
+
+  double angle_of(std::uint8_t s) const {
+    const auto it = g_.angles.find(static_cast<char>(s));
+    return it != g_.angles.end() ? std::abs(it->second) : g_.angle;
+  }
+
+  void step(std::uint8_t s, std::span<const double> a) {
+    const double length = a.empty() ? 1 : a[0];
+    const bool draws = c_.action[s] == Action::Draw && polygon_.empty();
+    if (draws && !path_open_) add_point();
+    if (!draws && polygon_.empty()) {
+      out_.close_path();
+      path_open_ = false;
+    }
+    if constexpr (std::is_same_v<V, Vec2>)
+      pos_ += length * heading_.forward();
+    else
+      pos_ += length * heading_.forward();
+    walked_ += std::abs(length);
+    if (draws) {
+      path_open_ = true;
+      add_point();
+    }
+    if (!polygon_.empty()) corner();
+    if (g_.tropism != Vec3{}) heading_.bend(g_.tropism);
+  }
+
+  void corner() {
+    if (polygon_.empty()) return;
+    std::vector<Vec3>& p = polygon_.back();
+    if (p.empty() || p.back() != lift(pos_)) {
+      count_point();
+      p.push_back(lift(pos_));
+    }
+  }
+
+  void close_polygon() {
+    if (polygon_.empty()) return;
+    std::vector<Vec3> corners = std::move(polygon_.back());
+    polygon_.pop_back();
+    if (corners.size() > 1 && corners.back() == corners.front()) corners.pop_back();
+    if (polygons_ == nullptr || corners.size() < 3) return;
+    const std::size_t first = triangles_.size();
+    try {
+      polygon_triangles(corners, triangles_);
+    } catch (const Error& e) {
+      throw Error("level " + std::to_string(opt_.level) + ": polygon " +
+                  std::to_string(polygon_ids_.empty() ? 1 : polygon_ids_.back() + 2) + ": " + e.what());
+    }
+    const auto base = static_cast<std::uint32_t>(polygons_->points.size());
+    polygons_->points.insert(polygons_->points.end(), corners.begin(), corners.end());
+    const std::int32_t id = polygon_count_++;
+    for (std::size_t t = first; t < triangles_.size(); ++t) {
+      const auto& k = triangles_[t];
+      polygons_->triangles.push_back({base + static_cast<std::uint32_t>(k[0]), base + static_cast<std::uint32_t>(k[1]),
+                                      base + static_cast<std::uint32_t>(k[2])});
+      polygon_ids_.push_back(id);
+      polygon_colors_.push_back(color_);
+    }
+    triangles_.clear();
+  }
+
+  void count_point() {
+    if (++points_ > opt_.budget.left()) check_budget(points_, opt_.budget, "level " + std::to_string(opt_.level));
+  }
+
+  void add_point() {
+    count_point();
+    if (out_.points.size() == out_.points.capacity())
+      out_.points.reserve(std::max<std::size_t>(1024, 2 * out_.points.size()));
+    out_.points.push_back(pos_);
+    if (tree_) {
+      depth_.push_back(static_cast<std::int32_t>(saved_.size()));
+      root_distance_.push_back(walked_);
+    }
+    if (style_) {
+      widths_.push_back(width_);
+      colors_.push_back(color_);
+    }
+  }
+
+  const Grammar& g_;
+  Compiled c_;
+  const TurtleOptions& opt_;
+  PolylineT<V>& out_;
+  Mesh* polygons_;
+  bool tree_, style_;
+  Heading heading_;
+  bool path_open_ = false;
+  V pos_{};
+  double walked_ = 0, width_ = 1, points_ = 0;
+  std::int32_t color_ = 0, polygon_count_ = 0;
+  std::vector<State> saved_;
+  std::vector<std::vector<Vec3>> polygon_;  // polygons open, innermost last
+  std::vector<std::array<std::size_t, 3>> triangles_;
+  std::vector<std::int32_t> depth_, colors_, polygon_ids_, polygon_colors_;
+  std::vector<double> root_distance_, widths_;
+};
+
+ModuleLimits limits_for(const TurtleOptions& opt) {
+  ModuleLimits limits;
+  limits.work = modules_per_point * opt.budget.left();
+  limits.held = opt.budget.left();
+  return limits;
+}
+
+template <class V, class Heading>
+PolylineT<V> draw(const Grammar& g, const TurtleOptions& opt, Mesh* polygons, Progress& progress) {
+  g.validate();
+  opt.validate();
+  PolylineT<V> out;
+  out.point_fields.set(uniform_int("level", opt.level));
+  progress.start("L-system");
+  Turtle<V, Heading> turtle(g, opt, out, polygons);
+  rewrite_modules(g, opt.level, turtle, limits_for(opt), progress);
+  turtle.finish();
+  progress.fraction(1);
+  if (!out.finite() || (polygons != nullptr && !polygons->finite()))
+    throw Error("level " + std::to_string(opt.level) + " has non-finite coordinates (its steps overflow)");
+  return out;
+}
+
+}  // namespace
+
+bool draws_in_3d(const Grammar& g) {
+  if (g.dimension != 0) return g.dimension == 3;
+  if (g.tropism != Vec3{}) return true;
+  return writes(g, [&](std::uint8_t s) {
+    const char c = static_cast<char>(s);
+    return turns_3d.find(c) != std::string_view::npos && !g.draws(c) && !g.moves(c) && !g.angles.contains(c);
+  });
+}
+
+Polyline module_turtle2d(const Grammar& g, const TurtleOptions& opt, Progress& progress) {
+  return draw<Vec2, Heading2>(g, opt, nullptr, progress);
+}
+
+Polyline3 module_turtle3d(const Grammar& g, const TurtleOptions& opt, Progress& progress) {
+  return draw<Vec3, Heading3>(g, opt, nullptr, progress);
+}
+
+Mesh module_polygons(const Grammar& g, const TurtleOptions& opt, Progress& progress) {
+  Mesh m;
+  draw<Vec3, Heading3>(g, opt, &m, progress);
+  return m;
+}
+
+double module_segments(const Grammar& g, int level, double max_points, Progress& progress) {
+  struct Counter : ModuleSink {
+    Compiled c;
+    double segments = 0;
+    explicit Counter(const Grammar& g) : c(g) {}
+    void module(std::uint8_t s, std::span<const double>) override { segments += c.action[s] == Action::Draw; }
+  } counter(g);
+  ModuleLimits limits;
+  limits.work = modules_per_point * max_points;
+  limits.held = max_points;
+  rewrite_modules(g, level, counter, limits, progress);
+  return counter.segments;
+}
+
+}  // namespace selfsim::lsystem

@@ -1,0 +1,1 @@
+local g = lsystem { axiom = "A(x)", rules = { "A(x) -> F(x)" } }

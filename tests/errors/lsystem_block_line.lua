@@ -1,0 +1,5 @@
+local g = lsystem { axiom = "A", rules = [[
+A -> B[A]
+B -> A B C
+C < A > -> X
+]] }

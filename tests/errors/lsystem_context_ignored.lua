@@ -1,0 +1,3 @@
+-- exit: 0
+local g = lsystem { axiom = "A+B", rules = { "+ < B -> X" } }
+g:curve(2)

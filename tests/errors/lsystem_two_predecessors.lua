@@ -1,0 +1,1 @@
+local g = lsystem { axiom = "AB", rules = { "A B -> C" } }
