@@ -100,6 +100,14 @@ Grammar read_grammar(lua_State* L, int index) {
   o.push("rules");
   read_rules(L, lua_gettop(L), g);
   lua_pop(L, 1);
+  // Decomposition and interpretation rules make a module grammar of any grammar.
+  for (auto [name, rules] :
+       {std::pair{"decomposition", &g.decomposition}, std::pair{"interpretation", &g.interpretation}}) {
+    o.push(name);
+    *rules = read_rule_set(L, lua_gettop(L), g, name);
+    lua_pop(L, 1);
+  }
+  g.max_depth = static_cast<int>(o.integer("max_depth", g.max_depth, 0, lsystem::max_rule_depth));
   g.angle = o.number("angle", g.angle);
   if (o.push("angles") != LUA_TNIL)
     each_symbol(L, "angles", [&](char s) {
@@ -135,7 +143,8 @@ Grammar read_grammar(lua_State* L, int index) {
   o.finish();
   // The byte turtle draws plain grammars in 2D; the module turtle also turns in 3D, keeps widths and
   // colours, and fills polygons.
-  if (!g.modules() && (g.dimension == 3 || g.tropism != Vec3{} || !turtle_symbols(g, "&^\\/$!'{}").empty()))
+  if (!g.modules() && (g.dimension == 3 || g.tropism != Vec3{} || !turtle_symbols(g, "&^\\/$!'{}").empty() ||
+                       !g.decomposition.empty() || !g.interpretation.empty()))
     to_modules(g);
   g.validate();
   return g;

@@ -46,6 +46,7 @@ std::string left_side(const std::string& text) {
 }
 
 struct Read {
+  std::string option = "option 'rules'";  // names the option in messages
   std::vector<std::string> constants;
   std::vector<Production> rules;
   std::vector<bool> weighted;  // per rule: written with ": weight" (list and block forms)
@@ -74,14 +75,14 @@ void read_block(Read& r, std::string_view block) {
     const std::string text(block.substr(begin, end - begin));
     const std::size_t first = text.find_first_not_of(" \t\r");
     if (first != std::string::npos && text[first] != '#')
-      add_text_rule(r, text, "option 'rules' line " + std::to_string(line));
+      add_text_rule(r, text, r.option + " line " + std::to_string(line));
     begin = end + 1;
   }
 }
 
 // A weighted list { { weight, successor }, ... } for the rule whose left side is `key`.
 void read_choices(lua_State* L, Read& r, const std::string& key) {
-  const std::string what = "option 'rules': rule for '" + key + "'";
+  const std::string what = r.option + ": rule for '" + key + "'";
   const lua_Integer n = list_length(L, -1, what, "write a list of { weight, successor } pairs");
   if (n == 0) throw Error(what + " has an empty list of choices");
   Production rule;
@@ -116,7 +117,7 @@ void read_table(lua_State* L, Read& r) {
   const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, -1));
   for (lua_Integer i = 1; i <= n; ++i) {
     lua_rawgeti(L, -1, i);
-    const std::string where = "option 'rules' entry " + std::to_string(i);
+    const std::string where = r.option + " entry " + std::to_string(i);
     add_text_rule(r, text_value(L, -1, where), where);
     lua_pop(L, 1);
   }
@@ -128,17 +129,17 @@ void read_table(lua_State* L, Read& r) {
       continue;
     }
     if (lua_type(L, -1) != LUA_TSTRING || lua_rawlen(L, -1) == 0 || lua_tostring(L, -1)[0] == '\0')
-      throw Error("option 'rules' keys must be symbols or rule left sides (\"A(x) : x > 1\"), got " + describe(L, -1));
+      throw Error(r.option + " keys must be symbols or rule left sides (\"A(x) : x > 1\"), got " + describe(L, -1));
     const std::string key = lua_tostring(L, -1);
     lua_rawget(L, -3);
     if (lua_type(L, -1) == LUA_TTABLE) {
       read_choices(L, r, key);
     } else {
-      const std::string value = text_value(L, -1, "option 'rules': rule for '" + key + "'");
+      const std::string value = text_value(L, -1, r.option + ": rule for '" + key + "'");
       if (key.size() == 1 && !lsystem::has_module_syntax(value) && !r.plain.contains(key[0]))
         r.plain[key[0]] = value;
       else
-        add_text_rule(r, key + " -> " + value, "option 'rules': rule for '" + key + "'");
+        add_text_rule(r, key + " -> " + value, r.option + ": rule for '" + key + "'");
     }
     lua_pop(L, 1);
   }
@@ -153,10 +154,10 @@ bool plain_rule(const Production& p) {
   return true;
 }
 
-}  // namespace
-
-void read_rules(lua_State* L, int index, lsystem::Grammar& g) {
+// Reads the rules value at `index` in any of its forms.
+Read read_any(lua_State* L, int index, const lsystem::Grammar& g, const std::string& option) {
   Read r;
+  r.option = option;
   r.constants = constant_names(g);
   const int t = lua_type(L, index);
   lua_pushvalue(L, index);
@@ -168,8 +169,23 @@ void read_rules(lua_State* L, int index, lsystem::Grammar& g) {
   } else if (t == LUA_TNIL) {
     lua_pop(L, 1);
   } else {
-    throw Error("option 'rules' must be a table of rules or a string of ABOP rules, got " + describe(L, index));
+    throw Error(option + " must be a table of rules or a string of ABOP rules, got " + describe(L, index));
   }
+  return r;
+}
+
+}  // namespace
+
+std::vector<Production> read_rule_set(lua_State* L, int index, const lsystem::Grammar& g, const char* name) {
+  Read r = read_any(L, index, g, std::string("option '") + name + "'");
+  for (const auto& [symbol, value] : r.plain)
+    r.rules.push_back(parse(std::string(1, symbol) + " -> " + value,
+                            r.option + ": rule for '" + std::string(1, symbol) + "'", r.constants));
+  return std::move(r.rules);
+}
+
+void read_rules(lua_State* L, int index, lsystem::Grammar& g) {
+  Read r = read_any(L, index, g, "option 'rules'");
   const bool module_axiom = lsystem::has_module_syntax(g.axiom) || g.axiom.find('%') != std::string::npos;
   bool plain = !module_axiom;
   std::vector<bool> seen(256, false);

@@ -17,6 +17,9 @@ namespace selfsim::interp {
 // g.start and g.productions. Throws Error naming the rule, with the rule and a caret under the column on
 // the lines after the message.
 void read_rules(lua_State* L, int index, lsystem::Grammar& g);
+// Rules of another set (decomposition, interpretation: option `name`) in the same forms, always as
+// productions.
+std::vector<lsystem::Production> read_rule_set(lua_State* L, int index, const lsystem::Grammar& g, const char* name);
 // Makes a plain grammar a module grammar (its rules as productions, its axiom as modules), for the module
 // turtle: 3D, line widths and colours, polygons.
 void to_modules(lsystem::Grammar& g);

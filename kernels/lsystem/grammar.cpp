@@ -51,16 +51,22 @@ void Grammar::validate() const {
   // Bounds the work of predicting a level (levels x grammar size) before any Progress check can run.
   double size = static_cast<double>(axiom.size());
   for (const auto& [symbol, replacement] : rules) size += static_cast<double>(replacement.size());
-  for (const Production& p : productions) {
-    double total = 0;
-    for (const Successor& o : p.options) {
-      if (!(o.weight >= 0) || !std::isfinite(o.weight))
-        throw Error(p.where + ": a stochastic weight must be a finite number >= 0, got " + number_text(o.weight));
-      total += o.weight;
-      size += static_cast<double>(o.modules.size());
+  check_range(max_depth, 0, max_rule_depth, "option 'max_depth'");
+  for (const auto* rules : {&decomposition, &interpretation})
+    for (const Production& p : *rules)
+      if (p.context())
+        throw Error(p.where + " (" + p.text + "): decomposition and interpretation rules take no context");
+  for (const auto* rules : {&productions, &decomposition, &interpretation})
+    for (const Production& p : *rules) {
+      double total = 0;
+      for (const Successor& o : p.options) {
+        if (!(o.weight >= 0) || !std::isfinite(o.weight))
+          throw Error(p.where + ": a stochastic weight must be a finite number >= 0, got " + number_text(o.weight));
+        total += o.weight;
+        size += static_cast<double>(o.modules.size());
+      }
+      if (!(total > 0)) throw Error(p.where + ": the stochastic weights are all zero (one must be positive)");
     }
-    if (!(total > 0)) throw Error(p.where + ": the stochastic weights are all zero (one must be positive)");
-  }
   if (modules()) check_arities(*this);
   if (size > max_grammar_symbols)
     throw Error("the axiom and rules hold " + std::to_string(static_cast<long long>(size)) +
@@ -68,8 +74,9 @@ void Grammar::validate() const {
 }
 
 bool Grammar::stochastic() const {
-  for (const Production& p : productions)
-    if (p.options.size() > 1) return true;
+  for (const auto* rules : {&productions, &decomposition, &interpretation})
+    for (const Production& p : *rules)
+      if (p.options.size() > 1) return true;
   return false;
 }
 

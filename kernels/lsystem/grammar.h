@@ -32,10 +32,17 @@ struct Grammar {
   std::vector<Call> start;
   std::vector<Production> productions;
   std::vector<std::pair<std::string, double>> constants;  // names every expression may read (option 'define')
-  std::string ignore = "+-&^\\/|$";                       // symbols a context skips over (the turtle's turns)
-  std::uint64_t seed = 0;                                 // stochastic choices follow from it
-  int dimension = 0;  // the turtle's: 2, 3, or 0 to choose by the symbols (module_turtle.h)
-  Vec3 tropism{};     // 3D: the heading bends toward it after each step (turtle_frame3.h)
+  // Applied to every module a step writes (and to the axiom's), recursively: a module's parts (L-Py's
+  // decomposition). Context-free.
+  std::vector<Production> decomposition;
+  // Applied only when drawing, recursively: what a module looks like (ABOP's homomorphism, L-Py's
+  // interpretation). Context-free.
+  std::vector<Production> interpretation;
+  int max_depth = 8;                 // how deep decomposition and interpretation recurse, in [0, max_rule_depth]
+  std::string ignore = "+-&^\\/|$";  // symbols a context skips over (the turtle's turns)
+  std::uint64_t seed = 0;            // stochastic choices follow from it
+  int dimension = 0;                 // the turtle's: 2, 3, or 0 to choose by the symbols (module_turtle.h)
+  Vec3 tropism{};                    // 3D: the heading bends toward it after each step (turtle_frame3.h)
 
   bool modules() const { return !start.empty(); }
   bool stochastic() const;
@@ -48,6 +55,8 @@ struct Grammar {
   double start_angle(int level) const { return start_angles[static_cast<std::size_t>(level) % start_angles.size()]; }
 };
 
+// Deepest decomposition or interpretation (option 'max_depth').
+constexpr int max_rule_depth = 64;
 // Most constants a grammar may define (option 'define').
 constexpr std::size_t max_constants = 32;
 // Highest level any kernel accepts: depth-first expansion keeps one frame per level.

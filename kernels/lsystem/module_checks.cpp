@@ -17,9 +17,10 @@ std::string parameters(std::size_t n) { return std::to_string(n) + (n == 1 ? " p
 template <class F>
 void each_written(const Grammar& g, F&& f) {
   for (const Call& c : g.start) f(c, std::string("option 'axiom'"));
-  for (const Production& p : g.productions)
-    for (const Successor& o : p.options)
-      for (const Call& c : o.modules) f(c, p.where + " (" + p.text + ")");
+  for (const auto* rules : {&g.productions, &g.decomposition, &g.interpretation})
+    for (const Production& p : *rules)
+      for (const Successor& o : p.options)
+        for (const Call& c : o.modules) f(c, p.where + " (" + p.text + ")");
 }
 
 }  // namespace
@@ -27,10 +28,11 @@ void each_written(const Grammar& g, F&& f) {
 void check_arities(const Grammar& g) {
   std::array<std::set<std::size_t>, 256> taken;
   std::array<const Production*, 256> first{};
-  for (const Production& p : g.productions) {
-    taken[p.pred.symbol].insert(p.pred.params.size());
-    if (first[p.pred.symbol] == nullptr) first[p.pred.symbol] = &p;
-  }
+  for (const auto* rules : {&g.productions, &g.decomposition, &g.interpretation})
+    for (const Production& p : *rules) {
+      taken[p.pred.symbol].insert(p.pred.params.size());
+      if (first[p.pred.symbol] == nullptr) first[p.pred.symbol] = &p;
+    }
   each_written(g, [&](const Call& c, const std::string& where) {
     const std::set<std::size_t>& t = taken[c.symbol];
     if (t.empty() || t.count(c.args.size()) > 0) return;

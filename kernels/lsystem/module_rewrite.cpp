@@ -7,6 +7,7 @@
 #include "kernels/geom/budget.h"
 #include "kernels/geom/count_text.h"
 #include "kernels/geom/error.h"
+#include "kernels/lsystem/context_match.h"
 
 namespace selfsim::lsystem {
 
@@ -29,9 +30,11 @@ struct RuleIndex {
   std::array<std::vector<const Production*>, 256> by_symbol;
   bool context = false;
 
-  explicit RuleIndex(const Grammar& g) {
+  bool empty_for(std::uint8_t s) const { return by_symbol[s].empty(); }
+
+  explicit RuleIndex(const std::vector<Production>& rules) {
     for (bool with_context : {true, false})
-      for (const Production& p : g.productions)
+      for (const Production& p : rules)
         if (p.context() == with_context) {
           by_symbol[p.pred.symbol].push_back(&p);
           context = context || with_context;
@@ -69,28 +72,20 @@ void append(ModuleString& out, std::uint8_t s, std::span<const double> args, con
   if (lineage != nullptr) out.lineage.push_back(*lineage);
 }
 
-// For each bracket of s, the position of its partner (other modules: unused).
-std::vector<std::uint32_t> partners(const ModuleString& s) {
-  std::vector<std::uint32_t> partner(s.size(), 0), open;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    if (s.symbols[i] == '[') open.push_back(static_cast<std::uint32_t>(i));
-    if (s.symbols[i] == ']' && !open.empty()) {
-      partner[i] = open.back();
-      partner[open.back()] = static_cast<std::uint32_t>(i);
-      open.pop_back();
-    }
-  }
-  for (std::uint32_t i : open) partner[i] = static_cast<std::uint32_t>(s.size());  // never closed
-  return partner;
-}
-
 class Deriver {
  public:
   Deriver(const Grammar& g, const ModuleLimits& limits, Progress& progress)
-      : g_(g), index_(g), limits_(limits), progress_(progress), stochastic_(g.stochastic()) {
+      : g_(g),
+        index_(g.productions),
+        decompose_(g.decomposition),
+        interpret_(g.interpretation),
+        limits_(limits),
+        progress_(progress),
+        stochastic_(g.stochastic()),
+        values_(static_cast<std::size_t>(g.max_depth) + 2) {
     for (char c : g.ignore) ignored_[static_cast<std::uint8_t>(c)] = true;
     if (g.constants.size() > max_constants) throw Error("internal error: too many constants");
-    for (const auto& [name, value] : g.constants) base_[k_++] = value;
+    for (const auto& [name, value] : g.constants) scope_[k_++] = value;
   }
 
   bool context() const { return index_.context; }
@@ -100,12 +95,10 @@ class Deriver {
     const std::uint64_t root = mix(g_.seed);
     Cut cut;
     for (const Call& c : g_.start) {
-      if (!cut.keep(c.symbol)) continue;
       double args[max_scope];
       for (std::size_t k = 0; k < c.args.size(); ++k)
-        args[k] = evaluate(c.args[k], {base_.data(), k_}, c, k, nullptr, 0);
-      const std::uint64_t lineage = child_lineage(root, c.salt);
-      append(s, c.symbol, {args, c.args.size()}, stochastic_ ? &lineage : nullptr);
+        args[k] = evaluate(c.args[k], {scope_.data(), k_}, c, k, nullptr, 0);
+      write(s, c.symbol, {args, c.args.size()}, child_lineage(root, c.salt), 0, 0, &cut);
     }
     return s;
   }
@@ -115,7 +108,6 @@ class Deriver {
     std::vector<ModuleString> frames(static_cast<std::size_t>(level) + 1);
     std::vector<std::size_t> pos(frames.size(), 0);
     frames[0] = axiom();
-    std::array<double, max_scope> scope = base_;
     Cut cut;
     std::size_t d = 0;
     while (true) {
@@ -130,39 +122,37 @@ class Deriver {
       const std::uint8_t s = f.symbols[i];
       if (cut.active && s != '[' && s != ']') continue;  // dropped with the rest of its branch
       if (d < static_cast<std::size_t>(level)) {
-        if (const Production* p = match(f, nullptr, i, scope.data())) {
+        if (const Production* p = match(index_, f, nullptr, i)) {
           frames[d + 1].clear();
-          apply(*p, f, i, scope.data(), static_cast<int>(d) + 1, frames[d + 1], nullptr);
+          apply(*p, lineage_of(f, i), static_cast<int>(d) + 1, frames[d + 1], nullptr);
           pos[++d] = 0;
           continue;
         }
       }
-      if (cut.keep(s)) sink.module(s, f.args_of(i));
+      if (cut.keep(s)) emit(s, f.args_of(i), lineage_of(f, i), level, 0, sink);
     }
   }
 
   // Context-sensitive grammars: each level below the last held whole, the last streamed.
   void level_by_level(int level, ModuleSink& sink) {
-    ModuleString cur = axiom(), next, scratch;
-    std::array<double, max_scope> scope = base_;
+    ModuleString cur = axiom(), next, last;
     for (int k = 1; k <= level; ++k) {
-      const std::vector<std::uint32_t> partner = partners(cur);
-      const bool last = k == level;
+      const std::vector<std::uint32_t> partner = bracket_partners(cur);
+      const bool streamed = k == level;
       Cut cut;
-      ModuleString& out = last ? scratch : next;
       for (std::size_t i = 0; i < cur.size(); ++i) {
         if (++work_ >= next_check_) check_level(k, level, i, cur.size());
-        if (last) scratch.clear();
-        if (const Production* p = match(cur, &partner, i, scope.data())) {
-          apply(*p, cur, i, scope.data(), k, out, last ? nullptr : &cut);
-        } else if (last || cut.keep(cur.symbols[i])) {
+        ModuleString& out = streamed ? last : next;
+        if (streamed) last.clear();
+        if (const Production* p = match(index_, cur, &partner, i))
+          apply(*p, lineage_of(cur, i), k, out, streamed ? nullptr : &cut);
+        else if (streamed || cut.keep(cur.symbols[i]))
           append(out, cur.symbols[i], cur.args_of(i), stochastic_ ? &cur.lineage[i] : nullptr);
-        }
-        if (last)
-          for (std::size_t j = 0; j < scratch.size(); ++j)
-            if (cut.keep(scratch.symbols[j])) sink.module(scratch.symbols[j], scratch.args_of(j));
+        if (streamed)
+          for (std::size_t j = 0; j < last.size(); ++j)
+            if (cut.keep(last.symbols[j])) emit(last.symbols[j], last.args_of(j), lineage_of(last, j), level, 0, sink);
       }
-      if (!last) {
+      if (!streamed) {
         if (static_cast<double>(next.size()) > limits_.held)
           throw BudgetError("level " + std::to_string(k) + " of the context-sensitive grammar holds " +
                             count_text(static_cast<double>(next.size())) + " modules, over the limit of " +
@@ -172,10 +162,14 @@ class Deriver {
       }
     }
     if (level == 0)
-      for (std::size_t i = 0; i < cur.size(); ++i) sink.module(cur.symbols[i], cur.args_of(i));
+      for (std::size_t i = 0; i < cur.size(); ++i) emit(cur.symbols[i], cur.args_of(i), lineage_of(cur, i), 0, 0, sink);
   }
 
+  void interpret(bool on) { interpreting_ = on; }
+
  private:
+  std::uint64_t lineage_of(const ModuleString& s, std::size_t i) const { return stochastic_ ? s.lineage[i] : 0; }
+
   double evaluate(const Expression& e, std::span<const double> scope, const Call& c, std::size_t k, const Production* p,
                   int level) const {
     try {
@@ -187,115 +181,127 @@ class Deriver {
     }
   }
 
-  // The first production that rewrites module i of s, with its parameters bound in scope (after the
-  // constants, which scope already holds); null if none.
-  // `partner` (brackets) is given when productions have contexts.
-  const Production* match(const ModuleString& s, const std::vector<std::uint32_t>* partner, std::size_t i,
-                          double* scope) const {
+  // The first production of `index` that rewrites module i of s, its parameters bound in scope_ (after the
+  // constants, which scope_ always holds); null if none. `partner` (brackets) is given when productions
+  // have contexts.
+  const Production* match(const RuleIndex& index, const ModuleString& s, const std::vector<std::uint32_t>* partner,
+                          std::size_t i) {
     const std::span<const double> args = s.args_of(i);
-    double* params = scope + k_;
-    for (const Production* p : index_.by_symbol[s.symbols[i]]) {
+    double* params = scope_.data() + k_;
+    for (const Production* p : index.by_symbol[s.symbols[i]]) {
       if (p->pred.params.size() != args.size()) continue;
       std::size_t slot = 0;
       for (const Pattern& m : p->left) slot += m.params.size();
       std::copy(args.begin(), args.end(), params + slot);
-      if (p->context() &&
-          !(left_matches(*p, s, *partner, i, params) && right_matches(*p, s, *partner, i, params + slot + args.size())))
+      if (p->context() && !(left_context(*p, s, *partner, i, ignored_, params) &&
+                            right_context(*p, s, *partner, i, ignored_, params + slot + args.size())))
         continue;
-      if (!p->condition.empty()) {
-        double ok = 0;
-        try {
-          ok = p->condition.eval({scope, k_ + static_cast<std::size_t>(p->slots)});
-        } catch (const EvalError& err) {
-          throw Error(p->where + " (" + p->text + "): its condition: " + err.what());
-        }
-        if (ok == 0) continue;
-      }
-      return p;
+      if (holds(*p)) return p;
     }
     return nullptr;
   }
 
-  bool binds(const Pattern& m, const ModuleString& s, std::size_t j, double* scope) const {
-    if (s.symbols[j] != m.symbol) return false;
-    const std::span<const double> a = s.args_of(j);
-    if (a.size() != m.params.size()) return false;
-    std::copy(a.begin(), a.end(), scope);
-    return true;
-  }
-
-  // The left context, nearest module last: completed branches and the '[' of the module's own branch are
-  // skipped (ABOP 1.8), as are ignored symbols.
-  bool left_matches(const Production& p, const ModuleString& s, const std::vector<std::uint32_t>& partner,
-                    std::size_t i, double* scope) const {
-    std::size_t slot = 0;
-    for (const Pattern& m : p.left) slot += m.params.size();
-    std::size_t j = i;
-    for (auto m = p.left.rbegin(); m != p.left.rend(); ++m) {
-      while (true) {
-        if (j == 0) return false;
-        --j;
-        const std::uint8_t c = s.symbols[j];
-        if (c == ']' && partner[j] < j)
-          j = partner[j];
-        else if (c != '[' && !ignored_[c])
-          break;
-      }
-      slot -= m->params.size();
-      if (!binds(*m, s, j, scope + slot)) return false;
+  // The first context-free production of `index` for a module given by its symbol and parameters.
+  const Production* match(const RuleIndex& index, std::uint8_t symbol, std::span<const double> args) {
+    for (const Production* p : index.by_symbol[symbol]) {
+      if (p->pred.params.size() != args.size()) continue;
+      std::copy(args.begin(), args.end(), scope_.data() + k_);
+      if (holds(*p)) return p;
     }
-    return true;
+    return nullptr;
   }
 
-  // The right context: a '[' in it enters a branch, a ']' skips to the end of the branch it is in; branches
-  // it does not enter are skipped, ignored symbols too, and the end of the module's own branch ends it.
-  bool right_matches(const Production& p, const ModuleString& s, const std::vector<std::uint32_t>& partner,
-                     std::size_t i, double* scope) const {
-    std::size_t j = i;
-    const std::size_t n = s.size();
-    for (const Pattern& m : p.right) {
-      if (m.symbol == ']') {
-        int depth = 0;
-        for (++j; j < n; ++j) {
-          if (s.symbols[j] == '[') ++depth;
-          if (s.symbols[j] == ']' && depth-- == 0) break;
+  bool holds(const Production& p) const {
+    if (p.condition.empty()) return true;
+    try {
+      return p.condition.eval({scope_.data(), k_ + static_cast<std::size_t>(p.slots)}) != 0;
+    } catch (const EvalError& err) {
+      throw Error(p.where + " (" + p.text + "): its condition: " + err.what());
+    }
+  }
+
+  // The successor p chooses for a module of this lineage (its parameters bound in scope_).
+  const Successor& chosen(const Production& p, std::uint64_t lineage) const {
+    if (p.options.size() == 1) return p.options[0];
+    return p.options[choose_option(p.options, static_cast<double>(lineage >> 11) * 0x1.0p-53)];
+  }
+
+  // Evaluates the successor's parameters into `values` (the modules' parameters, in order), before any
+  // of them is written: writing may decompose, which binds scope_ again.
+  void evaluate_successor(const Production& p, const Successor& succ, int level, std::vector<double>& values) const {
+    const std::span<const double> bound{scope_.data(), k_ + static_cast<std::size_t>(p.slots)};
+    values.clear();
+    for (const Call& c : succ.modules)
+      for (std::size_t k = 0; k < c.args.size(); ++k) values.push_back(evaluate(c.args[k], bound, c, k, &p, level));
+  }
+
+  // Writes p's successor for a module of this lineage (its parameters bound in scope_) into out.
+  void apply(const Production& p, std::uint64_t lineage, int level, ModuleString& out, Cut* cut) {
+    const Successor& succ = chosen(p, lineage);
+    std::vector<double>& values = values_[0];
+    evaluate_successor(p, succ, level, values);
+    std::size_t v = 0;
+    for (const Call& c : succ.modules) {
+      write(out, c.symbol, {values.data() + v, c.args.size()}, child_lineage(lineage, c.salt), level, 0, cut);
+      v += c.args.size();
+    }
+    count(succ.modules.size());
+  }
+
+  // Appends a module to out, replaced first by its decomposition (recursively, to g.max_depth levels)
+  // when a decomposition rule matches it.
+  void write(ModuleString& out, std::uint8_t symbol, std::span<const double> args, std::uint64_t lineage, int level,
+             int depth, Cut* cut) {
+    if (depth < g_.max_depth && !decompose_.empty_for(symbol)) {
+      if (const Production* p = match(decompose_, symbol, args)) {
+        const Successor& succ = chosen(*p, lineage);
+        std::vector<double>& values = values_[static_cast<std::size_t>(depth) + 1];
+        evaluate_successor(*p, succ, level, values);
+        std::size_t v = 0;
+        for (const Call& c : succ.modules) {
+          write(out, c.symbol, {values.data() + v, c.args.size()}, child_lineage(lineage, c.salt), level, depth + 1,
+                cut);
+          v += c.args.size();
         }
-        if (j >= n) return false;
-        continue;
+        count(succ.modules.size());
+        return;
       }
-      while (true) {
-        if (++j >= n) return false;
-        const std::uint8_t c = s.symbols[j];
-        if (c == '[' && m.symbol != '[') {
-          j = partner[j];
-          if (j >= n) return false;
-        } else if (c == ']') {
-          return false;
-        } else if (!ignored_[c]) {
-          break;
-        }
-      }
-      if (!binds(m, s, j, scope)) return false;
-      scope += m.params.size();
     }
-    return true;
+    if (cut != nullptr && !cut->keep(symbol)) return;
+    if (static_cast<double>(out.size()) >= limits_.held)
+      throw BudgetError("level " + std::to_string(level) + " holds more than " + count_text(limits_.held) +
+                        " modules in one successor, over the limit (--max-points)");
+    append(out, symbol, args, stochastic_ ? &lineage : nullptr);
   }
 
-  // Writes p's successor for module i of s (its parameters bound in scope) into out.
-  void apply(const Production& p, const ModuleString& s, std::size_t i, const double* scope, int level,
-             ModuleString& out, Cut* cut) {
-    const Successor* succ = &p.options[0];
-    if (p.options.size() > 1)
-      succ = &p.options[choose_option(p.options, static_cast<double>(s.lineage[i] >> 11) * 0x1.0p-53)];
-    const std::span<const double> bound{scope, k_ + static_cast<std::size_t>(p.slots)};
-    double args[max_scope];
-    for (const Call& c : succ->modules) {
-      if (cut != nullptr && !cut->keep(c.symbol)) continue;
-      for (std::size_t k = 0; k < c.args.size(); ++k) args[k] = evaluate(c.args[k], bound, c, k, &p, level);
-      const std::uint64_t lineage = stochastic_ ? child_lineage(s.lineage[i], c.salt) : 0;
-      append(out, c.symbol, {args, c.args.size()}, stochastic_ ? &lineage : nullptr);
+  // Feeds a module of the level to the sink, replaced first by its interpretation (recursively, to
+  // g.max_depth levels) when drawing and an interpretation rule matches it.
+  void emit(std::uint8_t symbol, std::span<const double> args, std::uint64_t lineage, int level, int depth,
+            ModuleSink& sink) {
+    if (interpreting_ && depth < g_.max_depth && !interpret_.empty_for(symbol)) {
+      if (const Production* p = match(interpret_, symbol, args)) {
+        const Successor& succ = chosen(*p, lineage);
+        std::vector<double>& values = values_[static_cast<std::size_t>(depth) + 1];
+        evaluate_successor(*p, succ, level, values);
+        std::size_t v = 0;
+        for (const Call& c : succ.modules) {
+          emit(c.symbol, {values.data() + v, c.args.size()}, child_lineage(lineage, c.salt), level, depth + 1, sink);
+          v += c.args.size();
+        }
+        count(succ.modules.size());
+        return;
+      }
     }
-    written_ += succ->modules.size();
+    sink.module(symbol, args);
+  }
+
+  // Counts modules written; a decomposition or interpretation that keeps writing is stopped here.
+  void count(std::size_t n) {
+    written_ += n;
+    if (written_ < next_written_) return;
+    next_written_ = written_ + check_every;
+    if (static_cast<double>(work_ + written_) > limits_.work) over_budget();
+    if (progress_.cancelled()) throw Cancelled();
   }
 
   void over_budget() const {
@@ -323,14 +329,16 @@ class Deriver {
   }
 
   const Grammar& g_;
-  RuleIndex index_;
+  RuleIndex index_, decompose_, interpret_;
   ModuleLimits limits_;
   Progress& progress_;
   bool stochastic_;
   std::array<bool, 256> ignored_{};
-  std::array<double, max_scope> base_{};  // the grammar's constants, then room for a rule's parameters
-  std::size_t k_ = 0;                     // how many constants
-  std::size_t work_ = 0, written_ = 0, next_check_ = check_every;
+  std::vector<std::vector<double>> values_;  // evaluated successor parameters, one list per depth
+  std::array<double, max_scope> scope_{};    // the grammar's constants, then the parameters a rule binds
+  std::size_t k_ = 0;                        // how many constants
+  bool interpreting_ = false;
+  std::size_t work_ = 0, written_ = 0, next_check_ = check_every, next_written_ = check_every;
 };
 
 struct TextSink : ModuleSink {
@@ -365,10 +373,12 @@ std::size_t choose_option(std::span<const Successor> options, double u) {
   return k;
 }
 
-void rewrite_modules(const Grammar& g, int level, ModuleSink& sink, const ModuleLimits& limits, Progress& progress) {
+void rewrite_modules(const Grammar& g, int level, ModuleSink& sink, const ModuleLimits& limits, Progress& progress,
+                     bool interpret) {
   g.validate();
   if (!g.modules()) throw Error("internal error: rewrite_modules needs a module grammar");
   Deriver d(g, limits, progress);
+  d.interpret(interpret);
   if (d.context())
     d.level_by_level(level, sink);
   else

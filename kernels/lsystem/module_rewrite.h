@@ -31,10 +31,13 @@ struct ModuleLimits {
   double held = 2.7e8;  // modules a context-sensitive grammar may hold in memory at once
 };
 
-// Derives level `level` of g (g.modules() must be true) and feeds it to sink. Throws Error naming the rule
-// and level when a parameter evaluates to a division by zero or a non-finite number; BudgetError past
-// `limits`; Cancelled when progress says so.
-void rewrite_modules(const Grammar& g, int level, ModuleSink& sink, const ModuleLimits& limits, Progress& progress);
+// Derives level `level` of g (g.modules() must be true) and feeds it to sink; with `interpret`, each module
+// through g's interpretation rules first (drawing). Decomposition rules rewrite every module a step (or
+// the axiom) writes, recursively, up to g.max_depth levels deep. Throws Error naming the rule and level
+// when a parameter evaluates to a division by zero or a non-finite number; BudgetError past `limits`;
+// Cancelled when progress says so.
+void rewrite_modules(const Grammar& g, int level, ModuleSink& sink, const ModuleLimits& limits, Progress& progress,
+                     bool interpret = false);
 
 // The level as ABOP text, modules with their parameters ("F(1)[+(30)A(0.5)]"); refuses one longer than
 // max_modules.

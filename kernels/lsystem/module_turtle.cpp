@@ -24,12 +24,18 @@ constexpr double modules_per_point = 64;
 constexpr Vec3 vertical{0, 1, 0};
 constexpr std::string_view turns_3d = "&^\\/$";
 
-// The 2D turtle's heading: an angle, so any number of turns leaves no drift. 3D turns do nothing.
+// The 2D turtle's heading: an angle, so any number of turns leaves no drift (its direction follows it, so
+// a step costs no sine). 3D turns do nothing.
 struct Heading2 {
   double radians;
-  explicit Heading2(double degrees) : radians(degrees * degree) {}
-  Vec2 forward() const { return {std::cos(radians), std::sin(radians)}; }
-  void yaw(double degrees) { radians = std::remainder(radians + degrees * degree, 2 * std::numbers::pi); }
+  Vec2 direction;
+  explicit Heading2(double degrees) : radians(degrees * degree), direction(polar(radians)) {}
+  Vec2 forward() const { return direction; }
+  void yaw(double degrees) {
+    radians += degrees * degree;
+    if (std::abs(radians) > 16) radians = std::remainder(radians, 2 * std::numbers::pi);  // exact
+    direction = polar(radians);
+  }
   void turn_around() { yaw(180); }
   void pitch(double) {}
   void roll(double) {}
@@ -63,9 +69,10 @@ bool writes(const Grammar& g, F wanted) {
     return std::any_of(calls.begin(), calls.end(), [&](const Call& c) { return wanted(c.symbol); });
   };
   if (in(g.start)) return true;
-  for (const Production& p : g.productions)
-    for (const Successor& o : p.options)
-      if (in(o.modules)) return true;
+  for (const auto* rules : {&g.productions, &g.decomposition, &g.interpretation})
+    for (const Production& p : *rules)
+      for (const Successor& o : p.options)
+        if (in(o.modules)) return true;
   return false;
 }
 
@@ -211,10 +218,7 @@ class Turtle : public ModuleSink {
       out_.close_path();
       path_open_ = false;
     }
-    if constexpr (std::is_same_v<V, Vec2>)
-      pos_ += length * heading_.forward();
-    else
-      pos_ += length * heading_.forward();
+    pos_ += length * heading_.forward();
     walked_ += std::abs(length);
     if (draws) {
       path_open_ = true;
@@ -311,7 +315,7 @@ PolylineT<V> draw(const Grammar& g, const TurtleOptions& opt, Mesh* polygons, Pr
   out.point_fields.set(uniform_int("level", opt.level));
   progress.start("L-system");
   Turtle<V, Heading> turtle(g, opt, out, polygons);
-  rewrite_modules(g, opt.level, turtle, limits_for(opt), progress);
+  rewrite_modules(g, opt.level, turtle, limits_for(opt), progress, true);
   turtle.finish();
   progress.fraction(1);
   if (!out.finite() || (polygons != nullptr && !polygons->finite()))
@@ -354,7 +358,7 @@ double module_segments(const Grammar& g, int level, double max_points, Progress&
   ModuleLimits limits;
   limits.work = modules_per_point * max_points;
   limits.held = max_points;
-  rewrite_modules(g, level, counter, limits, progress);
+  rewrite_modules(g, level, counter, limits, progress, true);
   return counter.segments;
 }
 

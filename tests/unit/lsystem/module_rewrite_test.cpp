@@ -207,3 +207,58 @@ TEST(ModuleRewrite, ConstantsAreReadByEveryExpression) {
     EXPECT_NE(std::string(e.what()).find("also a constant"), std::string::npos) << e.what();
   }
 }
+
+namespace {
+
+std::vector<Production> rules_of(const std::vector<std::string>& texts) {
+  std::vector<Production> out;
+  for (const std::string& t : texts) out.push_back(parse_rule(t, "rule " + std::to_string(out.size() + 1)));
+  return out;
+}
+
+}  // namespace
+
+TEST(ModuleRewrite, DecompositionRewritesWhatEachStepWrites) {
+  Grammar g = grammar("B", {"A -> AB"});
+  g.decomposition = rules_of({"B -> CD"});
+  EXPECT_EQ(text(g, 0), "CD");  // the axiom too
+  g = grammar("A", {"A -> AB"});
+  g.decomposition = rules_of({"B -> CD"});
+  EXPECT_EQ(text(g, 1), "ACD");
+  EXPECT_EQ(text(g, 2), "ACDCD");
+  // Recursive, to max_depth levels.
+  Grammar r = grammar("X", {"Z -> Z"});
+  r.decomposition = rules_of({"X -> XY"});
+  r.max_depth = 3;
+  EXPECT_EQ(text(r, 0), "XYYY");
+  // With parameters and in a context-sensitive grammar.
+  Grammar c = grammar("A(1)", {"A(x) -> A(x + 1) B(x)", "Q < Q -> Q"});
+  c.decomposition = rules_of({"B(x) -> C(x * 10) D"});
+  EXPECT_EQ(text(c, 2), "A(3)C(20)DC(10)D");
+}
+
+TEST(ModuleRewrite, InterpretationOnlyWhenDrawing) {
+  Grammar g = grammar("A", {"A -> AA"});
+  g.interpretation = rules_of({"A -> F+F"});
+  EXPECT_EQ(text(g, 2), "AAAA");  // the string is the derivation's
+  struct Collect : ModuleSink {
+    std::string s;
+    void module(std::uint8_t c, std::span<const double>) override { s += static_cast<char>(c); }
+  } drawn;
+  rewrite_modules(g, 1, drawn, {}, no_progress(), true);
+  EXPECT_EQ(drawn.s, "F+FF+F");
+}
+
+TEST(ModuleRewrite, RunawayDecompositionAndInterpretationAreStopped) {
+  struct Null : ModuleSink {
+    void module(std::uint8_t, std::span<const double>) override {}
+  } sink;
+  Grammar g = grammar("A", {"Z -> Z"});
+  g.interpretation = rules_of({"A -> AA"});
+  g.max_depth = 64;
+  EXPECT_THROW(rewrite_modules(g, 0, sink, {.work = 1e6, .held = 1e6}, no_progress(), true), BudgetError);
+  Grammar d = grammar("A", {"Z -> Z"});
+  d.decomposition = rules_of({"A -> AA"});
+  d.max_depth = 64;
+  EXPECT_THROW(rewrite_modules(d, 0, sink, {.work = 1e12, .held = 1e5}, no_progress()), BudgetError);
+}

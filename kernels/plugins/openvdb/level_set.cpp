@@ -1,6 +1,6 @@
-// Every OpenVDB call of selfsim lives here, in one translation unit (see level_set.h for why): volumes
-// converted to level sets in a local frame, their boundaries, .vdb files, and the walls' distance grid
-// (wall_grid.h).
+// Every OpenVDB conversion of selfsim lives here, in one translation unit of the OpenVDB plugin (plugin.h;
+// reading .vdb files is vdb_read.cpp): volumes converted to level sets in a local frame, their
+// boundaries, .vdb files, and the walls' distance grid (wall_grid.h).
 #include "kernels/geom/level_set.h"
 
 #include <openvdb/io/Stream.h>
@@ -418,22 +418,6 @@ void WallGrid::clearances(std::span<const Vec3> points, std::span<double> out) c
   }
 }
 
-double WallGrid::clearance(Vec3 p) const {
-  double c = 0;
-  clearances({&p, 1}, {&c, 1});
-  return c;
-}
-
 double WallGrid::voxel() const { return data_->frame.voxel * scale_; }
-
-double WallGrid::error() const { return std::sqrt(3.0) / 2 * voxel(); }
-
-WallGrid WallGrid::in_frame(Vec3 centre, double scale) const {
-  // q = scale·(p − centre) and this view's p = scale_·(w − centre_): q = scale·scale_·(w − centre_ − centre/scale_).
-  WallGrid g = *this;
-  g.centre_ = centre_ + (1 / scale_) * centre;
-  g.scale_ = scale_ * scale;
-  return g;
-}
 
 }  // namespace selfsim

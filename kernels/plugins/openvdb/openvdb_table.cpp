@@ -1,0 +1,21 @@
+// The OpenVDB plugin's one exported function: its table (openvdb_table.h).
+#include "kernels/plugins/openvdb/openvdb_table.h"
+
+namespace {
+
+const selfsim::OpenVdbTable table{
+    selfsim::boundary_size,
+    selfsim::volume_boundary,
+    selfsim::distance_vdb,
+    [](const selfsim::Volume& v, double voxel, double depth, const selfsim::PointBudget& budget,
+       selfsim::Progress& progress) { return selfsim::WallGrid(v, voxel, depth, budget, progress); },
+    selfsim::WallGrid::size,
+    [](const selfsim::WallGrid& g, std::span<const selfsim::Vec3> p, std::span<double> out) { g.clearances(p, out); },
+    [](const selfsim::WallGrid& g) { return g.voxel(); },
+    selfsim::io::read_vdb_info,
+    selfsim::io::read_vdb_surface,
+};
+
+}  // namespace
+
+extern "C" __attribute__((visibility("default"))) const void* selfsim_openvdb_table() { return &table; }

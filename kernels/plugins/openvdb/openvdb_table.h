@@ -1,0 +1,31 @@
+// The functions of the OpenVDB plugin (selfsim_openvdb.so, plugin.h): everything selfsim does with
+// OpenVDB, behind level_set.h, wall_grid.h and vdb_read.h.
+#pragma once
+
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "kernels/geom/level_set.h"
+#include "kernels/geom/wall_grid.h"
+#include "kernels/io/vdb_read.h"
+
+namespace selfsim {
+
+struct OpenVdbTable {
+  double (*boundary_size)(const Volume&, double);
+  Mesh (*volume_boundary)(const Volume&, double, const PointBudget&, Progress&);
+  std::string (*distance_vdb)(const Mesh&, bool, double, const std::string&, const PointBudget&, Progress&);
+  WallGrid (*wall_grid)(const Volume&, double, double, const PointBudget&, Progress&);
+  double (*wall_grid_size)(const Volume&, double, double);
+  void (*wall_clearances)(const WallGrid&, std::span<const Vec3>, std::span<double>);
+  double (*wall_voxel)(const WallGrid&);
+  std::vector<io::VdbGridInfo> (*read_vdb_info)(const std::filesystem::path&);
+  io::VdbSurface (*read_vdb_surface)(const std::filesystem::path&, const std::string&, const std::filesystem::path&);
+};
+
+inline constexpr const char* openvdb_plugin = "selfsim_openvdb.so";
+inline constexpr const char* openvdb_table_symbol = "selfsim_openvdb_table";
+
+}  // namespace selfsim

@@ -1,0 +1,23 @@
+// The functions of the rendering plugin (selfsim_render.so, plugin.h): VTK's OpenGL renderer, behind
+// preview_png.h.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "kernels/io/preview_png.h"
+
+namespace selfsim {
+
+struct RenderTable {
+  bool (*flat_dataset)(const io::Dataset&);
+  io::PreviewSize (*preview_size)(const io::Dataset&);
+  std::string (*render_preview_png)(const io::Dataset&, const std::string&, Progress&);
+  std::string (*write_preview_png)(const io::Dataset&, const std::string&, const std::filesystem::path&,
+                                   const std::string&, Progress&);
+};
+
+inline constexpr const char* render_plugin = "selfsim_render.so";
+inline constexpr const char* render_table_symbol = "selfsim_render_table";
+
+}  // namespace selfsim
