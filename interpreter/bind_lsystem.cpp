@@ -59,12 +59,16 @@ std::string turtle_symbols(const Grammar& g, std::string_view among) {
         found.find(c) == std::string::npos)
       found += c;
   };
-  for (char c : g.axiom) see(c);
+  if (g.modules())  // the modules, not the text: "F(1/2)" holds no roll
+    for (const lsystem::Call& c : g.start) see(static_cast<char>(c.symbol));
+  else
+    for (char c : g.axiom) see(c);
   for (const auto& [symbol, rule] : g.rules)
     for (char c : rule) see(c);
-  for (const lsystem::Production& p : g.productions)
-    for (const lsystem::Successor& o : p.options)
-      for (const lsystem::Call& c : o.modules) see(static_cast<char>(c.symbol));
+  for (const auto* rules : {&g.productions, &g.decomposition, &g.interpretation})
+    for (const lsystem::Production& p : *rules)
+      for (const lsystem::Successor& o : p.options)
+        for (const lsystem::Call& c : o.modules) see(static_cast<char>(c.symbol));
   return found;
 }
 
@@ -137,8 +141,7 @@ Grammar read_grammar(lua_State* L, int index) {
     if (ignore.find(symbol) == std::string::npos) ignore += symbol;
   g.ignore = o.string("ignore", ignore);
   g.seed = static_cast<std::uint64_t>(o.integer("seed", RunContext::of(L).config.seed, 0, (1LL << 53)));
-  g.dimension = static_cast<int>(o.integer("dimension", 0, 0, 3));
-  if (g.dimension == 1) throw Error("option 'dimension' must be 2 or 3 (or absent: chosen by the symbols), got 1");
+  g.dimension = static_cast<int>(o.integer("dimension", 0, 2, 3));  // absent: 0, chosen by the symbols
   if (const std::optional<Vec3> t = o.point3("tropism")) g.tropism = *t;
   o.finish();
   // The byte turtle draws plain grammars in 2D; the module turtle also turns in 3D, keeps widths and
@@ -254,6 +257,8 @@ int grammar_count(lua_State* L) {
     RunContext& run = RunContext::of(L);
     const double n = g.modules() ? lsystem::module_segments(g, level, run.budget().left(), run)
                                  : lsystem::predict_counts(g, level, run).segments;
+    if (!std::isfinite(n))
+      throw Error("level " + std::to_string(level) + " has more segments than a number can hold (over 1e308)");
     if (n < 9e15)
       lua_pushinteger(L, static_cast<lua_Integer>(n));
     else
@@ -265,7 +270,8 @@ int grammar_count(lua_State* L) {
 int grammar_tostring(lua_State* L) {
   const Held<Grammar> held = self(L, "tostring");
   const Grammar& g = *held;
-  lua_pushfstring(L, "Grammar(axiom '%s', %d rules)", g.axiom.c_str(), static_cast<int>(g.rules.size()));
+  const std::size_t rules = g.modules() ? g.productions.size() : g.rules.size();
+  lua_pushfstring(L, "Grammar(axiom '%s', %d rules)", g.axiom.c_str(), static_cast<int>(rules));
   return 1;
 }
 

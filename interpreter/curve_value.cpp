@@ -29,8 +29,12 @@ int curve_paths(lua_State* L) {
 template <class T>
 int curve_length(lua_State* L) {
   const Held<T> c = geometry_self<T>(L, "length");
-  lua_pushnumber(L, c->length());
-  return 1;
+  return call_kernel(L, "length", [&] {
+    const double length = c->length();
+    if (!std::isfinite(length)) throw Error("the curve's length overflows (its coordinates are too far apart)");
+    lua_pushnumber(L, length);
+    return 1;
+  });
 }
 // c:level(): the construction level a kernel recorded (its uniform `level` field), or nil; c:level(k): the
 // curve at level k (growth.h).

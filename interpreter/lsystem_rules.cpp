@@ -49,21 +49,20 @@ struct Read {
   std::string option = "option 'rules'";  // names the option in messages
   std::vector<std::string> constants;
   std::vector<Production> rules;
-  std::vector<bool> weighted;  // per rule: written with ": weight" (list and block forms)
+  std::map<std::string, std::size_t> weighted;  // a weighted rule's left side -> its place in `rules`
   std::map<char, std::string> plain;
 };
 
 void add_text_rule(Read& r, const std::string& text, const std::string& where) {
   Production p = parse(text, where, r.constants);
-  const bool weighted = lsystem::rule_weight_given(text);
-  if (weighted)
-    for (std::size_t k = 0; k < r.rules.size(); ++k)
-      if (r.weighted[k] && left_side(r.rules[k].text) == left_side(p.text)) {
-        r.rules[k].options.push_back(std::move(p.options[0]));
-        return;
-      }
+  if (lsystem::rule_weight_given(text)) {
+    const auto [it, added] = r.weighted.emplace(left_side(p.text), r.rules.size());
+    if (!added) {
+      r.rules[it->second].options.push_back(std::move(p.options[0]));
+      return;
+    }
+  }
   r.rules.push_back(std::move(p));
-  r.weighted.push_back(weighted);
 }
 
 void read_block(Read& r, std::string_view block) {
@@ -110,7 +109,6 @@ void read_choices(lua_State* L, Read& r, const std::string& key) {
     }
   }
   r.rules.push_back(std::move(rule));
-  r.weighted.push_back(false);
 }
 
 void read_table(lua_State* L, Read& r) {
@@ -130,7 +128,10 @@ void read_table(lua_State* L, Read& r) {
     }
     if (lua_type(L, -1) != LUA_TSTRING || lua_rawlen(L, -1) == 0 || lua_tostring(L, -1)[0] == '\0')
       throw Error(r.option + " keys must be symbols or rule left sides (\"A(x) : x > 1\"), got " + describe(L, -1));
-    const std::string key = lua_tostring(L, -1);
+    const std::string key = text_value(L, -1, r.option + " key");
+    if (key.find("->") != std::string::npos)
+      throw Error(r.option + ": the key " + describe(L, -1) +
+                  " holds '->': a key is the rule's left side, its value the successor");
     lua_rawget(L, -3);
     if (lua_type(L, -1) == LUA_TTABLE) {
       read_choices(L, r, key);
@@ -162,7 +163,7 @@ Read read_any(lua_State* L, int index, const lsystem::Grammar& g, const std::str
   const int t = lua_type(L, index);
   lua_pushvalue(L, index);
   if (t == LUA_TSTRING) {
-    read_block(r, lua_tostring(L, -1));
+    read_block(r, text_value(L, -1, option));
     lua_pop(L, 1);
   } else if (t == LUA_TTABLE) {
     read_table(L, r);

@@ -525,7 +525,12 @@ double Expression::eval(std::span<const double> args) const {
     throw Error("cannot evaluate an empty expression");
   if (args.size() < arity_) [[unlikely]]
     throw Error("expression reads " + std::to_string(arity_) + " arguments, given " + std::to_string(args.size()));
-  const double result = run(code_.data(), code_.data() + code_.size(), args.data());
+  // A number or a parameter alone (`30`, `x`), the commonest arguments, without the interpreter loop.
+  const Op& first = code_.front();
+  const double result = code_.size() == 1 && first.code == Code::Const ? first.value
+                        : code_.size() == 1 && first.code == Code::Param
+                            ? args[first.index]
+                            : run(code_.data(), code_.data() + code_.size(), args.data());
   if (!std::isfinite(result)) [[unlikely]]
     throw EvalError(std::isnan(result) ? "result is not a number" : "result is infinite");
   return result;

@@ -1,5 +1,6 @@
 #include "kernels/lsystem/module_rewrite.h"
 
+#include <algorithm>
 #include <array>
 #include <utility>
 #include <vector>
@@ -65,9 +66,16 @@ struct Cut {
   }
 };
 
+// The memory a level takes, in budget points (16 bytes): what its arrays have reserved.
+double held_points(const ModuleString& s) {
+  return (static_cast<double>(s.symbols.capacity()) + 4.0 * static_cast<double>(s.arg_end.capacity()) +
+          8.0 * static_cast<double>(s.args.capacity() + s.lineage.capacity())) /
+         16;
+}
+
 void append(ModuleString& out, std::uint8_t s, std::span<const double> args, const std::uint64_t* lineage) {
   out.symbols.push_back(s);
-  out.args.insert(out.args.end(), args.begin(), args.end());
+  for (double a : args) out.args.push_back(a);  // most modules have 0 or 1: cheaper than a range insert
   out.arg_end.push_back(static_cast<std::uint32_t>(out.args.size()));
   if (lineage != nullptr) out.lineage.push_back(*lineage);
 }
@@ -137,14 +145,14 @@ class Deriver {
   void level_by_level(int level, ModuleSink& sink) {
     ModuleString cur = axiom(), next, last;
     for (int k = 1; k <= level; ++k) {
-      const std::vector<std::uint32_t> partner = bracket_partners(cur);
+      const Neighbours near = level_neighbours(cur, ignored_);
       const bool streamed = k == level;
       Cut cut;
       for (std::size_t i = 0; i < cur.size(); ++i) {
-        if (++work_ >= next_check_) check_level(k, level, i, cur.size());
+        if (++work_ >= next_check_) check_level(k, level, i, cur, next);
         ModuleString& out = streamed ? last : next;
         if (streamed) last.clear();
-        if (const Production* p = match(index_, cur, &partner, i))
+        if (const Production* p = match(index_, cur, &near, i))
           apply(*p, lineage_of(cur, i), k, out, streamed ? nullptr : &cut);
         else if (streamed || cut.keep(cur.symbols[i]))
           append(out, cur.symbols[i], cur.args_of(i), stochastic_ ? &cur.lineage[i] : nullptr);
@@ -153,10 +161,7 @@ class Deriver {
             if (cut.keep(last.symbols[j])) emit(last.symbols[j], last.args_of(j), lineage_of(last, j), level, 0, sink);
       }
       if (!streamed) {
-        if (static_cast<double>(next.size()) > limits_.held)
-          throw BudgetError("level " + std::to_string(k) + " of the context-sensitive grammar holds " +
-                            count_text(static_cast<double>(next.size())) + " modules, over the limit of " +
-                            count_text(limits_.held) + " (--max-points)");
+        check_held(k, cur, next);
         std::swap(cur, next);
         next.clear();
       }
@@ -169,6 +174,10 @@ class Deriver {
 
  private:
   std::uint64_t lineage_of(const ModuleString& s, std::size_t i) const { return stochastic_ ? s.lineage[i] : 0; }
+  // A written module's lineage: hashed only when a choice will read it.
+  std::uint64_t child(std::uint64_t parent, const Call& c) const {
+    return stochastic_ ? child_lineage(parent, c.salt) : 0;
+  }
 
   double evaluate(const Expression& e, std::span<const double> scope, const Call& c, std::size_t k, const Production* p,
                   int level) const {
@@ -182,10 +191,8 @@ class Deriver {
   }
 
   // The first production of `index` that rewrites module i of s, its parameters bound in scope_ (after the
-  // constants, which scope_ always holds); null if none. `partner` (brackets) is given when productions
-  // have contexts.
-  const Production* match(const RuleIndex& index, const ModuleString& s, const std::vector<std::uint32_t>* partner,
-                          std::size_t i) {
+  // constants, which scope_ always holds); null if none. `near` is given when productions have contexts.
+  const Production* match(const RuleIndex& index, const ModuleString& s, const Neighbours* near, std::size_t i) {
     const std::span<const double> args = s.args_of(i);
     double* params = scope_.data() + k_;
     for (const Production* p : index.by_symbol[s.symbols[i]]) {
@@ -193,8 +200,8 @@ class Deriver {
       std::size_t slot = 0;
       for (const Pattern& m : p->left) slot += m.params.size();
       std::copy(args.begin(), args.end(), params + slot);
-      if (p->context() && !(left_context(*p, s, *partner, i, ignored_, params) &&
-                            right_context(*p, s, *partner, i, ignored_, params + slot + args.size())))
+      if (p->context() && !(left_context(*p, s, *near, i, params) &&
+                            right_context(*p, s, *near, i, ignored_, params + slot + args.size())))
         continue;
       if (holds(*p)) return p;
     }
@@ -242,7 +249,7 @@ class Deriver {
     evaluate_successor(p, succ, level, values);
     std::size_t v = 0;
     for (const Call& c : succ.modules) {
-      write(out, c.symbol, {values.data() + v, c.args.size()}, child_lineage(lineage, c.salt), level, 0, cut);
+      write(out, c.symbol, {values.data() + v, c.args.size()}, child(lineage, c), level, 0, cut);
       v += c.args.size();
     }
     count(succ.modules.size());
@@ -259,8 +266,7 @@ class Deriver {
         evaluate_successor(*p, succ, level, values);
         std::size_t v = 0;
         for (const Call& c : succ.modules) {
-          write(out, c.symbol, {values.data() + v, c.args.size()}, child_lineage(lineage, c.salt), level, depth + 1,
-                cut);
+          write(out, c.symbol, {values.data() + v, c.args.size()}, child(lineage, c), level, depth + 1, cut);
           v += c.args.size();
         }
         count(succ.modules.size());
@@ -268,9 +274,9 @@ class Deriver {
       }
     }
     if (cut != nullptr && !cut->keep(symbol)) return;
-    if (static_cast<double>(out.size()) >= limits_.held)
-      throw BudgetError("level " + std::to_string(level) + " holds more than " + count_text(limits_.held) +
-                        " modules in one successor, over the limit (--max-points)");
+    if (out.size() % 1024 == 0 && held_points(out) > limits_.held)
+      throw BudgetError("level " + std::to_string(level) + ": one successor's decomposition would take more than " +
+                        count_text(limits_.held) + " points' worth of memory, over the limit");
     append(out, symbol, args, stochastic_ ? &lineage : nullptr);
   }
 
@@ -285,7 +291,7 @@ class Deriver {
         evaluate_successor(*p, succ, level, values);
         std::size_t v = 0;
         for (const Call& c : succ.modules) {
-          emit(c.symbol, {values.data() + v, c.args.size()}, child_lineage(lineage, c.salt), level, depth + 1, sink);
+          emit(c.symbol, {values.data() + v, c.args.size()}, child(lineage, c), level, depth + 1, sink);
           v += c.args.size();
         }
         count(succ.modules.size());
@@ -322,10 +328,20 @@ class Deriver {
     progress_.step(done);
   }
 
-  void check_level(int k, int level, std::size_t i, std::size_t n) {
+  void check_level(int k, int level, std::size_t i, const ModuleString& cur, const ModuleString& next) {
     next_check_ = work_ + check_every;
     if (static_cast<double>(work_ + written_) > limits_.work) over_budget();
-    progress_.step((k - 1 + static_cast<double>(i) / static_cast<double>(n)) / level);
+    check_held(k, cur, next);
+    progress_.step((k - 1 + static_cast<double>(i) / static_cast<double>(cur.size())) / level);
+  }
+
+  // The two levels a context-sensitive grammar holds (and their neighbours), in budget points.
+  void check_held(int k, const ModuleString& cur, const ModuleString& next) const {
+    const double points = held_points(cur) + held_points(next) + 8.0 * static_cast<double>(cur.size()) / 16;
+    if (points > limits_.held)
+      throw BudgetError("level " + std::to_string(k) + " of the context-sensitive grammar would hold " +
+                        count_text(static_cast<double>(next.size())) + " modules and more, over the limit of " +
+                        count_text(limits_.held) + " points' worth of memory (raise --max-points)");
   }
 
   const Grammar& g_;
@@ -360,11 +376,15 @@ struct TextSink : ModuleSink {
 std::uint64_t child_lineage(std::uint64_t parent, std::uint64_t salt) { return mix(parent ^ mix(salt)); }
 
 std::size_t choose_option(std::span<const Successor> options, double u) {
+  // Weights taken relative to the largest, so that neither 1e308 + 1e308 overflows nor subnormal ones
+  // lose their ratio.
+  double largest = 0;
+  for (const Successor& o : options) largest = std::max(largest, o.weight);
   double total = 0;
-  for (const Successor& o : options) total += o.weight;
+  for (const Successor& o : options) total += o.weight / largest;
   double below = 0;
   for (std::size_t k = 0; k + 1 < options.size(); ++k) {
-    below += options[k].weight;
+    below += options[k].weight / largest;
     if (u * total < below) return k;
   }
   // The last option with weight, so rounding never picks a zero-weight one.
@@ -389,7 +409,8 @@ std::string module_string_text(const Grammar& g, int level, double max_modules, 
   TextSink sink;
   sink.max_modules = max_modules;
   sink.level = level;
-  rewrite_modules(g, level, sink, ModuleLimits{}, progress);
+  // A string is small: its derivation may hold and do no more than its text could be.
+  rewrite_modules(g, level, sink, {.work = 64 * max_modules, .held = max_modules}, progress);
   return std::move(sink.text);
 }
 

@@ -29,10 +29,11 @@ constexpr std::string_view turns_3d = "&^\\/$";
 struct Heading2 {
   double radians;
   Vec2 direction;
-  explicit Heading2(double degrees) : radians(degrees * degree), direction(polar(radians)) {}
+  // Degrees are reduced first (fmod is exact): a turn of 1e20 degrees is the turn it is, as in 3D.
+  explicit Heading2(double degrees) : radians(std::fmod(degrees, 360.0) * degree), direction(polar(radians)) {}
   Vec2 forward() const { return direction; }
   void yaw(double degrees) {
-    radians += degrees * degree;
+    radians += std::fmod(degrees, 360.0) * degree;
     if (std::abs(radians) > 16) radians = std::remainder(radians, 2 * std::numbers::pi);  // exact
     direction = polar(radians);
   }
@@ -144,10 +145,12 @@ class Turtle : public ModuleSink {
         heading_.level();
         break;
       case '!':
+        if (!a.empty() && !(a[0] >= 0))
+          throw Error("level " + std::to_string(opt_.level) + ": " + module_text(s, a) + " sets a negative line width");
         width_ = a.empty() ? std::max(0.0, width_ - 1) : a[0];
         break;
-      case '\'':
-        color_ = a.empty() ? color_ + 1 : static_cast<std::int32_t>(std::clamp(a[0], -1e9, 1e9));
+      case '\'':  // the nearest whole index
+        color_ = a.empty() ? color_ + 1 : static_cast<std::int32_t>(std::lround(std::clamp(a[0], -1e9, 1e9)));
         break;
       case '{':
         polygon_.push_back({lift(pos_)});
@@ -241,8 +244,15 @@ class Turtle : public ModuleSink {
     if (polygon_.empty()) return;
     std::vector<Vec3> corners = std::move(polygon_.back());
     polygon_.pop_back();
-    if (corners.size() > 1 && corners.back() == corners.front()) corners.pop_back();
+    // A turtle that walks back to where the polygon began arrives a rounding error away: that is the first
+    // corner again, not a corner of its own.
+    double perimeter = 0;
+    for (std::size_t k = 1; k < corners.size(); ++k) perimeter += norm(corners[k] - corners[k - 1]);
+    while (corners.size() > 1 && norm(corners.back() - corners.front()) <= 1e-9 * perimeter) corners.pop_back();
     if (polygons_ == nullptr || corners.size() < 3) return;
+    Vec3 normal{};  // Newell's: zero for corners on one line, which fill nothing
+    for (std::size_t k = 0; k < corners.size(); ++k) normal += cross(corners[k], corners[(k + 1) % corners.size()]);
+    if (!(norm(normal) > 1e-12 * perimeter * perimeter)) return;
     const std::size_t first = triangles_.size();
     try {
       polygon_triangles(corners, triangles_);
@@ -353,7 +363,11 @@ double module_segments(const Grammar& g, int level, double max_points, Progress&
     Compiled c;
     double segments = 0;
     explicit Counter(const Grammar& g) : c(g) {}
-    void module(std::uint8_t s, std::span<const double>) override { segments += c.action[s] == Action::Draw; }
+    int polygons = 0;  // open: steps inside a polygon draw no line
+    void module(std::uint8_t s, std::span<const double>) override {
+      polygons += s == '{' ? 1 : s == '}' && polygons > 0 ? -1 : 0;
+      segments += c.action[s] == Action::Draw && polygons == 0;
+    }
   } counter(g);
   ModuleLimits limits;
   limits.work = modules_per_point * max_points;

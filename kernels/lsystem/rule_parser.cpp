@@ -171,6 +171,8 @@ Production parse_rule(std::string_view text, const std::string& where, std::span
   const std::size_t arrow = find_outside(text, "->");
   if (arrow == npos) throw RuleError("expected '->' between the rule's left side and its successor", text.size());
   std::string_view left_side = text.substr(0, arrow), succ = text.substr(arrow + 2);
+  if (const std::size_t again = find_outside(succ, "->"); again != npos)
+    throw RuleError("a rule has one '->' (between its left side and its successor)", arrow + 2 + again);
   if (const std::size_t colon = find_outside(succ, ":", true); colon != npos) {
     const double w = parse_weight(text, succ.substr(colon + 1));
     succ = succ.substr(0, colon);

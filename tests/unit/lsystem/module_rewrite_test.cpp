@@ -262,3 +262,12 @@ TEST(ModuleRewrite, RunawayDecompositionAndInterpretationAreStopped) {
   d.max_depth = 64;
   EXPECT_THROW(rewrite_modules(d, 0, sink, {.work = 1e12, .held = 1e5}, no_progress()), BudgetError);
 }
+
+TEST(ModuleRewrite, ExtremeWeightsKeepTheirRatio) {
+  // Relative to the largest: neither 1e308 + 1e308 overflowing nor subnormal weights losing their ratio.
+  for (double w : {1e308, 4.9e-324, 1.0}) {
+    const Successor options[] = {{w, {}}, {w, {}}};
+    EXPECT_EQ(choose_option(options, 0.49), 0u) << w;
+    EXPECT_EQ(choose_option(options, 0.51), 1u) << w;
+  }
+}

@@ -208,3 +208,14 @@ TEST(ModuleTurtle3, DimensionFollowsTheSymbols) {
   h.dimension = 2;
   EXPECT_FALSE(draws_in_3d(h));
 }
+
+TEST(ModuleTurtle3, PolygonsClosedByWalkingBackAreNotSlivers) {
+  Grammar g = grammar("{ F + F + F + }", {});  // a triangle walked all the way round
+  g.angle = 120;
+  const Mesh m = module_polygons(g, {.level = 0, .normalize = false}, no_progress());
+  EXPECT_EQ(m.points.size(), 3u);
+  EXPECT_EQ(m.triangles.size(), 1u);
+  Grammar line = grammar("{ . F . F . F . }", {});  // corners on one line fill nothing
+  EXPECT_EQ(module_polygons(line, {.level = 0, .normalize = false}, no_progress()).triangles.size(), 0u);
+  EXPECT_EQ(module_segments(grammar("F{F+F+F}F", {}), 0, 1e6, no_progress()), 2);  // polygon steps draw no line
+}

@@ -1,0 +1,1 @@
+local g = lsystem { axiom = "A(1)", rules = { "A(x) : x -> 1 > 2 -> B" } }
