@@ -31,6 +31,8 @@ struct RuleIndex {
   std::array<std::vector<const Production*>, 256> by_symbol;
   bool context = false;
 
+  std::size_t total = 0;  // productions indexed
+
   bool empty_for(std::uint8_t s) const { return by_symbol[s].empty(); }
 
   explicit RuleIndex(const std::vector<Production>& rules) {
@@ -38,6 +40,7 @@ struct RuleIndex {
       for (const Production& p : rules)
         if (p.context() == with_context) {
           by_symbol[p.pred.symbol].push_back(&p);
+          ++total;
           context = context || with_context;
         }
   }
@@ -129,8 +132,17 @@ class Deriver {
       if (++work_ >= next_check_) check(frames, pos, d);
       const std::uint8_t s = f.symbols[i];
       if (cut.active && s != '[' && s != ']') continue;  // dropped with the rest of its branch
+      if (passes_[s] && !cut.active) {
+        pos[d] = emit_run(run_of(f, i, f.size()), i, sink);
+        work_ += pos[d] - i - 1;
+        continue;
+      }
       if (d < static_cast<std::size_t>(level)) {
         if (const Production* p = match(index_, f, nullptr, i)) {
+          if (d + 1 == static_cast<std::size_t>(level) && decompose_.total == 0) {
+            emit_successor(*p, lineage_of(f, i), level, cut, sink);  // the last level: never held
+            continue;
+          }
           frames[d + 1].clear();
           apply(*p, lineage_of(f, i), static_cast<int>(d) + 1, frames[d + 1], nullptr);
           pos[++d] = 0;
@@ -170,7 +182,14 @@ class Deriver {
       for (std::size_t i = 0; i < cur.size(); ++i) emit(cur.symbols[i], cur.args_of(i), lineage_of(cur, i), 0, 0, sink);
   }
 
-  void interpret(bool on) { interpreting_ = on; }
+  void interpret(bool on) {
+    interpreting_ = on;
+    // The symbols that reach the sink as they are, wherever they are met: no production, no interpretation
+    // when drawing, and not the cut.
+    for (int c = 0; c < 256; ++c)
+      passes_[c] = index_.empty_for(static_cast<std::uint8_t>(c)) && c != '%' &&
+                   (!interpreting_ || interpret_.empty_for(static_cast<std::uint8_t>(c)));
+  }
 
  private:
   std::uint64_t lineage_of(const ModuleString& s, std::size_t i) const { return stochastic_ ? s.lineage[i] : 0; }
@@ -253,6 +272,37 @@ class Deriver {
       v += c.args.size();
     }
     count(succ.modules.size());
+  }
+
+  // Feeds p's successor for a module of this lineage straight to the sink, as the last level's frame would.
+  void emit_successor(const Production& p, std::uint64_t lineage, int level, Cut& cut, ModuleSink& sink) {
+    const Successor& succ = chosen(p, lineage);
+    std::vector<double>& values = values_[0];
+    evaluate_successor(p, succ, level, values);
+    const ModuleRun run{succ.symbols.data(), succ.arg_end.data(), values.data(), 0, succ.symbols.size()};
+    for (std::size_t i = 0; i < run.end;) {
+      const std::uint8_t s = run.symbols[i];
+      if (passes_[s] && !cut.active) {
+        i = emit_run(run, i, sink);
+        continue;
+      }
+      if (!(cut.active && s != '[' && s != ']') && cut.keep(s))
+        emit(s, run.args_of(i), child(lineage, succ.modules[i]), level, 0, sink);
+      ++i;
+    }
+    work_ += run.end;  // read, as from a frame (the loop checks the total)
+    count(run.end);
+  }
+
+  // Feeds the run of modules from i on that go to the sink as they are (no rule, no interpretation, not the
+  // cut) in one call; returns where the run ends.
+  std::size_t emit_run(ModuleRun run, std::size_t i, ModuleSink& sink) {
+    std::size_t j = i + 1;
+    while (j < run.end && passes_[run.symbols[j]]) ++j;
+    run.begin = i;
+    run.end = j;
+    sink.modules(run);
+    return j;
   }
 
   // Appends a module to out, replaced first by its decomposition (recursively, to g.max_depth levels)
@@ -354,6 +404,7 @@ class Deriver {
   std::array<double, max_scope> scope_{};    // the grammar's constants, then the parameters a rule binds
   std::size_t k_ = 0;                        // how many constants
   bool interpreting_ = false;
+  std::array<bool, 256> passes_{};  // see interpret()
   std::size_t work_ = 0, written_ = 0, next_check_ = check_every, next_written_ = check_every;
 };
 

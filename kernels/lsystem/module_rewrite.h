@@ -24,6 +24,11 @@ class ModuleSink {
  public:
   virtual ~ModuleSink() = default;
   virtual void module(std::uint8_t symbol, std::span<const double> args) = 0;
+  // A run of modules, in order: one call for many (a turtle then draws them without a call each). By
+  // default one by one.
+  virtual void modules(const ModuleRun& r) {
+    for (std::size_t i = r.begin; i < r.end; ++i) module(r.symbols[i], r.args_of(i));
+  }
 };
 
 struct ModuleLimits {

@@ -31,6 +31,23 @@ struct ModuleString {
   static constexpr double bytes_per_module(double params) { return 1 + 4 + 8 + 8 * params; }
 };
 
+// Modules [begin, end) of arrays laid out as ModuleString's: a run of a level, or a successor's modules
+// with their evaluated parameters.
+struct ModuleRun {
+  const std::uint8_t* symbols;
+  const std::uint32_t* arg_end;
+  const double* args;
+  std::size_t begin, end;
+
+  std::span<const double> args_of(std::size_t i) const {
+    return {args + (i == 0 ? 0 : arg_end[i - 1]), args + arg_end[i]};
+  }
+};
+
+inline ModuleRun run_of(const ModuleString& s, std::size_t begin, std::size_t end) {
+  return {s.symbols.data(), s.arg_end.data(), s.args.data(), begin, end};
+}
+
 // "A(1.5,2)": a module as ABOP writes it, parameters in the shortest form that reads back exactly.
 std::string module_text(std::uint8_t symbol, std::span<const double> args);
 

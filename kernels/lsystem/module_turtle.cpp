@@ -1,7 +1,10 @@
 #include "kernels/lsystem/module_turtle.h"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string_view>
 #include <vector>
@@ -26,16 +29,31 @@ constexpr std::string_view turns_3d = "&^\\/$";
 
 // The 2D turtle's heading: an angle, so any number of turns leaves no drift (its direction follows it, so
 // a step costs no sine). 3D turns do nothing.
+// Directions of recent headings: a plant turns between a few headings millions of times, and a look-up
+// returns exactly what the sine and cosine would.
+struct DirectionCache {
+  std::array<std::pair<double, Vec2>, 64> entries;
+  DirectionCache() { entries.fill({std::numeric_limits<double>::quiet_NaN(), Vec2{}}); }
+  Vec2 of(double radians) {
+    const auto bits = std::bit_cast<std::uint64_t>(radians);
+    auto& e = entries[(bits ^ (bits >> 29) ^ (bits >> 47)) & 63];
+    if (!(e.first == radians)) e = {radians, polar(radians)};
+    return e.second;
+  }
+};
+
 struct Heading2 {
   double radians;
   Vec2 direction;
+  DirectionCache* cache;
   // Degrees are reduced first (fmod is exact): a turn of 1e20 degrees is the turn it is, as in 3D.
-  explicit Heading2(double degrees) : radians(std::fmod(degrees, 360.0) * degree), direction(polar(radians)) {}
+  Heading2(double degrees, DirectionCache* c)
+      : radians(std::fmod(degrees, 360.0) * degree), direction(polar(radians)), cache(c) {}
   Vec2 forward() const { return direction; }
   void yaw(double degrees) {
     radians += std::fmod(degrees, 360.0) * degree;
     if (std::abs(radians) > 16) radians = std::remainder(radians, 2 * std::numbers::pi);  // exact
-    direction = polar(radians);
+    direction = cache->of(radians);
   }
   void turn_around() { yaw(180); }
   void pitch(double) {}
@@ -47,7 +65,7 @@ struct Heading2 {
 struct Heading3 {
   TurtleFrame3 frame;
   unsigned turns = 0;
-  explicit Heading3(double degrees) : frame(TurtleFrame3::heading(degrees)) {}
+  Heading3(double degrees, DirectionCache*) : frame(TurtleFrame3::heading(degrees)) {}
   Vec3 forward() const { return frame.h; }
   void yaw(double degrees) { turned(), frame.yaw(degrees); }
   void turn_around() { frame.turn_around(); }
@@ -78,7 +96,7 @@ bool writes(const Grammar& g, F wanted) {
 }
 
 template <class V, class Heading>
-class Turtle : public ModuleSink {
+class Turtle final : public ModuleSink {
  public:
   Turtle(const Grammar& g, const TurtleOptions& opt, PolylineT<V>& out, Mesh* polygons)
       : g_(g),
@@ -88,7 +106,7 @@ class Turtle : public ModuleSink {
         polygons_(polygons),
         tree_(writes(g, [](std::uint8_t s) { return s == '['; })),
         style_(writes(g, [](std::uint8_t s) { return s == '!' || s == '\''; })),
-        heading_(g.start_angle(opt.level)) {
+        heading_(g.start_angle(opt.level), &directions_) {
     // '+', '-' and '|' turn by their parameter even where the grammar's angle makes them turn by nothing.
     for (std::uint8_t s : {'+', '-', '|'})
       if (c_.action[s] == Action::None) c_.action[s] = Action::Turn;
@@ -96,6 +114,10 @@ class Turtle : public ModuleSink {
       for (char s : turns_3d)
         if (c_.action[static_cast<std::uint8_t>(s)] == Action::Turn)
           c_.action[static_cast<std::uint8_t>(s)] = Action::None;
+  }
+
+  void modules(const ModuleRun& r) override {
+    for (std::size_t i = r.begin; i < r.end; ++i) Turtle::module(r.symbols[i], r.args_of(i));
   }
 
   void module(std::uint8_t s, std::span<const double> a) override {
@@ -292,6 +314,7 @@ class Turtle : public ModuleSink {
     }
   }
 
+  DirectionCache directions_;  // before heading_, which points to it
   const Grammar& g_;
   Compiled c_;
   const TurtleOptions& opt_;

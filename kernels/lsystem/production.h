@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "kernels/lsystem/expression.h"
@@ -29,6 +30,21 @@ struct Call {
 struct Successor {
   double weight = 1;
   std::vector<Call> modules;
+  // The modules' symbols and where each one's parameters end among all of theirs (ModuleString's layout),
+  // so the last level goes to the turtle without being copied module by module.
+  std::vector<std::uint8_t> symbols;
+  std::vector<std::uint32_t> arg_end;
+
+  void set_modules(std::vector<Call> calls) {
+    modules = std::move(calls);
+    symbols.clear();
+    arg_end.clear();
+    std::uint32_t n = 0;
+    for (const Call& c : modules) {
+      symbols.push_back(c.symbol);
+      arg_end.push_back(n += static_cast<std::uint32_t>(c.args.size()));
+    }
+  }
 };
 
 // left < pred > right : condition -> successors. Names in scope, in slot order: the grammar's constants

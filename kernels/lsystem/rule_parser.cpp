@@ -232,7 +232,7 @@ Production parse_rule(std::string_view text, const std::string& where, std::span
   } else if (has_condition) {
     throw RuleError("expected a condition after ':'", column(text, condition));
   }
-  p.options[0].modules = calls_in(text, succ, names);
+  p.options[0].set_modules(calls_in(text, succ, names));
   return p;
 }
 
