@@ -169,7 +169,18 @@ Production parse_rule(std::string_view text, const std::string& where, std::span
   p.text = std::string(trim(text));
   p.where = where;
   const std::size_t arrow = find_outside(text, "->");
-  if (arrow == npos) throw RuleError("expected '->' between the rule's left side and its successor", text.size());
+  if (arrow == npos) {
+    // An arrow inside parentheses: a '(' before it was never closed.
+    if (const std::size_t raw = text.find("->"); raw != npos) {
+      std::vector<std::size_t> open;
+      for (std::size_t i = 0; i < raw; ++i) {
+        if (text[i] == '(') open.push_back(i);
+        if (text[i] == ')' && !open.empty()) open.pop_back();
+      }
+      if (!open.empty()) throw RuleError("a '(' before '->' is never closed", open.back());
+    }
+    throw RuleError("expected '->' between the rule's left side and its successor", text.size());
+  }
   std::string_view left_side = text.substr(0, arrow), succ = text.substr(arrow + 2);
   if (const std::size_t again = find_outside(succ, "->"); again != npos)
     throw RuleError("a rule has one '->' (between its left side and its successor)", arrow + 2 + again);
@@ -203,6 +214,16 @@ Production parse_rule(std::string_view text, const std::string& where, std::span
     if (find_outside(right, ">") != npos)
       throw RuleError("a rule has at most one '>' (predecessor > right context)",
                       column(text, right) + find_outside(right, ">"));
+  }
+  // ABOP writes "*" for "any": no condition, no context on that side.
+  if (trim(condition) == "*") {
+    condition = {};
+    has_condition = false;
+  }
+  if (trim(left) == "*") left = {};
+  if (trim(right) == "*") {
+    right = {};
+    has_right = false;
   }
   std::vector<std::string> names(constants.begin(), constants.end());
   const std::size_t k = constants.size();

@@ -96,6 +96,14 @@ TEST(RuleParser, ErrorsPointAtTheirColumn) {
   EXPECT_EQ(error_column("A(x) -> F(x) : 1"), std::string::npos);
 }
 
+TEST(RuleParser, AbopStarMeansAny) {
+  const Production p = parse_rule("* < + > * : * -> -", "rule 1");
+  EXPECT_FALSE(p.context());
+  EXPECT_TRUE(p.condition.empty());
+  EXPECT_EQ(parse_rule("A(l) : * -> F(l)", "rule 1").pred.params.size(), 1u);
+  EXPECT_EQ(error_column("B(l) : (l > 0.05 -> F"), 7u);  // the '(' never closed, not a missing '->'
+}
+
 TEST(RuleParser, CaretSitsUnderTheColumn) {
   EXPECT_EQ(caret_lines("A(x) -> F(y)", 10), "  A(x) -> F(y)\n            ^");
   const std::string long_text = std::string(300, 'F') + "(";
