@@ -76,13 +76,6 @@ double held_points(const ModuleString& s) {
          16;
 }
 
-void append(ModuleString& out, std::uint8_t s, std::span<const double> args, const std::uint64_t* lineage) {
-  out.symbols.push_back(s);
-  for (double a : args) out.args.push_back(a);  // most modules have 0 or 1: cheaper than a range insert
-  out.arg_end.push_back(static_cast<std::uint32_t>(out.args.size()));
-  if (lineage != nullptr) out.lineage.push_back(*lineage);
-}
-
 class Deriver {
  public:
   Deriver(const Grammar& g, const ModuleLimits& limits, Progress& progress)
@@ -167,7 +160,7 @@ class Deriver {
         if (const Production* p = match(index_, cur, &near, i))
           apply(*p, lineage_of(cur, i), k, out, streamed ? nullptr : &cut);
         else if (streamed || cut.keep(cur.symbols[i]))
-          append(out, cur.symbols[i], cur.args_of(i), stochastic_ ? &cur.lineage[i] : nullptr);
+          out.push(cur.symbols[i], cur.args_of(i), stochastic_ ? &cur.lineage[i] : nullptr);
         if (streamed)
           for (std::size_t j = 0; j < last.size(); ++j)
             if (cut.keep(last.symbols[j])) emit(last.symbols[j], last.args_of(j), lineage_of(last, j), level, 0, sink);
@@ -327,7 +320,7 @@ class Deriver {
     if (out.size() % 1024 == 0 && held_points(out) > limits_.held)
       throw BudgetError("level " + std::to_string(level) + ": one successor's decomposition would take more than " +
                         count_text(limits_.held) + " points' worth of memory, over the limit");
-    append(out, symbol, args, stochastic_ ? &lineage : nullptr);
+    out.push(symbol, args, stochastic_ ? &lineage : nullptr);
   }
 
   // Feeds a module of the level to the sink, replaced first by its interpretation (recursively, to

@@ -21,6 +21,13 @@ struct ModuleString {
   std::span<const double> args_of(std::size_t i) const {
     return {args.data() + arg_begin(i), args.data() + arg_end[i]};
   }
+  // Appends a module (its lineage too when given).
+  void push(std::uint8_t s, std::span<const double> a, const std::uint64_t* l = nullptr) {
+    symbols.push_back(s);
+    for (double x : a) args.push_back(x);  // most modules have 0 or 1: cheaper than a range insert
+    arg_end.push_back(static_cast<std::uint32_t>(args.size()));
+    if (l != nullptr) lineage.push_back(*l);
+  }
   void clear() {
     symbols.clear();
     arg_end.clear();
@@ -46,6 +53,16 @@ struct ModuleRun {
 
 inline ModuleRun run_of(const ModuleString& s, std::size_t begin, std::size_t end) {
   return {s.symbols.data(), s.arg_end.data(), s.args.data(), begin, end};
+}
+
+// Appends a run to `out` in three block copies (no lineage).
+inline void push_run(ModuleString& out, const ModuleRun& r) {
+  if (r.end <= r.begin) return;
+  const std::uint32_t first = r.begin == 0 ? 0 : r.arg_end[r.begin - 1], last = r.arg_end[r.end - 1];
+  const auto base = static_cast<std::uint32_t>(out.args.size());
+  out.symbols.insert(out.symbols.end(), r.symbols + r.begin, r.symbols + r.end);
+  out.args.insert(out.args.end(), r.args + first, r.args + last);
+  for (std::size_t i = r.begin; i < r.end; ++i) out.arg_end.push_back(base + (r.arg_end[i] - first));
 }
 
 // "A(1.5,2)": a module as ABOP writes it, parameters in the shortest form that reads back exactly.

@@ -1,5 +1,7 @@
 #include "kernels/lsystem/module_turtle.h"
 
+#include <tbb/global_control.h>
+
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -14,6 +16,7 @@
 #include "kernels/geom/polygon_triangles.h"
 #include "kernels/geom/similarity3.h"
 #include "kernels/lsystem/compiled_grammar.h"
+#include "kernels/lsystem/module_pipe.h"
 #include "kernels/lsystem/module_rewrite.h"
 #include "kernels/lsystem/turtle_frame3.h"
 
@@ -348,7 +351,11 @@ PolylineT<V> draw(const Grammar& g, const TurtleOptions& opt, Mesh* polygons, Pr
   out.point_fields.set(uniform_int("level", opt.level));
   progress.start("L-system");
   Turtle<V, Heading> turtle(g, opt, out, polygons);
-  rewrite_modules(g, opt.level, turtle, limits_for(opt), progress, true);
+  // With a second core, the derivation runs beside the turtle (the same modules, in the same order).
+  if (tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) >= 2)
+    rewrite_modules_piped(g, opt.level, turtle, limits_for(opt), progress, true);
+  else
+    rewrite_modules(g, opt.level, turtle, limits_for(opt), progress, true);
   turtle.finish();
   progress.fraction(1);
   if (!out.finite() || (polygons != nullptr && !polygons->finite()))
