@@ -55,9 +55,12 @@ inline ModuleRun run_of(const ModuleString& s, std::size_t begin, std::size_t en
   return {s.symbols.data(), s.arg_end.data(), s.args.data(), begin, end};
 }
 
-// Appends a run to `out` in three block copies (no lineage).
+// Appends a run to `out` (no lineage): a short one module by module, a long one in three block copies.
 inline void push_run(ModuleString& out, const ModuleRun& r) {
-  if (r.end <= r.begin) return;
+  if (r.end <= r.begin + 8) {
+    for (std::size_t i = r.begin; i < r.end; ++i) out.push(r.symbols[i], r.args_of(i));
+    return;
+  }
   const std::uint32_t first = r.begin == 0 ? 0 : r.arg_end[r.begin - 1], last = r.arg_end[r.end - 1];
   const auto base = static_cast<std::uint32_t>(out.args.size());
   out.symbols.insert(out.symbols.end(), r.symbols + r.begin, r.symbols + r.end);
