@@ -9,6 +9,8 @@
 #include "kernels/geom/count_text.h"
 #include "kernels/geom/error.h"
 #include "kernels/lsystem/context_match.h"
+#include "kernels/lsystem/cut.h"
+#include "kernels/lsystem/rule_index.h"
 
 namespace selfsim::lsystem {
 
@@ -17,57 +19,6 @@ namespace {
 constexpr std::size_t check_every = std::size_t{1} << 16;
 // rule_parser.cpp's bound on the parameters a rule binds, and the binding's on a grammar's constants.
 constexpr std::size_t max_scope = 48 + max_constants;
-
-std::uint64_t mix(std::uint64_t z) {  // the splitmix64 finaliser: every input bit moves every output bit
-  z += 0x9e3779b97f4a7c15ULL;
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
-
-// The productions that may rewrite each symbol, in the order they are tried: those with a context first,
-// then the others, each group in the order written.
-struct RuleIndex {
-  std::array<std::vector<const Production*>, 256> by_symbol;
-  bool context = false;
-
-  std::size_t total = 0;  // productions indexed
-
-  bool empty_for(std::uint8_t s) const { return by_symbol[s].empty(); }
-
-  explicit RuleIndex(const std::vector<Production>& rules) {
-    for (bool with_context : {true, false})
-      for (const Production& p : rules)
-        if (p.context() == with_context) {
-          by_symbol[p.pred.symbol].push_back(&p);
-          ++total;
-          context = context || with_context;
-        }
-  }
-};
-
-// '%' cuts the rest of its branch (ABOP 1.10): modules written after it are dropped up to the ']' that
-// closes the branch it is in.
-struct Cut {
-  bool active = false;
-  int depth = 0;
-
-  // Whether a module of symbol s is kept (and updates the state).
-  bool keep(std::uint8_t s) {
-    if (!active) {
-      if (s != '%') return true;
-      active = true;
-      depth = 0;
-      return false;
-    }
-    if (s == '[') ++depth;
-    if (s == ']' && depth-- == 0) {
-      active = false;
-      return true;
-    }
-    return false;
-  }
-};
 
 // The memory a level takes, in budget points (16 bytes): what its arrays have reserved.
 double held_points(const ModuleString& s) {
@@ -96,7 +47,7 @@ class Deriver {
 
   ModuleString axiom() {
     ModuleString s;
-    const std::uint64_t root = mix(g_.seed);
+    const std::uint64_t root = root_lineage(g_.seed);
     Cut cut;
     for (const Call& c : g_.start) {
       double args[max_scope];
@@ -242,7 +193,7 @@ class Deriver {
   // The successor p chooses for a module of this lineage (its parameters bound in scope_).
   const Successor& chosen(const Production& p, std::uint64_t lineage) const {
     if (p.options.size() == 1) return p.options[0];
-    return p.options[choose_option(p.options, static_cast<double>(lineage >> 11) * 0x1.0p-53)];
+    return p.options[choose_option(p.options, choice_point(lineage))];
   }
 
   // Evaluates the successor's parameters into `values` (the modules' parameters, in order), before any
@@ -416,26 +367,6 @@ struct TextSink : ModuleSink {
 };
 
 }  // namespace
-
-std::uint64_t child_lineage(std::uint64_t parent, std::uint64_t salt) { return mix(parent ^ mix(salt)); }
-
-std::size_t choose_option(std::span<const Successor> options, double u) {
-  // Weights taken relative to the largest, so that neither 1e308 + 1e308 overflows nor subnormal ones
-  // lose their ratio.
-  double largest = 0;
-  for (const Successor& o : options) largest = std::max(largest, o.weight);
-  double total = 0;
-  for (const Successor& o : options) total += o.weight / largest;
-  double below = 0;
-  for (std::size_t k = 0; k + 1 < options.size(); ++k) {
-    below += options[k].weight / largest;
-    if (u * total < below) return k;
-  }
-  // The last option with weight, so rounding never picks a zero-weight one.
-  std::size_t k = options.size() - 1;
-  while (k > 0 && options[k].weight == 0) --k;
-  return k;
-}
 
 void rewrite_modules(const Grammar& g, int level, ModuleSink& sink, const ModuleLimits& limits, Progress& progress,
                      bool interpret) {

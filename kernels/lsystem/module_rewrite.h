@@ -16,6 +16,7 @@
 #include "kernels/geom/progress.h"
 #include "kernels/lsystem/grammar.h"
 #include "kernels/lsystem/module_string.h"
+#include "kernels/lsystem/stochastic_choice.h"
 
 namespace selfsim::lsystem {
 
@@ -47,10 +48,5 @@ void rewrite_modules(const Grammar& g, int level, ModuleSink& sink, const Module
 // The level as ABOP text, modules with their parameters ("F(1)[+(30)A(0.5)]"); refuses one longer than
 // max_modules.
 std::string module_string_text(const Grammar& g, int level, double max_modules, Progress& progress);
-
-// The option that the choice u in [0, 1) picks, in proportion to the weights (not all zero).
-std::size_t choose_option(std::span<const Successor> options, double u);
-// A child module's lineage from its parent's and its salt (symbol and ordinal in the successor).
-std::uint64_t child_lineage(std::uint64_t parent, std::uint64_t salt);
 
 }  // namespace selfsim::lsystem

@@ -8,6 +8,7 @@
 
 #include "kernels/geom/budget.h"
 #include "kernels/lsystem/rule_parser.h"
+#include "module_grammar.h"
 #include "table1.h"
 
 using namespace selfsim;
@@ -16,11 +17,7 @@ using namespace selfsim::lsystem;
 namespace {
 
 Grammar grammar(const std::string& axiom, const std::vector<std::string>& rules) {
-  Grammar g;
-  g.axiom = axiom;
-  g.start = parse_calls(axiom, {});
-  for (const std::string& r : rules) g.productions.push_back(parse_rule(r, "rule 1"));
-  return g;
+  return test::module_grammar(axiom, rules);
 }
 
 Polyline at(const Grammar& g, int level, bool normalize = true) {
