@@ -27,6 +27,30 @@ double held_points(const ModuleString& s) {
          16;
 }
 
+// A level's successor on the depth-first stack: read in place from its production (the symbols and
+// layout the Successor keeps, the parameters as evaluated), or held when decomposition rewrote it.
+struct Frame {
+  ModuleString held;
+  std::vector<double> values;
+  const Successor* succ = nullptr;  // null: held
+  std::uint64_t parent = 0;         // the rewritten module's lineage (stochastic grammars)
+  ModuleRun run{};
+
+  void hold() {
+    succ = nullptr;
+    run = run_of(held, 0, held.size());
+  }
+  void view(const Successor& s, std::uint64_t lineage) {
+    succ = &s;
+    parent = lineage;
+    run = {s.symbols.data(), s.arg_end.data(), values.data(), 0, s.symbols.size()};
+  }
+  std::uint64_t lineage(std::size_t i, bool stochastic) const {
+    if (!stochastic) return 0;
+    return succ == nullptr ? held.lineage[i] : child_lineage(parent, succ->modules[i].salt);
+  }
+};
+
 class Deriver {
  public:
   Deriver(const Grammar& g, const ModuleLimits& limits, Progress& progress)
@@ -60,40 +84,53 @@ class Deriver {
 
   // Context-free grammars: depth-first, one evaluated successor per level.
   void depth_first(int level, ModuleSink& sink) {
-    std::vector<ModuleString> frames(static_cast<std::size_t>(level) + 1);
+    std::vector<Frame> frames(static_cast<std::size_t>(level) + 1);
     std::vector<std::size_t> pos(frames.size(), 0);
-    frames[0] = axiom();
+    frames[0].held = axiom();
+    frames[0].hold();
     Cut cut;
     std::size_t d = 0;
     while (true) {
-      ModuleString& f = frames[d];
-      if (pos[d] == f.size()) {
+      const Frame& f = frames[d];
+      const ModuleRun& run = f.run;
+      if (pos[d] == run.end) {
         if (d == 0) break;
         --d;
         continue;
       }
       const std::size_t i = pos[d]++;
       if (++work_ >= next_check_) check(frames, pos, d);
-      const std::uint8_t s = f.symbols[i];
+      const std::uint8_t s = run.symbols[i];
       if (cut.active && s != '[' && s != ']') continue;  // dropped with the rest of its branch
-      if (passes_[s] && !cut.active) {
-        pos[d] = emit_run(run_of(f, i, f.size()), i, sink);
+      const std::array<bool, 256>& passes = d == static_cast<std::size_t>(level) ? final_ : passes_;
+      if (passes[s] && !cut.active) {
+        pos[d] = emit_run(run, i, sink, passes);
         work_ += pos[d] - i - 1;
         continue;
       }
       if (d < static_cast<std::size_t>(level)) {
-        if (const Production* p = match(index_, f, nullptr, i)) {
+        if (const Production* p = match(index_, s, run.args_of(i))) {
+          const std::uint64_t lineage = f.lineage(i, stochastic_);
           if (d + 1 == static_cast<std::size_t>(level) && decompose_.total == 0) {
-            emit_successor(*p, lineage_of(f, i), level, cut, sink);  // the last level: never held
+            emit_successor(*p, lineage, level, cut, sink);  // the last level: never held
             continue;
           }
-          frames[d + 1].clear();
-          apply(*p, lineage_of(f, i), static_cast<int>(d) + 1, frames[d + 1], nullptr);
-          pos[++d] = 0;
+          Frame& next = frames[++d];
+          pos[d] = 0;
+          if (decompose_.total == 0) {  // the successor read in place, with its evaluated parameters
+            const Successor& succ = chosen(*p, lineage);
+            evaluate_successor(*p, succ, static_cast<int>(d), next.values);
+            next.view(succ, lineage);
+            count(succ.modules.size());
+          } else {
+            next.held.clear();
+            apply(*p, lineage, static_cast<int>(d), next.held, nullptr);
+            next.hold();
+          }
           continue;
         }
       }
-      if (cut.keep(s)) emit(s, f.args_of(i), lineage_of(f, i), level, 0, sink);
+      if (cut.keep(s)) emit(s, run.args_of(i), f.lineage(i, stochastic_), level, 0, sink);
     }
   }
 
@@ -129,10 +166,11 @@ class Deriver {
   void interpret(bool on) {
     interpreting_ = on;
     // The symbols that reach the sink as they are, wherever they are met: no production, no interpretation
-    // when drawing, and not the cut.
-    for (int c = 0; c < 256; ++c)
-      passes_[c] = index_.empty_for(static_cast<std::uint8_t>(c)) && c != '%' &&
-                   (!interpreting_ || interpret_.empty_for(static_cast<std::uint8_t>(c)));
+    // when drawing, and not the cut; on the last level, any without interpretation but the cut.
+    for (int c = 0; c < 256; ++c) {
+      final_[c] = c != '%' && (!interpreting_ || interpret_.empty_for(static_cast<std::uint8_t>(c)));
+      passes_[c] = final_[c] && index_.empty_for(static_cast<std::uint8_t>(c));
+    }
   }
 
  private:
@@ -226,8 +264,8 @@ class Deriver {
     const ModuleRun run{succ.symbols.data(), succ.arg_end.data(), values.data(), 0, succ.symbols.size()};
     for (std::size_t i = 0; i < run.end;) {
       const std::uint8_t s = run.symbols[i];
-      if (passes_[s] && !cut.active) {
-        i = emit_run(run, i, sink);
+      if (final_[s] && !cut.active) {
+        i = emit_run(run, i, sink, final_);
         continue;
       }
       if (!(cut.active && s != '[' && s != ']') && cut.keep(s))
@@ -238,11 +276,11 @@ class Deriver {
     count(run.end);
   }
 
-  // Feeds the run of modules from i on that go to the sink as they are (no rule, no interpretation, not the
-  // cut) in one call; returns where the run ends.
-  std::size_t emit_run(ModuleRun run, std::size_t i, ModuleSink& sink) {
+  // Feeds the run of modules from i on that go to the sink as they are (`passes`: passes_ or final_) in one
+  // call; returns where the run ends.
+  std::size_t emit_run(ModuleRun run, std::size_t i, ModuleSink& sink, const std::array<bool, 256>& passes) {
     std::size_t j = i + 1;
-    while (j < run.end && passes_[run.symbols[j]]) ++j;
+    while (j < run.end && passes[run.symbols[j]]) ++j;
     run.begin = i;
     run.end = j;
     sink.modules(run);
@@ -309,13 +347,13 @@ class Deriver {
                       " modules, over the limit (64 x --max-points)");
   }
 
-  void check(const std::vector<ModuleString>& frames, const std::vector<std::size_t>& pos, std::size_t d) {
+  void check(const std::vector<Frame>& frames, const std::vector<std::size_t>& pos, std::size_t d) {
     next_check_ = work_ + check_every;
     if (static_cast<double>(work_ + written_) > limits_.work) over_budget();
     // Done so far: the finished share of each level's successor, nested.
     double done = 0, scale = 1;
     for (std::size_t k = 0; k <= d && scale > 1e-12; ++k) {
-      const double n = static_cast<double>(frames[k].size());
+      const double n = static_cast<double>(frames[k].run.end);
       done += scale * (static_cast<double>(pos[k]) - 1) / n;
       scale /= n;
     }
@@ -349,6 +387,7 @@ class Deriver {
   std::size_t k_ = 0;                        // how many constants
   bool interpreting_ = false;
   std::array<bool, 256> passes_{};  // see interpret()
+  std::array<bool, 256> final_{};   // the same on the last level, where productions no longer apply
   std::size_t work_ = 0, written_ = 0, next_check_ = check_every, next_written_ = check_every;
 };
 
