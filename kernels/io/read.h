@@ -19,7 +19,8 @@ Dataset read_dataset(const std::filesystem::path& file);
 Dataset read_dataset(const std::filesystem::path& file, const std::filesystem::path& shown);
 
 // Format-specific readers.
-// .vtp (PolyData) or .vtu (unstructured grid) through VTK; see vtk_read.cpp for how hostile files are handled.
+// .vtp (PolyData) or .vtu (unstructured grid) through VTK (a plugin, plugin.h); see
+// kernels/plugins/vtk/vtk_read.cpp for how hostile files are handled.
 Dataset read_vtk(const std::filesystem::path& file, bool unstructured);
 // .stl, .obj or .ply (ext, lower case with the dot) through selfsim's own strict readers (mesh_readers.h).
 Dataset read_mesh_file(const std::filesystem::path& file, const std::string& ext);

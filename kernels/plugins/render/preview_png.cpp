@@ -40,9 +40,9 @@
 #include "kernels/io/dataset_pipe.h"
 #include "kernels/io/natural_field.h"
 #include "kernels/io/output_file.h"
-#include "kernels/io/preview_scene.h"
 #include "kernels/io/read_error.h"
 #include "kernels/io/vtk_error_text.h"
+#include "kernels/plugins/render/preview_scene.h"
 
 // VTK's rendering classes are abstract until their OpenGL implementations register with the object
 // factory. VTK's CMake does that through vtk_module_autoinit; these lines do it in the one file that

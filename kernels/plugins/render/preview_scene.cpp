@@ -1,4 +1,4 @@
-#include "kernels/io/preview_scene.h"
+#include "kernels/plugins/render/preview_scene.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
