@@ -5,10 +5,10 @@
 #include <string>
 
 #include "kernels/develop/level_stack.h"
-#include "kernels/develop/thicken.h"
 #include "kernels/develop/tile_classes.h"
 #include "kernels/geom/check.h"
 #include "kernels/geom/mesh_intersections.h"
+#include "kernels/print/thicken.h"
 
 namespace selfsim::develop {
 
@@ -247,7 +247,7 @@ Mesh develop_surface(std::span<const Polyline* const> given, const DevelopOption
     throw Error("option 'thickness' gives sheets up to " + number_text(*std::max_element(t.begin(), t.end())) +
                 " apart, more than 1e6 times the surface's size " + number_text(size));
   ProgressStage thick(progress, built, 0.8);
-  Mesh solid = thicken(m, thick);
+  Mesh solid = print::thicken(m, thick);
   for (Vec3& p : solid.points) p = p + back;
   solid = scaled(std::move(solid), levels, opt, scaled_by);
   if (opt.check) {

@@ -1,9 +1,12 @@
 #include "kernels/geom/mesh_check.h"
 
 #include <algorithm>
+#include <map>
 #include <numeric>
 #include <span>
+#include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "kernels/geom/cancellable_sort.h"
@@ -123,6 +126,30 @@ MeshTopology mesh_topology(const Mesh& m, Progress& progress) {
     }
   }
   return t;
+}
+
+std::string first_open_edge(const Mesh& m) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::size_t>> edges;  // (low, high) -> triangles
+  for (std::size_t t = 0; t < m.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = m.triangles[t][k], b = m.triangles[t][(k + 1) % 3];
+      edges[{std::min(a, b), std::max(a, b)}].push_back(t);
+    }
+  for (std::size_t t = 0; t < m.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = m.triangles[t][k], b = m.triangles[t][(k + 1) % 3];
+      const std::vector<std::size_t>& owners = edges[{std::min(a, b), std::max(a, b)}];
+      const std::string edge = "its edge from point " + std::to_string(a + 1) + " to point " + std::to_string(b + 1) +
+                               " (in triangle " + std::to_string(t + 1) + ")";
+      if (owners.size() == 1) return edge + " has no other triangle";
+      if (owners.size() > 2) return edge + " has " + std::to_string(owners.size()) + " triangles";
+      const std::size_t other = owners[0] == t ? owners[1] : owners[0];
+      for (int j = 0; j < 3; ++j)
+        if (m.triangles[other][j] == a && m.triangles[other][(j + 1) % 3] == b)
+          return edge + " runs the same way in triangle " + std::to_string(other + 1) +
+                 " (the triangles face opposite ways)";
+    }
+  return "";
 }
 
 }  // namespace selfsim

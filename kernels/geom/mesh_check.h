@@ -33,6 +33,11 @@ struct MeshTopology {
   bool closed() const { return manifold() && boundary_edges == 0 && faces > 0; }
 };
 
+// The first edge of m not shared by exactly two triangles running opposite ways, as a phrase for messages
+// ("its edge from point 3 to point 7 (in triangle 2) has no other triangle"); empty when there is none.
+// Points and triangles count from 1.
+std::string first_open_edge(const Mesh& m);
+
 // The topology of m. Points and faces in first_problem count from 1. O(F log F); looks for a stop (throws
 // Cancelled) as it sorts and every 65,536 faces.
 MeshTopology mesh_topology(const Mesh& m, Progress& progress = no_progress());

@@ -26,10 +26,13 @@ std::string distance_vdb(const Mesh& m, bool closed, double voxel, const std::st
   return openvdb().distance_vdb(m, closed, voxel, name, budget, progress);
 }
 
-WallGrid::WallGrid(const Volume& v, double voxel, double depth, const PointBudget& budget, Progress& progress)
-    : WallGrid(openvdb().wall_grid(v, voxel, depth, budget, progress)) {}
+WallGrid::WallGrid(const Volume& v, double voxel, double depth, const PointBudget& budget, Progress& progress,
+                   double outside)
+    : WallGrid(openvdb().wall_grid(v, voxel, depth, budget, progress, outside)) {}
 
-double WallGrid::size(const Volume& v, double voxel, double depth) { return openvdb().wall_grid_size(v, voxel, depth); }
+double WallGrid::size(const Volume& v, double voxel, double depth, double outside) {
+  return openvdb().wall_grid_size(v, voxel, depth, outside);
+}
 
 void WallGrid::clearances(std::span<const Vec3> points, std::span<double> out) const {
   openvdb().wall_clearances(*this, points, out);

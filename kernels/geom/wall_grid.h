@@ -28,12 +28,14 @@ class WallGrid {
   static constexpr double slope = 1.7320508075688772;
 
   // The walls of v at `voxel`, resolved at least `depth` inside them (a point deeper reads as deeper than
-  // `depth`, not as its distance). A volume read from a .vdb level set (Volume::samples) is measured on that
-  // grid, at its own voxel and lattice, whatever `voxel` says. Throws BudgetError over the budget (size()),
-  // Error as volume_boundary does for a voxel size it refuses.
-  WallGrid(const Volume& v, double voxel, double depth, const PointBudget& budget, Progress& progress);
+  // `depth`, not as its distance) and `outside` outside them (at least 3 voxels). A volume read from a .vdb
+  // level set (Volume::samples) is measured on that grid, at its own voxel and lattice, whatever `voxel`
+  // says. Throws BudgetError over the budget (size()), Error as volume_boundary does for a voxel size it
+  // refuses.
+  WallGrid(const Volume& v, double voxel, double depth, const PointBudget& budget, Progress& progress,
+           double outside = 0);
   // Budget points the grid takes to build and hold.
-  static double size(const Volume& v, double voxel, double depth);
+  static double size(const Volume& v, double voxel, double depth, double outside = 0);
 
   // Each point's interpolated distance inside the walls (negative outside), in this view's coordinates.
   // Safe to call from several threads at once.

@@ -146,7 +146,10 @@ Mesh exact_boundary(const Volume& v, double voxel) {
 }
 
 // A mesh's level set (closed) or unsigned distance (open), in frame f with voxel 1, `band` voxels either side.
-Grid::Ptr mesh_grid(const Mesh& m, bool closed, const Frame& f, Interrupter& interrupt, float band = 3) {
+// m's distance grid in frame f: a level set `band` voxels to each side (or `inside` voxels inside, when given),
+// or for an open mesh its unsigned distance.
+Grid::Ptr mesh_grid(const Mesh& m, bool closed, const Frame& f, Interrupter& interrupt, float band = 3,
+                    float inside = 0) {
   std::vector<openvdb::Vec3s> points;
   points.reserve(m.points.size());
   for (Vec3 p : m.points) points.push_back(f.local(p));
@@ -154,9 +157,11 @@ Grid::Ptr mesh_grid(const Mesh& m, bool closed, const Frame& f, Interrupter& int
   triangles.reserve(m.triangles.size());
   for (const Triangle& t : m.triangles) triangles.emplace_back(t[0], t[1], t[2]);
   const auto unit = openvdb::math::Transform::createLinearTransform(1.0);
-  Grid::Ptr g = closed
-                    ? openvdb::tools::meshToLevelSet<Grid>(interrupt, *unit, points, triangles, band)
-                    : openvdb::tools::meshToUnsignedDistanceField<Grid>(interrupt, *unit, points, triangles, {}, band);
+  Grid::Ptr g =
+      !closed ? openvdb::tools::meshToUnsignedDistanceField<Grid>(interrupt, *unit, points, triangles, {}, band)
+      : inside > 0
+          ? openvdb::tools::meshToSignedDistanceField<Grid>(interrupt, *unit, points, triangles, {}, band, inside)
+          : openvdb::tools::meshToLevelSet<Grid>(interrupt, *unit, points, triangles, band);
   if (interrupt.progress.cancelled()) throw Cancelled();
   return g;
 }
@@ -338,8 +343,10 @@ struct WallGrid::Data {
 
 namespace {
 
-// Voxels of the band inside the walls: the depth asked for and two more.
-float inside_band(double voxel, double depth) { return static_cast<float>(std::ceil(depth / voxel) + 2); }
+// Voxels of the band inside (or outside) the walls: the depth asked for and two more.
+float band(double voxel, double depth) { return static_cast<float>(std::ceil(depth / voxel) + 2); }
+// Outside: at least the 3 voxels a level set keeps.
+float outside_band(double voxel, double outside) { return std::max(3.0f, band(voxel, outside)); }
 
 // Budget points of the tree a .vdb file's voxels make: OpenVDB's nodes (4096, 128 and 8 voxels wide, about
 // 270 KB, 34 KB and 2 KB each) for every cell of those widths a voxel falls in, so that a crafted file
@@ -358,14 +365,14 @@ double samples_size(const GridSamples& s) {
 
 }  // namespace
 
-double WallGrid::size(const Volume& v, double voxel, double depth) {
+double WallGrid::size(const Volume& v, double voxel, double depth, double outside) {
   if (v.samples) voxel = v.samples->voxel;
   const Frame f = frame_for(v.bbox(), voxel);
   std::vector<Vec3> corners;
   part_corners(v, corners);
-  // The parts' narrow bands (7 voxels across) or the file's voxels, and the rebuilt band (3 outside, the
-  // depth inside).
-  return tree_size(corners, parts_area(v), f, 7 + 4 + inside_band(voxel, depth)) +
+  // The parts' narrow bands (7 voxels across) or the file's voxels, and the rebuilt band (the depth inside,
+  // and outside 3 voxels or more).
+  return tree_size(corners, parts_area(v), f, 7 + 1 + outside_band(voxel, outside) + band(voxel, depth)) +
          (v.samples ? samples_size(*v.samples) : 0);
 }
 
@@ -386,10 +393,11 @@ Grid::Ptr samples_grid(const GridSamples& s) {
 
 }  // namespace
 
-WallGrid::WallGrid(const Volume& v, double voxel, double depth, const PointBudget& budget, Progress& progress) {
+WallGrid::WallGrid(const Volume& v, double voxel, double depth, const PointBudget& budget, Progress& progress,
+                   double outside) {
   if (v.samples) voxel = v.samples->voxel;  // the file's own lattice
   const Frame f = v.samples ? Frame{v.samples->origin, voxel} : frame_for(v.bbox(), voxel);
-  check_budget(size(v, voxel, depth), budget,
+  check_budget(size(v, voxel, depth, outside), budget,
                "the region's distance grid at voxel size " + number_text(voxel) + " (set a larger 'voxel')");
   initialise_openvdb();
   Interrupter interrupt{progress};
@@ -399,9 +407,13 @@ WallGrid::WallGrid(const Volume& v, double voxel, double depth, const PointBudge
   // its zero surface measured again (levelSetRebuild): the distance to the region's own walls, deep inside
   // it. The combined bands alone read a union's parts' distances, so a wall where two parts touch.
   data->grid = openvdb_call([&] {
+    // A mesh's distances are measured from its triangles directly, as deep as asked.
+    if (!v.samples && v.kind == Volume::Kind::mesh)
+      return mesh_grid(*v.mesh, true, f, interrupt, outside_band(voxel, outside), band(voxel, depth));
     const Grid::Ptr combined = v.samples ? samples_grid(*v.samples) : volume_level_set(v, f, interrupt);
     if (progress.cancelled()) throw Cancelled();
-    return openvdb::tools::levelSetRebuild(*combined, 0.0f, 3.0f, inside_band(voxel, depth), nullptr, &interrupt);
+    return openvdb::tools::levelSetRebuild(*combined, 0.0f, outside_band(voxel, outside), band(voxel, depth), nullptr,
+                                           &interrupt);
   });
   if (progress.cancelled()) throw Cancelled();
   data_ = std::move(data);

@@ -17,8 +17,8 @@ struct OpenVdbTable {
   double (*boundary_size)(const Volume&, double);
   Mesh (*volume_boundary)(const Volume&, double, const PointBudget&, Progress&);
   std::string (*distance_vdb)(const Mesh&, bool, double, const std::string&, const PointBudget&, Progress&);
-  WallGrid (*wall_grid)(const Volume&, double, double, const PointBudget&, Progress&);
-  double (*wall_grid_size)(const Volume&, double, double);
+  WallGrid (*wall_grid)(const Volume&, double, double, const PointBudget&, Progress&, double);
+  double (*wall_grid_size)(const Volume&, double, double, double);
   void (*wall_clearances)(const WallGrid&, std::span<const Vec3>, std::span<double>);
   double (*wall_voxel)(const WallGrid&);
   std::vector<io::VdbGridInfo> (*read_vdb_info)(const std::filesystem::path&);

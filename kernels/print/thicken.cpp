@@ -1,4 +1,4 @@
-#include "kernels/develop/thicken.h"
+#include "kernels/print/thicken.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,8 +9,9 @@
 #include "kernels/geom/cancellable_sort.h"
 #include "kernels/geom/error.h"
 #include "kernels/geom/mesh_check.h"
+#include "kernels/geom/point_normals.h"
 
-namespace selfsim::develop {
+namespace selfsim::print {
 
 namespace {
 
@@ -61,12 +62,7 @@ Mesh thicken(const Mesh& m, Progress& progress) {
   auto stop = [&](std::size_t i) {
     if ((i & 0xffff) == 0xffff && progress.cancelled()) throw Cancelled();
   };
-  std::vector<Vec3> normal(n, Vec3{});
-  for (std::size_t f = 0; f < m.faces(); ++f) {
-    stop(f);
-    const Vec3 a = area_normal(m, m.triangles[f]);
-    for (std::uint32_t v : m.triangles[f]) normal[v] += a;
-  }
+  const std::vector<Vec3> normal = area_normals(m, progress);
   Mesh out;
   out.points.resize(2 * n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -116,4 +112,4 @@ Mesh thicken(const Mesh& m, Progress& progress) {
   return out;
 }
 
-}  // namespace selfsim::develop
+}  // namespace selfsim::print

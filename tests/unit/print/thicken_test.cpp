@@ -1,6 +1,6 @@
 // Thickening: a closed, consistently oriented manifold (a disk gives a sphere, an annulus a torus), the two
 // sheets half the thickness away along the normal, fields on both.
-#include "kernels/develop/thicken.h"
+#include "kernels/print/thicken.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,9 @@
 #include "kernels/lsystem/turtle2d.h"
 
 using namespace selfsim;
-using namespace selfsim::develop;
+using namespace selfsim::print;
+using selfsim::develop::develop_surface;
+using selfsim::develop::DevelopOptions;
 
 namespace {
 

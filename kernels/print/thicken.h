@@ -7,7 +7,7 @@
 #include "kernels/geom/mesh.h"
 #include "kernels/geom/progress.h"
 
-namespace selfsim::develop {
+namespace selfsim::print {
 
 // m, a manifold surface with a point field `thickness` (> 0 everywhere), thickened. Normals are the
 // area-weighted average of the faces around a point. Points: 2V (the top sheet first, at +n·t/2, then the
@@ -16,4 +16,4 @@ namespace selfsim::develop {
 // lacks a positive finite thickness, or has a point whose faces' normals cancel.
 Mesh thicken(const Mesh& m, Progress& progress);
 
-}  // namespace selfsim::develop
+}  // namespace selfsim::print

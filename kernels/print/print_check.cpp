@@ -1,0 +1,187 @@
+#include "kernels/print/print_check.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <memory>
+
+#include "kernels/geom/count_text.h"
+#include "kernels/geom/error.h"
+#include "kernels/geom/point_text.h"
+#include "kernels/geom/volume.h"
+#include "kernels/geom/wall_grid.h"
+#include "kernels/print/print_size.h"
+#include "kernels/print/wall_rays.h"
+
+namespace selfsim::print {
+
+namespace {
+
+// Where walls and gaps are measured: from every triangle's incentre along its normal. Not from the points:
+// a point on a sharp edge (a thickened sheet's rim) has no normal a ray can follow, and one along the
+// average runs so close beside a face that the grid's interpolation error reads it as outside at once. The
+// incentre is the point of a triangle farthest from its edges.
+struct Samples {
+  std::vector<Vec3> points, normals;
+};
+
+Samples samples_of(const Mesh& m, bool inward) {
+  Samples s;
+  s.points.reserve(m.faces());
+  s.normals.reserve(m.faces());
+  const double flip = inward ? -1 : 1;
+  for (const Triangle& t : m.triangles) {
+    const Vec3 a = m.points[t[0]], b = m.points[t[1]], c = m.points[t[2]];
+    const double la = norm(c - b), lb = norm(a - c), lc = norm(b - a), sum = la + lb + lc;
+    s.points.push_back(sum > 0 ? (1 / sum) * (la * a + lb * b + lc * c) : a);
+    const Vec3 n = area_normal(m, t);
+    const double length = norm(n);
+    s.normals.push_back(length > 0 && std::isfinite(length) ? (flip / length) * n : Vec3{});
+  }
+  return s;
+}
+
+// A point's value: the area-weighted mean of its triangles' (for ParaView's point colouring).
+std::vector<double> at_points(const Mesh& m, const std::vector<double>& per_face) {
+  std::vector<double> sum(m.points.size(), 0), weight(m.points.size(), 0);
+  for (std::size_t f = 0; f < m.faces(); ++f) {
+    const double area = norm(area_normal(m, m.triangles[f]));
+    for (std::uint32_t v : m.triangles[f]) {
+      sum[v] += area * per_face[f];
+      weight[v] += area;
+    }
+  }
+  for (std::size_t i = 0; i < sum.size(); ++i) sum[i] = weight[i] > 0 ? sum[i] / weight[i] : 0;
+  return sum;
+}
+
+// The smallest value under `threshold`, where, and how many are under it.
+Spot spot_of(const std::vector<double>& values, const std::vector<Vec3>& where, double threshold) {
+  Spot s;
+  s.measured = true;
+  s.value = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (values[i] < threshold) ++s.under;
+    if (values[i] < s.value) {
+      s.value = values[i];
+      s.where = where[i];
+    }
+  }
+  return s;
+}
+
+// The walls and gaps, on the distance grid of m (its parts as OpenVDB meshes them into one level set).
+void measure(const Mesh& m, const PointBudget& budget, Progress& progress, PrintReport& r, Mesh* marked) {
+  const double smallest = std::min(r.rules.min_wall, r.rules.min_gap);
+  r.voxel = r.rules.voxel > 0 ? r.rules.voxel : smallest / 4;
+  r.wall_cap = 2 * r.rules.min_wall;
+  r.gap_cap = 2 * r.rules.min_gap;
+  Volume v;
+  v.kind = Volume::Kind::mesh;
+  Mesh shape;
+  shape.points = m.points;
+  shape.triangles = m.triangles;
+  v.mesh = std::make_shared<const Mesh>(std::move(shape));
+  v.bounds = m.bbox();
+  const double depth = r.wall_cap / 2 + r.voxel, outside = r.gap_cap / 2 + r.voxel;
+  const double size = WallGrid::size(v, r.voxel, depth, outside);
+  if (size > budget.left()) {
+    r.skipped = "walls and gaps not measured: the distance grid at a " + mm_text(r.voxel) + " voxel would take " +
+                count_text(size) + " points' worth of memory, over the limit (set a larger 'voxel')";
+    return;
+  }
+  ProgressStage build(progress, 0.3, 0.7);
+  const WallGrid grid(v, r.voxel, depth, budget, build, outside);
+  r.error = grid.error();
+  const Samples s = samples_of(m, r.inward);
+  std::vector<double> wall(s.points.size()), gap(s.points.size());
+  ProgressStage rays(progress, 0.7, 1);
+  measure_rays(
+      s.points, s.normals, [&](std::span<const Vec3> p, std::span<double> out) { grid.clearances(p, out); },
+      {.step = r.voxel / 2, .wall_cap = r.wall_cap, .gap_cap = r.gap_cap}, wall, gap, rays);
+  r.wall = spot_of(wall, s.points, r.rules.min_wall);
+  r.gap = spot_of(gap, s.points, r.rules.min_gap);
+  if (marked == nullptr) return;
+  *marked = m;
+  marked->point_fields.set(real_field("wall", at_points(m, wall)));
+  marked->point_fields.set(real_field("gap", at_points(m, gap)));
+  marked->face_fields.set(real_field("wall", std::move(wall)));
+  marked->face_fields.set(real_field("gap", std::move(gap)));
+}
+
+void add_findings(PrintReport& r) {
+  const PrintRules& rules = r.rules;
+  if (!r.topology.manifold()) r.findings.push_back("not a 2-manifold: " + r.topology.first_problem);
+  if (r.inward) r.findings.push_back("its triangles face inwards (a slicer may print it inside out)");
+  if (r.crossing)
+    r.findings.push_back("it crosses itself near " + mm_point_text(r.crossing->where) + " (triangles " +
+                         std::to_string(r.crossing->first + 1) + " and " + std::to_string(r.crossing->second + 1) +
+                         ")");
+  if (r.wall.measured && r.wall.under > 0)
+    r.findings.push_back("walls thinner than " + mm_text(rules.min_wall) + " at " + count_text(double(r.wall.under)) +
+                         " places, the thinnest " + mm_text(r.wall.value) + " at " + mm_point_text(r.wall.where));
+  if (r.gap.measured && r.gap.under > 0)
+    r.findings.push_back("gaps narrower than " + mm_text(rules.min_gap) + " (they fuse) at " +
+                         count_text(double(r.gap.under)) + " places, the narrowest " + mm_text(r.gap.value) + " at " +
+                         mm_point_text(r.gap.where));
+  if (static_cast<double>(r.triangles) > rules.max_triangles)
+    r.findings.push_back(count_text(double(r.triangles)) + " triangles, over the " + count_text(rules.max_triangles) +
+                         " a slicer handles well (decimate it)");
+  const Vec3 size = r.box.size();
+  if (rules.bed != Vec3{}) {
+    // Any orientation on the bed: the sorted sides must fit the sorted bed.
+    std::array<double, 3> part{size.x, size.y, size.z}, bed{rules.bed.x, rules.bed.y, rules.bed.z};
+    std::sort(part.begin(), part.end());
+    std::sort(bed.begin(), bed.end());
+    if (part[0] > bed[0] || part[1] > bed[1] || part[2] > bed[2])
+      r.findings.push_back("it is " + size_text(size) + ", larger than the bed's " + size_text(rules.bed));
+  }
+  const double longest = std::max({size.x, size.y, size.z});
+  if (longest < 2)
+    r.findings.push_back("it is only " + mm_text(longest) +
+                         " across: sizes are millimetres, so scale it first (solid.size, or develop's size)");
+  if (!r.skipped.empty()) r.findings.push_back(r.skipped);
+}
+
+}  // namespace
+
+std::string PrintReport::summary() const {
+  const auto at_least = [](const Spot& s, double cap) {
+    return (s.value >= cap ? ">= " : "") + mm_text(std::min(s.value, cap));
+  };
+  std::string facts = size_text(box.size()) + ", " + count_text(double(triangles)) + " triangles";
+  if (wall.measured) facts += ", walls " + at_least(wall, wall_cap) + ", gaps " + at_least(gap, gap_cap);
+  if (passes()) return "print check (" + rules.profile + "): passes: closed, " + facts;
+  std::string out = "print check (" + rules.profile + "): " + std::to_string(findings.size()) +
+                    (findings.size() == 1 ? " problem: " : " problems: ");
+  for (std::size_t i = 0; i < findings.size(); ++i) out += (i == 0 ? "" : "; ") + findings[i];
+  return out + " (" + facts + ")";
+}
+
+PrintReport check_print(const Mesh& m, const PrintRules& rules, const PointBudget& budget, Progress& progress,
+                        Mesh* marked) {
+  rules.validate();
+  m.validate();
+  if (m.triangles.empty()) throw Error("the mesh has no triangles: nothing to print");
+  progress.start("print check");
+  PrintReport r;
+  r.rules = rules;
+  r.triangles = m.faces();
+  r.box = m.bbox();
+  r.topology = mesh_topology(m, progress);
+  if (r.topology.boundary_edges > 0)
+    throw Error("the mesh is open (" + first_open_edge(m) +
+                "): a print needs a closed solid; thicken the surface first (solid.thicken)");
+  r.inward = enclosed_volume(m) < 0;
+  progress.fraction(0.1);
+  ProgressStage crossing(progress, 0.1, 0.3);
+  r.crossing = first_intersection(m, crossing);
+  measure(m, budget, progress, r, marked);
+  if (marked != nullptr && r.skipped.size() > 0) *marked = m;
+  add_findings(r);
+  progress.fraction(1);
+  return r;
+}
+
+}  // namespace selfsim::print

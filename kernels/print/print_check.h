@@ -1,0 +1,62 @@
+// The print check: is a solid, in millimetres, something a slicer accepts and a printer can make? It reports
+// (print_rules.h gives the thresholds):
+//   - whether the mesh is a closed 2-manifold facing outwards (an open surface is refused: thicken it first);
+//   - whether it crosses itself, and where (mesh_intersections.h);
+//   - the thinnest wall and the narrowest gap between parts, measured on the solid's OpenVDB signed distance
+//     grid (wall_rays.h: from every triangle's incentre, inwards to the far side of the wall
+//     and outwards to the next part), within the grid's interpolation error (WallGrid::error);
+//   - the triangle count and the bounding box, against the triangle budget and the printer's bed;
+//   - a solid only a few millimetres across, which is most often one still in its curve's units.
+// Each problem is one finding: a line of text naming where it is. The walls and gaps are also point and
+// face fields (`wall`, `gap`, mm) so ParaView shows the thin spots.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kernels/geom/budget.h"
+#include "kernels/geom/mesh.h"
+#include "kernels/geom/mesh_check.h"
+#include "kernels/geom/mesh_intersections.h"
+#include "kernels/geom/progress.h"
+#include "kernels/print/print_rules.h"
+
+namespace selfsim::print {
+
+// The thinnest (or narrowest) spot found, and how many of the measured places fell under the threshold.
+struct Spot {
+  double value = 0;  // mm; the cap when nothing was measured below it
+  Vec3 where;
+  std::size_t under = 0;
+  bool measured = false;  // false when the walls were not measured (see PrintReport::skipped)
+};
+
+struct PrintReport {
+  PrintRules rules;
+  std::size_t triangles = 0;
+  BBox3 box;
+  MeshTopology topology;
+  bool inward = false;  // closed, but facing inwards (negative volume)
+  std::optional<TrianglePair> crossing;
+  Spot wall, gap;
+  double wall_cap = 0, gap_cap = 0;  // walls and gaps at least this wide read as this
+  double voxel = 0, error = 0;       // the distance grid's voxel and interpolation error (mm)
+  std::string skipped;               // why walls and gaps were not measured (empty when they were)
+  std::vector<std::string> findings;
+
+  bool passes() const { return findings.empty(); }
+  // One line: "print check: passes (closed, 120 x 80 x 40 mm, 212,340 triangles, walls >= 0.92 mm, gaps >=
+  // 0.41 mm)" or "print check: 2 problems: ...; ...".
+  std::string summary() const;
+};
+
+// Checks m (in millimetres) against rules. With `marked`, also returns m with the point and face fields
+// `wall` and `gap` (mm). Throws Error for a mesh with no triangles or an open one (naming an open edge);
+// BudgetError does not escape: a distance grid over the budget leaves the walls unmeasured, which the
+// report says (and suggests a larger voxel). Cancelled when progress says stop.
+PrintReport check_print(const Mesh& m, const PrintRules& rules, const PointBudget& budget, Progress& progress,
+                        Mesh* marked = nullptr);
+
+}  // namespace selfsim::print

@@ -1,0 +1,83 @@
+#include "kernels/print/wall_rays.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "kernels/geom/error.h"
+
+namespace selfsim::print {
+
+namespace {
+
+constexpr std::size_t chunk = 1024;
+
+// Marches the rays of points [begin, end) in direction sign·n, all together a step at a time (so each step
+// is one batched call of the distance), and writes into `out` how far each went before it crossed the
+// surface again (the cap if it did not).
+void march(std::span<const Vec3> points, std::span<const Vec3> normals, const Clearance& clearance, double step,
+           double cap, double sign, std::size_t begin, std::size_t end, std::span<double> out) {
+  // Inwards (sign −1 along n) the ray starts inside and ends at a sample outside (distance ≤ 0); outwards
+  // it starts outside and ends inside (distance > 0). `side` is +1 inwards: side·distance > 0 while the ray
+  // is still in the medium it started in.
+  const double side = sign < 0 ? 1 : -1;
+  std::vector<std::size_t> active;
+  std::vector<double> last;  // the previous sample's side·distance (0 at the surface itself)
+  for (std::size_t i = begin; i < end; ++i) {
+    out[i] = cap;
+    if (normals[i] != Vec3{}) {
+      active.push_back(i);
+      last.push_back(0);
+    }
+  }
+  std::vector<Vec3> at;
+  std::vector<double> value;
+  const auto steps = static_cast<std::size_t>(std::ceil(cap / step));
+  for (std::size_t k = 1; k <= steps && !active.empty(); ++k) {
+    const double t = std::min(cap, static_cast<double>(k) * step), previous = static_cast<double>(k - 1) * step;
+    at.resize(active.size());
+    value.resize(active.size());
+    for (std::size_t j = 0; j < active.size(); ++j) at[j] = points[active[j]] + (sign * t) * normals[active[j]];
+    clearance(at, value);
+    std::size_t kept = 0;
+    for (std::size_t j = 0; j < active.size(); ++j) {
+      const double d = side * value[j];
+      if (d <= 0) {
+        // Crossed between the previous sample and this one: where the distance, taken as linear, is zero.
+        // Crossed within the first step (the surface's own value is taken as 0): half a step, as near as the
+        // samples tell.
+        const double before = last[j];
+        out[active[j]] = std::min(cap, before > 0 ? previous + (t - previous) * before / (before - d) : 0.5 * t);
+        continue;
+      }
+      active[kept] = active[j];
+      last[kept++] = d;
+    }
+    active.resize(kept);
+    last.resize(kept);
+  }
+}
+
+}  // namespace
+
+void measure_rays(std::span<const Vec3> points, std::span<const Vec3> normals, const Clearance& clearance,
+                  const RayLimits& limits, std::span<double> wall, std::span<double> gap, Progress& progress) {
+  if (!(limits.step > 0) || !(limits.wall_cap > 0) || !(limits.gap_cap > 0))
+    throw Error("internal error: measure_rays needs a positive step and caps");
+  const std::size_t n = points.size();
+  const std::size_t chunks = (n + chunk - 1) / chunk;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks, 1), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t c = r.begin(); c != r.end(); ++c) {
+      if (progress.cancelled()) return;
+      const std::size_t begin = c * chunk, end = std::min(n, begin + chunk);
+      march(points, normals, clearance, limits.step, limits.wall_cap, -1, begin, end, wall);
+      march(points, normals, clearance, limits.step, limits.gap_cap, +1, begin, end, gap);
+    }
+  });
+  if (progress.cancelled()) throw Cancelled();
+}
+
+}  // namespace selfsim::print

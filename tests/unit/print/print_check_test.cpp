@@ -1,0 +1,122 @@
+// The print check on solids whose walls and gaps are known: a 20 mm cube passes; a 0.4 mm plate has thin
+// walls (and says where); two blocks 0.2 mm apart have a narrow gap; an open surface is refused; a solid
+// turned inside out, one crossing itself and one over the triangle budget or the bed are findings.
+#include "kernels/print/print_check.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "kernels/geom/box_mesh.h"
+#include "kernels/geom/error.h"
+
+using namespace selfsim;
+using namespace selfsim::print;
+
+namespace {
+
+Mesh joined(const Mesh& a, const Mesh& b) {
+  Mesh m = a;
+  const auto n = static_cast<std::uint32_t>(a.points.size());
+  m.points.insert(m.points.end(), b.points.begin(), b.points.end());
+  for (Triangle t : b.triangles) m.triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
+  return m;
+}
+
+bool mentions(const PrintReport& r, const std::string& words) {
+  return std::any_of(r.findings.begin(), r.findings.end(),
+                     [&](const std::string& f) { return f.find(words) != std::string::npos; });
+}
+
+}  // namespace
+
+TEST(PrintCheck, ACubePasses) {
+  const PrintReport r = check_print(box_mesh({0, 0, 0}, {20, 20, 20}), PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_TRUE(r.passes()) << r.summary();
+  EXPECT_TRUE(r.wall.measured);
+  EXPECT_EQ(r.wall.under, 0u);
+  EXPECT_EQ(r.triangles, 12u);
+  EXPECT_NE(r.summary().find("passes"), std::string::npos);
+  EXPECT_NE(r.summary().find("20 x 20 x 20 mm"), std::string::npos) << r.summary();
+}
+
+TEST(PrintCheck, AThinPlateHasThinWallsWhereItIs) {
+  Mesh marked;
+  const PrintReport r =
+      check_print(box_mesh({0, 0, 0}, {10, 10, 0.4}), PrintRules{}, PointBudget{}, no_progress(), &marked);
+  EXPECT_FALSE(r.passes());
+  EXPECT_TRUE(mentions(r, "walls thinner than 0.8 mm")) << r.summary();
+  // The faces' centres read the plate's thickness, to within the grid's error.
+  EXPECT_NEAR(r.wall.value, 0.4, r.error + 0.05) << r.summary();
+  EXPECT_GE(r.wall.where.z, -0.01);
+  EXPECT_LE(r.wall.where.z, 0.41);
+  ASSERT_NE(marked.point_fields.find("wall"), nullptr);
+  ASSERT_NE(marked.face_fields.find("wall"), nullptr);
+  const auto faces = marked.face_fields.find("wall")->reals();
+  // The top and bottom faces (4 of the 12 triangles) read about 0.4; the others (side faces) read more.
+  EXPECT_EQ(std::count_if(faces.begin(), faces.end(), [&](double w) { return std::abs(w - 0.4) < r.error + 0.05; }), 4);
+}
+
+TEST(PrintCheck, TwoBlocksCloseTogetherHaveANarrowGap) {
+  const Mesh two = joined(box_mesh({0, 0, 0}, {10, 10, 5}), box_mesh({0, 0, 5.2}, {10, 10, 10}));
+  const PrintReport r = check_print(two, PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_TRUE(mentions(r, "gaps narrower than 0.4 mm")) << r.summary();
+  EXPECT_NEAR(r.gap.value, 0.2, r.error + 0.05);
+  EXPECT_FALSE(mentions(r, "walls thinner"));
+  // The same blocks 1 mm apart pass.
+  const Mesh apart = joined(box_mesh({0, 0, 0}, {10, 10, 5}), box_mesh({0, 0, 6}, {10, 10, 11}));
+  EXPECT_TRUE(check_print(apart, PrintRules{}, PointBudget{}, no_progress()).passes());
+}
+
+TEST(PrintCheck, RefusesAnOpenSurface) {
+  Mesh m = box_mesh({0, 0, 0}, {10, 10, 10});
+  m.triangles.pop_back();
+  try {
+    check_print(m, PrintRules{}, PointBudget{}, no_progress());
+    FAIL() << "an open mesh was checked";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("the mesh is open"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("thicken"), std::string::npos) << e.what();
+  }
+}
+
+TEST(PrintCheck, InwardCrossingBigAndTinyAreFindings) {
+  Mesh inward = box_mesh({0, 0, 0}, {10, 10, 10});
+  for (Triangle& t : inward.triangles) std::swap(t[1], t[2]);
+  EXPECT_TRUE(mentions(check_print(inward, PrintRules{}, PointBudget{}, no_progress()), "face inwards"));
+
+  const Mesh crossing = joined(box_mesh({0, 0, 0}, {10, 10, 10}), box_mesh({5, 5, 5}, {15, 15, 15}));
+  const PrintReport c = check_print(crossing, PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_TRUE(mentions(c, "crosses itself near")) << c.summary();
+
+  PrintRules few;
+  few.max_triangles = 10;
+  few.bed = {5, 50, 50};
+  const PrintReport big = check_print(box_mesh({0, 0, 0}, {10, 10, 10}), few, PointBudget{}, no_progress());
+  EXPECT_TRUE(mentions(big, "12 triangles, over the 10")) << big.summary();
+  EXPECT_TRUE(mentions(big, "larger than the bed")) << big.summary();
+
+  const PrintReport tiny = check_print(box_mesh({0, 0, 0}, {1, 1, 1}), PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_TRUE(mentions(tiny, "sizes are millimetres")) << tiny.summary();
+}
+
+TEST(PrintCheck, AGridOverTheBudgetIsSaidNotThrown) {
+  PointBudget small;
+  small.limit = 100;
+  const PrintReport r = check_print(box_mesh({0, 0, 0}, {20, 20, 20}), PrintRules{}, small, no_progress());
+  EXPECT_FALSE(r.wall.measured);
+  EXPECT_TRUE(mentions(r, "not measured")) << r.summary();
+}
+
+TEST(PrintCheck, ProfilesAndRules) {
+  EXPECT_EQ(PrintRules::named("sla").min_wall, 0.4);
+  EXPECT_THROW(PrintRules::named("laser"), Error);
+  PrintRules bad;
+  bad.min_wall = 0;
+  EXPECT_THROW(bad.validate(), Error);
+  // The SLA profile passes the 0.4 mm plate's walls (0.4 mm is its minimum) within the grid's error.
+  PrintRules sla = PrintRules::named("sla");
+  sla.min_wall = 0.3;
+  EXPECT_FALSE(
+      mentions(check_print(box_mesh({0, 0, 0}, {10, 10, 0.4}), sla, PointBudget{}, no_progress()), "walls thinner"));
+}
