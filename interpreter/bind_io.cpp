@@ -16,6 +16,7 @@
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
 #include "interpreter/parse_text.h"
+#include "interpreter/print_options.h"
 #include "interpreter/run_context.h"
 #include "interpreter/save_support.h"
 #include "interpreter/style_reader.h"
@@ -172,6 +173,8 @@ int save(lua_State* L) {
     // Said as each file is committed, in order with the recipe's own print output: when a later error fails
     // the run, the files it did write were already reported.
     if (!run.config.quiet) std::printf("wrote %s (%zu points)\n", shown_text(written, 4096).c_str(), v->points());
+    if (!run.config.quiet && (format.extension == ".stl" || format.extension == ".3mf"))
+      std::printf("  %s\n", print_summary(L, *std::get<const Mesh*>(v->ref())).c_str());
     return 0;
   });
 }

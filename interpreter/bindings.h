@@ -29,6 +29,7 @@ void open_develop(lua_State* L);     // bind_develop.cpp: develop()
 void open_exclusion(lua_State* L);   // bind_exclusion.cpp: exclusion.curve{}
 void open_analysis(lua_State* L);    // bind_analysis.cpp: dimension()
 void open_volume(lua_State* L);      // bind_volume.cpp: Volume, volume.box{} and the rest
+void open_solid(lua_State* L);       // bind_solid.cpp: solid.thicken, solid.check and the rest
 
 // bind_lsystem.cpp: the grammar at index, or null (develop() takes one as its source).
 Held<lsystem::Grammar> test_grammar(lua_State* L, int index);
@@ -62,6 +63,7 @@ inline void open_all(lua_State* L) {
   open_exclusion(L);
   open_analysis(L);
   open_volume(L);
+  open_solid(L);
 }
 
 }  // namespace selfsim::interp

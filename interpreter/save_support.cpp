@@ -63,6 +63,12 @@ io::SaveOptions read_save_options(lua_State* L, int index, const io::Format& f) 
     s.voxel = o.number("voxel", 0);
     if (!(s.voxel > 0)) throw Error("option 'voxel' must be a positive number, got " + number_text(s.voxel));
   }
+  if (has("name") && o.has("name")) {
+    s.name = o.string("name", "");
+    if (s.name.empty() || s.name.size() > 256)
+      throw Error("option 'name' must be a name of 1 to 256 characters, got '" + shown_text(s.name) + "'");
+  }
+  s.application = std::string("selfsim ") + SELFSIM_VERSION;
   io::check_options(f, o.unread());
   o.finish();
   return s;

@@ -24,6 +24,8 @@ struct SaveOptions {
   double size = 800;                           // .svg: width or height, whichever is larger, in size_unit
   std::string size_unit;                       // .svg: "" (pixels), "mm", "cm" or "in": a physical size for plotters
   double voxel = 0;                            // .vdb: the voxel size; 0 for 1/128 of the mesh's longest side
+  std::string name;                            // .3mf: the object's name; empty for the file's name without extension
+  std::string application = "selfsim";         // .3mf: the program that wrote it (the caller adds its version)
   PointBudget budget;                          // the run's, for what a writer builds on the way (a .vdb's grid)
   std::vector<std::string> given;              // the options the caller set, checked against the format's options
 

@@ -14,6 +14,7 @@ void write_eps(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
 void write_stl(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress);  // mesh_files.cpp
 void write_obj(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress);  // mesh_files.cpp
 void write_ply(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress);  // mesh_files.cpp
+void write_3mf(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress);  // threemf_file.cpp
 void write_vdb(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress);  // vdb_file.cpp
 
 }  // namespace selfsim::io

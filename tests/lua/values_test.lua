@@ -27,7 +27,7 @@ assert(#cb.min == 2 and #b.min == 3)
 -- Curves save as .vtu too; meshes are refused by .svg with the list of formats that hold them.
 save(c, "dragon.vtu")
 local ok, err = pcall(save, m, "tet.svg")
-assert(not ok and err:find("expected one of: '.obj', '.ply', '.stl', '.vdb', '.vtp', '.vtu'", 1, true), err)
+assert(not ok and err:find("expected one of: '.3mf', '.obj', '.ply', '.stl', '.vdb', '.vtp', '.vtu'", 1, true), err)
 
 -- load() reads beside the recipe: a quad becomes two triangles; a flat .vtp polyline is a 2D curve.
 local sq = load("square.obj")

@@ -34,14 +34,14 @@ std::string options_error(const std::string& ext, const std::vector<std::string>
 }  // namespace
 
 TEST(Format, FindFormatKnowsEachExtension) {
-  for (const char* ext : {".vtp", ".vtu", ".svg", ".eps", ".stl", ".obj", ".ply", ".vdb"}) {
+  for (const char* ext : {".vtp", ".vtu", ".svg", ".eps", ".3mf", ".stl", ".obj", ".ply", ".vdb"}) {
     const io::Format* f = io::find_format(ext);
     ASSERT_NE(f, nullptr) << ext;
     EXPECT_EQ(f->extension, ext);
     EXPECT_FALSE(f->description.empty()) << ext;
     EXPECT_NE(f->write, nullptr) << ext;
   }
-  EXPECT_EQ(io::formats().size(), 8u);
+  EXPECT_EQ(io::formats().size(), 9u);
   EXPECT_EQ(io::find_format(".dxf"), nullptr);
   EXPECT_EQ(io::find_format("vtp"), nullptr);  // the dot is part of the extension
   EXPECT_EQ(io::find_format(""), nullptr);
@@ -95,17 +95,17 @@ TEST(Format, FormatForFindsTheFormat) {
 TEST(Format, FormatForUnknownExtensionListsTheValidOnes) {
   EXPECT_EQ(format_error("c.dxf", ValueKind::Curve),
             "cannot save a curve as '.dxf' (file 'c.dxf'), expected one of: '.eps', '.svg', '.vtp', '.vtu'");
-  EXPECT_EQ(
-      format_error("out/m.dxf", ValueKind::Mesh),
-      "cannot save a mesh as '.dxf' (file 'm.dxf'), expected one of: '.obj', '.ply', '.stl', '.vdb', '.vtp', '.vtu'");
+  EXPECT_EQ(format_error("out/m.dxf", ValueKind::Mesh),
+            "cannot save a mesh as '.dxf' (file 'm.dxf'), expected one of: '.3mf', '.obj', '.ply', '.stl', '.vdb', "
+            "'.vtp', '.vtu'");
   EXPECT_EQ(format_error("noext", ValueKind::Curve3),
             "cannot save a 3D curve as '' (file 'noext'), expected one of: '.vtp', '.vtu'");
 }
 
 TEST(Format, FormatForAFormatThatCannotHoldTheValue) {
-  EXPECT_EQ(
-      format_error("m.svg", ValueKind::Mesh),
-      "cannot save a mesh as '.svg' (file 'm.svg'), expected one of: '.obj', '.ply', '.stl', '.vdb', '.vtp', '.vtu'");
+  EXPECT_EQ(format_error("m.svg", ValueKind::Mesh),
+            "cannot save a mesh as '.svg' (file 'm.svg'), expected one of: '.3mf', '.obj', '.ply', '.stl', '.vdb', "
+            "'.vtp', '.vtu'");
   EXPECT_EQ(format_error("c.stl", ValueKind::Curve),
             "cannot save a curve as '.stl' (file 'c.stl'), expected one of: '.eps', '.svg', '.vtp', '.vtu'");
   EXPECT_EQ(format_error("helix.svg", ValueKind::Curve3),

@@ -1,0 +1,90 @@
+#include "interpreter/print_options.h"
+
+#include "interpreter/lua_support.h"
+#include "interpreter/run_context.h"
+#include "interpreter/value_types.h"
+#include "kernels/geom/mesh_check.h"
+
+namespace selfsim::interp {
+
+print::PrintRules read_print_rules(Options& o) {
+  print::PrintRules r = print::PrintRules::named(
+      print::PrintRules::profiles()[o.enumeration("profile", print::PrintRules::profiles(), 0)]);
+  r.nozzle = o.number("nozzle", r.nozzle);
+  r.min_wall = o.number("min_wall", r.min_wall);
+  r.min_gap = o.number("min_gap", r.min_gap);
+  r.max_triangles = o.number("triangles", r.max_triangles);
+  if (const auto bed = o.point3("bed")) r.bed = *bed;
+  r.voxel = o.number("voxel", r.voxel);
+  r.validate();
+  return r;
+}
+
+PrintCheckOption read_print_check(Options& o) {
+  PrintCheckOption c;
+  const int type = o.push("check");
+  if (type == LUA_TBOOLEAN) {
+    c.on = o.boolean("check", true);
+  } else if (type == LUA_TSTRING) {
+    c.rules = print::PrintRules::named(
+        print::PrintRules::profiles()[o.enumeration("check", print::PrintRules::profiles(), 0)]);
+  } else if (type != LUA_TNIL) {
+    throw Error("option 'check' must be true, false or a printer profile ('fdm', 'sla')");
+  }
+  return c;
+}
+
+print::PrintReport check_print_in_run(lua_State* L, const Mesh& m, const print::PrintRules& rules, Mesh* marked) {
+  return with_budget(L,
+                     [&](const PointBudget& b) { return print::check_print(m, rules, b, RunContext::of(L), marked); });
+}
+
+void warn_unless_printable(lua_State* L, const char* fn, const Mesh& m, const PrintCheckOption& check) {
+  if (!check.on) return;
+  const print::PrintReport r = check_print_in_run(L, m, check.rules);
+  if (r.passes()) return;
+  const std::string message = recipe_where(L) + fn + ": " + r.summary() + " (check = false to skip)";
+  lua_warning(L, message.c_str(), 0);
+}
+
+std::string print_summary(lua_State* L, const Mesh& m) {
+  const MeshTopology t = mesh_topology(m, RunContext::of(L));
+  if (t.boundary_edges > 0)
+    return "print check: an open surface (" + std::to_string(t.boundary_edges) +
+           " boundary edges), not a solid: thicken it to print (solid.thicken)";
+  return check_print_in_run(L, m, print::PrintRules{}).summary();
+}
+
+void push_print_report(lua_State* L, const print::PrintReport& r) {
+  lua_createtable(L, 0, 12);
+  lua_pushboolean(L, r.passes());
+  lua_setfield(L, -2, "passes");
+  lua_pushstring(L, r.summary().c_str());
+  lua_setfield(L, -2, "summary");
+  lua_createtable(L, static_cast<int>(r.findings.size()), 0);
+  for (std::size_t i = 0; i < r.findings.size(); ++i) {
+    lua_pushstring(L, r.findings[i].c_str());
+    lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+  }
+  lua_setfield(L, -2, "findings");
+  lua_pushinteger(L, static_cast<lua_Integer>(r.triangles));
+  lua_setfield(L, -2, "triangles");
+  push_point(L, r.box.size());
+  lua_setfield(L, -2, "size");
+  lua_pushboolean(L, r.topology.closed() && !r.inward);
+  lua_setfield(L, -2, "closed");
+  lua_pushboolean(L, r.crossing.has_value());
+  lua_setfield(L, -2, "crossing");
+  if (r.wall.measured) {
+    lua_pushnumber(L, std::min(r.wall.value, r.wall_cap));
+    lua_setfield(L, -2, "thinnest_wall");
+    lua_pushnumber(L, std::min(r.gap.value, r.gap_cap));
+    lua_setfield(L, -2, "narrowest_gap");
+    lua_pushinteger(L, static_cast<lua_Integer>(r.wall.under));
+    lua_setfield(L, -2, "thin");
+    lua_pushinteger(L, static_cast<lua_Integer>(r.gap.under));
+    lua_setfield(L, -2, "narrow");
+  }
+}
+
+}  // namespace selfsim::interp

@@ -1,0 +1,109 @@
+// .3mf: the 3D Manufacturing Format, which unlike STL says its unit (millimetres here) and names its objects,
+// written by lib3mf (the 3MF Consortium's own library, Debian's lib3mf 1.8). lib3mf's C interface declares
+// Windows-style types and SAL macros globally, so it stays in this one file. The model is serialised once,
+// into memory through lib3mf's write and seek callbacks (its zip writer seeks back to patch headers), and the
+// bytes then go to the OutputFile like every other format: atomic, and confined to the output folder.
+// A 3MF is a printable object: the mesh must be closed. Coordinates are written with lib3mf's six decimals
+// (a nanometre in millimetres).
+#include <Model/COM/NMR_DLLInterfaces.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "kernels/geom/error.h"
+#include "kernels/geom/mesh_check.h"
+#include "kernels/io/writers.h"
+
+namespace selfsim::io {
+
+namespace {
+
+// A lib3mf handle, released when it goes out of scope.
+struct Handle {
+  NMR::PLib3MFBase* p = nullptr;
+  ~Handle() {
+    if (p != nullptr) NMR::lib3mf_release(p);
+  }
+};
+
+// Throws Error with lib3mf's own message when a call failed.
+void check(LIB3MFRESULT result, NMR::PLib3MFBase* handle, const char* what) {
+  if (result == LIB3MF_OK) return;
+  DWORD code = 0;
+  LPCSTR message = nullptr;
+  std::string reason = "error " + std::to_string(result);
+  if (handle != nullptr && NMR::lib3mf_getlasterror(handle, &code, &message) == LIB3MF_OK && message != nullptr)
+    reason = message;
+  throw Error(std::string("lib3mf could not ") + what + ": " + reason);
+}
+
+// The zip stream lib3mf writes, held in memory.
+struct Bytes {
+  std::string data;
+  std::size_t at = 0;
+};
+
+// The callbacks' types as lib3mf's NMR_ExportStream_Callback.h declares them (nfUint32, nfByte, nfUint64).
+std::uint32_t write_bytes(const std::uint8_t* data, std::uint32_t size, void* user) {
+  Bytes& b = *static_cast<Bytes*>(user);
+  if (b.at + size > b.data.size()) b.data.resize(b.at + size);
+  std::memcpy(b.data.data() + b.at, data, size);
+  b.at += size;
+  return 0;  // lib3mf's callbacks return 0 on success
+}
+
+std::uint32_t seek_bytes(std::uint64_t position, void* user) {
+  Bytes& b = *static_cast<Bytes*>(user);
+  if (position > b.data.size()) b.data.resize(position);
+  b.at = position;
+  return 0;
+}
+
+}  // namespace
+
+void write_3mf(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress) {
+  const Mesh& m = *std::get<const Mesh*>(v);
+  const std::string open = first_open_edge(m);
+  if (!open.empty())
+    throw Error("a .3mf holds a printable solid, but the mesh is open (" + open +
+                "): thicken the surface first (solid.thicken)");
+  if (m.points.size() > 0xffffffffu || m.faces() > 0xffffffffu) throw Error("too many points for a .3mf");
+  std::vector<NMR::MODELMESHVERTEX> points(m.points.size());
+  for (std::size_t i = 0; i < m.points.size(); ++i) {
+    if ((i & 0xffff) == 0xffff && progress.cancelled()) throw Cancelled();
+    points[i].m_fPosition[0] = static_cast<float>(m.points[i].x);
+    points[i].m_fPosition[1] = static_cast<float>(m.points[i].y);
+    points[i].m_fPosition[2] = static_cast<float>(m.points[i].z);
+  }
+  std::vector<NMR::MODELMESHTRIANGLE> triangles(m.faces());
+  for (std::size_t f = 0; f < m.faces(); ++f)
+    for (int k = 0; k < 3; ++k) triangles[f].m_nIndices[k] = m.triangles[f][k];
+  if (progress.cancelled()) throw Cancelled();
+
+  Handle model, mesh, item, writer;
+  check(NMR::lib3mf_createmodel(&model.p), nullptr, "create a model");
+  check(NMR::lib3mf_model_setunit(model.p, NMR::MODELUNIT_MILLIMETER), model.p, "set the unit");
+  const std::string leaf = out.leaf();
+  const std::string name = !opt.name.empty() ? opt.name : leaf.substr(0, leaf.rfind('.'));
+  check(NMR::lib3mf_model_addmetadatautf8(model.p, "Title", name.c_str()), model.p, "write the title");
+  check(NMR::lib3mf_model_addmetadatautf8(model.p, "Application", opt.application.c_str()), model.p,
+        "write the application");
+  check(NMR::lib3mf_model_addmeshobject(model.p, &mesh.p), model.p, "add the mesh");
+  check(NMR::lib3mf_object_setnameutf8(mesh.p, name.c_str()), mesh.p, "name the mesh");
+  check(NMR::lib3mf_meshobject_setgeometry(mesh.p, points.data(), static_cast<DWORD>(points.size()), triangles.data(),
+                                           static_cast<DWORD>(triangles.size())),
+        mesh.p, "store the mesh");
+  check(NMR::lib3mf_model_addbuilditem(model.p, mesh.p, nullptr, &item.p), model.p, "place the mesh");
+  check(NMR::lib3mf_model_querywriter(model.p, "3mf", &writer.p), model.p, "make a writer");
+  Bytes bytes;
+  check(NMR::lib3mf_writer_writetocallback(writer.p, reinterpret_cast<void*>(&write_bytes),
+                                           reinterpret_cast<void*>(&seek_bytes), &bytes),
+        writer.p, "write the file");
+  if (progress.cancelled()) throw Cancelled();
+  out.write(bytes.data);
+}
+
+}  // namespace selfsim::io

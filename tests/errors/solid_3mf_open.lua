@@ -1,0 +1,2 @@
+local m = mesh { points = { {0,0,0}, {10,0,0}, {0,10,0} }, triangles = { {1,2,3} } }
+save(m, "open.3mf")
