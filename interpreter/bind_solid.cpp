@@ -14,6 +14,8 @@
 #include "kernels/develop/loop_subdivision.h"
 #include "kernels/geom/check.h"
 #include "kernels/geom/mesh_intersections.h"
+#include "kernels/print/decimate.h"
+#include "kernels/print/grid_thicken.h"
 #include "kernels/print/print_size.h"
 #include "kernels/print/relief.h"
 #include "kernels/print/thicken.h"
@@ -61,13 +63,27 @@ int solid_thicken(lua_State* L) {
     const Held<Mesh> m = mesh_argument(L, call);
     Options o(L, 2);
     const double t = length_option(o, "thickness", diagonal(m->bbox()), "the solid's thickness in mm, e.g. 1");
+    const bool grid = o.enumeration("method", {"sheets", "grid"}, 0) == 1;
+    print::GridThickenOptions on_grid{.thickness = t};
+    if (grid) {
+      on_grid.voxel = o.number("voxel", 0);
+      on_grid.adaptivity = o.number("adaptivity", 0);
+    }
     const PrintCheckOption check = read_print_check(o);
     o.finish();
-    Mesh surface = *m;
-    surface.point_fields.set(real_field("thickness", std::vector<double>(surface.points.size(), t)));
-    // Two sheets and a rim: twice the points, twice the faces and two faces a boundary edge.
-    check_run_budget(L, 2 * budget_size(*m) + 2 * 3 * static_cast<double>(m->faces()), "the thickened solid");
-    Mesh solid = print::thicken(surface, RunContext::of(L));
+    Mesh solid;
+    if (grid) {
+      solid = with_budget(L, [&](const PointBudget& b) {
+        on_grid.budget = b;
+        return print::thicken_on_grid(*m, on_grid, RunContext::of(L));
+      });
+    } else {
+      Mesh surface = *m;
+      surface.point_fields.set(real_field("thickness", std::vector<double>(surface.points.size(), t)));
+      // Two sheets and a rim: twice the points, twice the faces and two faces a boundary edge.
+      check_run_budget(L, 2 * budget_size(*m) + 2 * 3 * static_cast<double>(m->faces()), "the thickened solid");
+      solid = print::thicken(surface, RunContext::of(L));
+    }
     warn_unless_printable(L, "solid.thicken", solid, check);
     push_geometry(L, std::move(solid));
     return 1;
@@ -172,6 +188,21 @@ int solid_smooth(lua_State* L) {
   });
 }
 
+int solid_decimate(lua_State* L) {
+  return call_kernel(L, "solid.decimate", [&] {
+    const std::string call = "solid.decimate(mesh, { triangles = 1000000 })";
+    check_arguments(L, call);
+    const Held<Mesh> m = mesh_argument(L, call);
+    Options o(L, 2);
+    o.require("triangles", "how many triangles to keep, e.g. triangles = 1000000");
+    const double triangles = o.number("triangles", 0);
+    o.finish();
+    check_run_budget(L, budget_size(*m), "the decimated copy");
+    push_geometry(L, print::decimate(*m, triangles, RunContext::of(L)));
+    return 1;
+  });
+}
+
 // solid.size(value, 80) or solid.size(value, { size = 80, axis = "x" } | { fit = {120, 120, 150} }).
 int solid_size(lua_State* L) {
   return call_kernel(L, "solid.size", [&] {
@@ -233,9 +264,9 @@ int solid_check(lua_State* L) {
 }  // namespace
 
 void open_solid(lua_State* L) {
-  const luaL_Reg functions[] = {{"thicken", solid_thicken}, {"tube", solid_tube}, {"relief", solid_relief},
-                                {"smooth", solid_smooth},   {"size", solid_size}, {"check", solid_check},
-                                {nullptr, nullptr}};
+  const luaL_Reg functions[] = {{"thicken", solid_thicken},   {"tube", solid_tube}, {"relief", solid_relief},
+                                {"smooth", solid_smooth},     {"size", solid_size}, {"check", solid_check},
+                                {"decimate", solid_decimate}, {nullptr, nullptr}};
   luaL_newlib(L, functions);
   lua_setglobal(L, "solid");
 }

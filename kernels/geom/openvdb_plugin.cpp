@@ -1,6 +1,7 @@
 // level_set.h, wall_grid.h and vdb_read.h forwarded to the OpenVDB plugin (plugin.h), loaded on first use.
 #include "kernels/geom/plugin.h"
 #include "kernels/plugins/openvdb/openvdb_table.h"
+#include "kernels/print/grid_thicken.h"
 
 namespace selfsim {
 
@@ -39,6 +40,16 @@ void WallGrid::clearances(std::span<const Vec3> points, std::span<double> out) c
 }
 
 double WallGrid::voxel() const { return openvdb().wall_voxel(*this); }
+
+namespace print {
+
+double grid_thicken_size(const Mesh& m, const GridThickenOptions& opt) { return openvdb().grid_thicken_size(m, opt); }
+
+Mesh thicken_on_grid(const Mesh& m, const GridThickenOptions& opt, Progress& progress) {
+  return openvdb().thicken_on_grid(m, opt, progress);
+}
+
+}  // namespace print
 
 namespace io {
 

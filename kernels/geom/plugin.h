@@ -2,7 +2,7 @@
 // VTK's renderer take milliseconds to tens of milliseconds to load and bind (libopenvdb alone resolves some
 // 40,000 symbols), which every run would pay at start-up, even one that only draws a curve. A plugin exports
 // one C function returning a table of pointers to its functions; the forwarding functions
-// (openvdb_plugin.cpp, vtk_read_plugin.cpp, preview_plugin.cpp) keep the ordinary C++ interface
+// (openvdb_plugin.cpp, vtk_plugin.cpp, preview_plugin.cpp) keep the ordinary C++ interface
 // (level_set.h, vdb_read.h, read.h, preview_png.h). Built with
 // -DSELFSIM_PLUGINS=OFF (the fuzz build), the same code is linked in instead and none of this is used.
 #pragma once

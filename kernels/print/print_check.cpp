@@ -118,13 +118,13 @@ void add_findings(PrintReport& r) {
     r.findings.push_back("it crosses itself near " + mm_point_text(r.crossing->where) + " (triangles " +
                          std::to_string(r.crossing->first + 1) + " and " + std::to_string(r.crossing->second + 1) +
                          ")");
+  const auto places = [](std::size_t n) { return count_text(double(n)) + (n == 1 ? " place" : " places"); };
   if (r.wall.measured && r.wall.under > 0)
-    r.findings.push_back("walls thinner than " + mm_text(rules.min_wall) + " at " + count_text(double(r.wall.under)) +
-                         " places, the thinnest " + mm_text(r.wall.value) + " at " + mm_point_text(r.wall.where));
+    r.findings.push_back("walls thinner than " + mm_text(rules.min_wall) + " at " + places(r.wall.under) +
+                         ", the thinnest " + mm_text(r.wall.value) + " at " + mm_point_text(r.wall.where));
   if (r.gap.measured && r.gap.under > 0)
-    r.findings.push_back("gaps narrower than " + mm_text(rules.min_gap) + " (they fuse) at " +
-                         count_text(double(r.gap.under)) + " places, the narrowest " + mm_text(r.gap.value) + " at " +
-                         mm_point_text(r.gap.where));
+    r.findings.push_back("gaps narrower than " + mm_text(rules.min_gap) + " (they fuse) at " + places(r.gap.under) +
+                         ", the narrowest " + mm_text(r.gap.value) + " at " + mm_point_text(r.gap.where));
   if (static_cast<double>(r.triangles) > rules.max_triangles)
     r.findings.push_back(count_text(double(r.triangles)) + " triangles, over the " + count_text(rules.max_triangles) +
                          " a slicer handles well (decimate it)");

@@ -61,6 +61,42 @@ void march(std::span<const Vec3> points, std::span<const Vec3> normals, const Cl
   }
 }
 
+// Keeps only the crossings through a surface facing the ray's start: the far side of a wall runs roughly
+// parallel to the near side (its outward normal along the ray, within acos(facing)), and across a gap the
+// other part faces back. A crossing at a steep angle is the other side of a groove or a wedge meeting the
+// ray's side (a V-shaped crease of a crumpled surface, whose bottom a printer fills anyway): read as the cap.
+// The surface's normal at the crossing is the distance's gradient there (central differences a step wide).
+// Crossings within the first step are kept: the grid does not resolve the normal of so thin a wall.
+void keep_facing(std::span<const Vec3> points, std::span<const Vec3> normals, const Clearance& clearance,
+                 const RayLimits& limits, double cap, double sign, std::size_t begin, std::size_t end,
+                 std::span<double> out) {
+  std::vector<std::size_t> crossed;
+  std::vector<Vec3> at;
+  const double h = limits.step;
+  const Vec3 axes[3] = {{h, 0, 0}, {0, h, 0}, {0, 0, h}};
+  for (std::size_t i = begin; i < end; ++i) {
+    if (!(out[i] < cap) || out[i] <= limits.step) continue;
+    crossed.push_back(i);
+    const Vec3 x = points[i] + (sign * out[i]) * normals[i];
+    for (const Vec3& e : axes) {
+      at.push_back(x + e);
+      at.push_back(x - e);
+    }
+  }
+  std::vector<double> value(at.size());
+  if (!at.empty()) clearance(at, value);
+  for (std::size_t j = 0; j < crossed.size(); ++j) {
+    const double* v = &value[6 * j];
+    // The clearance grows inwards: its gradient reversed is the crossed surface's outward normal.
+    const Vec3 outward{v[1] - v[0], v[3] - v[2], v[5] - v[4]};
+    const double length = norm(outward);
+    if (!(length > 0)) continue;
+    const double along = dot(outward, sign * normals[crossed[j]]) / length;  // cosine with the ray
+    // Inwards the far side's outward normal points along the ray; outwards the other part's points back.
+    if (sign < 0 ? along < limits.facing : along > -limits.facing) out[crossed[j]] = cap;
+  }
+}
+
 }  // namespace
 
 void measure_rays(std::span<const Vec3> points, std::span<const Vec3> normals, const Clearance& clearance,
@@ -75,6 +111,8 @@ void measure_rays(std::span<const Vec3> points, std::span<const Vec3> normals, c
       const std::size_t begin = c * chunk, end = std::min(n, begin + chunk);
       march(points, normals, clearance, limits.step, limits.wall_cap, -1, begin, end, wall);
       march(points, normals, clearance, limits.step, limits.gap_cap, +1, begin, end, gap);
+      keep_facing(points, normals, clearance, limits, limits.wall_cap, -1, begin, end, wall);
+      keep_facing(points, normals, clearance, limits, limits.gap_cap, +1, begin, end, gap);
     }
   });
   if (progress.cancelled()) throw Cancelled();

@@ -3,10 +3,11 @@
 //   wall: march inwards along −n until the distance says "outside" again: the far side of the wall;
 //   gap:  march outwards along +n until it says "inside" again: another part of the solid (or another
 //         stretch of the same part) across a gap.
-// Each crossing is placed by linear interpolation between the two samples around it. A march that finds no
-// crossing within its cap reads as the cap: the wall (or gap) is at least that. Thick bodies do not read
-// as thin near their convex edges: a ray from near an edge runs beside the other face without crossing
-// it. The distance function is passed in (an OpenVDB grid in the check, an exact one in the tests).
+// Each crossing is placed by linear interpolation between the two samples around it, and counts only through
+// a surface that faces the ray's start (keep_facing in wall_rays.cpp: not the far flank of a groove). A march that
+// finds no crossing within its cap reads as the cap: the wall (or gap) is at least that. Thick bodies do not read as
+// thin near their convex edges: a ray from near an edge runs beside the other face without crossing it. The distance
+// function is passed in (an OpenVDB grid in the check, an exact one in the tests).
 #pragma once
 
 #include <functional>
@@ -25,6 +26,7 @@ struct RayLimits {
   double step = 0;      // between samples along a ray, > 0
   double wall_cap = 0;  // the longest wall measured
   double gap_cap = 0;   // the widest gap measured
+  double facing = 0.7;  // a crossing counts when the surface crossed is within acos(facing) of facing the ray
 };
 
 // wall[i] and gap[i] for the ray pair from points[i] along unit normals[i] (a zero normal reads as both

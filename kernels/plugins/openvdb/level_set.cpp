@@ -27,49 +27,13 @@
 #include "kernels/geom/mesh_check.h"
 #include "kernels/geom/mesh_intersections.h"
 #include "kernels/geom/wall_grid.h"
+#include "kernels/plugins/openvdb/grid_frame.h"
 
 namespace selfsim {
 
+using namespace vdb;
+
 namespace {
-
-// OpenVDB's interrupter concept over our Progress: its conversions ask wasInterrupted() as they go.
-struct Interrupter {
-  Progress& progress;
-  void start(const char* = nullptr) {}
-  void end() {}
-  bool wasInterrupted(int = -1) { return progress.cancelled(); }
-};
-
-// OpenVDB converts meshes in single precision and indexes voxels with 32-bit integers, and its transforms
-// refuse voxels below about 1e-5. So every conversion works in a local frame: coordinates measured from the
-// shape's lowest corner in voxels (the grid's own voxel is 1), turned back into the caller's coordinates in
-// double precision; a .vdb file's transform gets the real voxel and corner.
-struct Frame {
-  Vec3 origin;
-  double voxel;
-  openvdb::Vec3s local(Vec3 p) const {
-    const Vec3 q = (1 / voxel) * (p - origin);
-    return {static_cast<float>(q.x), static_cast<float>(q.y), static_cast<float>(q.z)};
-  }
-  Vec3 world(const openvdb::Vec3s& q) const { return origin + voxel * Vec3{q.x(), q.y(), q.z()}; }
-};
-
-// OpenVDB's own exceptions as one-line errors.
-template <class Body>
-auto openvdb_call(Body&& body) {
-  try {
-    return body();
-  } catch (const openvdb::Exception& e) {
-    throw Error(std::string("OpenVDB: ") + e.what());
-  }
-}
-
-using Grid = openvdb::FloatGrid;
-
-void initialise_openvdb() {
-  static std::once_flag once;
-  std::call_once(once, [] { openvdb::initialize(); });
-}
 
 // The surface area of a volume's distinct boxes, spheres and meshes, each of which becomes a level set.
 double parts_area(const Volume& v) {
@@ -91,48 +55,6 @@ double parts_area(const Volume& v) {
   return a;
 }
 
-// The frame for `box` at `voxel`, refusing a voxel that is not positive and finite or below 1e-100, or a box
-// more than 2^20 voxels across (float coordinates then still resolve 1/16 of a voxel).
-Frame frame_for(const BBox3& box, double voxel) {
-  if (!(voxel > 0 && std::isfinite(voxel)))
-    throw Error("the voxel size (given as 'voxel', or 1/128 of the longest side) must be a positive number, got " +
-                number_text(voxel));
-  // Areas and volumes in voxels square and cube it: below 1e-100 they would underflow.
-  if (voxel < 1e-100)
-    throw Error("the voxel size " + number_text(voxel) +
-                " is too small for double precision (below 1e-100): scale the shape up");
-  const Vec3 s = box.size();
-  if (!std::isfinite(std::max({s.x, s.y, s.z})))
-    throw Error("the shape's extent overflows double precision (no side may reach about 1.8e308)");
-  const double across = std::max({s.x, s.y, s.z}) / voxel;
-  if (!(across <= 1 << 20))
-    throw Error("at voxel size " + number_text(voxel) + " the shape is " + number_text(across) +
-                " voxels across, more than 2^20 (give a larger 'voxel')");
-  return {box.min, voxel};
-}
-
-// Budget points of the OpenVDB trees a conversion of shapes with these corners and this area holds: the
-// band's voxels (16 bytes each with the leaves, `across` voxels across each wall), and the two levels of
-// inner nodes (4096 and 128 voxels wide, about 270 and 34 KB each) for every cell of those widths a corner
-// falls in or the area covers, three times over for the grids held at once. Scattered small parts each need
-// their own inner nodes, which area alone would miss.
-double tree_size(const std::vector<Vec3>& corners, double area, const Frame& f, double across = 7) {
-  double size = across * area / (f.voxel * f.voxel);
-  for (const double width : {4096.0, 128.0}) {
-    std::vector<std::array<std::int64_t, 3>> cells;
-    cells.reserve(corners.size());
-    for (Vec3 p : corners) {
-      const Vec3 q = (1 / (width * f.voxel)) * (p - f.origin);
-      cells.push_back({static_cast<std::int64_t>(q.x), static_cast<std::int64_t>(q.y), static_cast<std::int64_t>(q.z)});
-    }
-    std::sort(cells.begin(), cells.end());
-    const double distinct = static_cast<double>(std::unique(cells.begin(), cells.end()) - cells.begin());
-    const double covered = 2 * area / (width * width * f.voxel * f.voxel);
-    size += (distinct + covered) * 3 * (width > 1000 ? 270e3 : 34e3) / 16;
-  }
-  return size;
-}
-
 // The exact boundary of a box, sphere or mesh.
 Mesh exact_boundary(const Volume& v, double voxel) {
   switch (v.kind) {
@@ -143,27 +65,6 @@ Mesh exact_boundary(const Volume& v, double voxel) {
     default:
       return *v.mesh;
   }
-}
-
-// A mesh's level set (closed) or unsigned distance (open), in frame f with voxel 1, `band` voxels either side.
-// m's distance grid in frame f: a level set `band` voxels to each side (or `inside` voxels inside, when given),
-// or for an open mesh its unsigned distance.
-Grid::Ptr mesh_grid(const Mesh& m, bool closed, const Frame& f, Interrupter& interrupt, float band = 3,
-                    float inside = 0) {
-  std::vector<openvdb::Vec3s> points;
-  points.reserve(m.points.size());
-  for (Vec3 p : m.points) points.push_back(f.local(p));
-  std::vector<openvdb::Vec3I> triangles;
-  triangles.reserve(m.triangles.size());
-  for (const Triangle& t : m.triangles) triangles.emplace_back(t[0], t[1], t[2]);
-  const auto unit = openvdb::math::Transform::createLinearTransform(1.0);
-  Grid::Ptr g =
-      !closed ? openvdb::tools::meshToUnsignedDistanceField<Grid>(interrupt, *unit, points, triangles, {}, band)
-      : inside > 0
-          ? openvdb::tools::meshToSignedDistanceField<Grid>(interrupt, *unit, points, triangles, {}, band, inside)
-          : openvdb::tools::meshToLevelSet<Grid>(interrupt, *unit, points, triangles, band);
-  if (interrupt.progress.cancelled()) throw Cancelled();
-  return g;
 }
 
 // The level set of any volume in frame f, `band` voxels either side of every part: parts converted, then
@@ -193,32 +94,6 @@ void part_corners(const Volume& v, std::vector<Vec3>& out) {
         out.push_back({k & 1 ? b.max.x : b.min.x, k & 2 ? b.max.y : b.min.y, k & 4 ? b.max.z : b.min.z});
     }
   }
-}
-
-// The zero surface of a level set in frame f as triangles facing outwards, each quad split along its
-// shorter diagonal.
-Mesh zero_surface(const Grid& g, const Frame& f) {
-  std::vector<openvdb::Vec3s> points;
-  std::vector<openvdb::Vec3I> triangles;
-  std::vector<openvdb::Vec4I> quads;
-  openvdb::tools::volumeToMesh(g, points, triangles, quads, 0.0, 0.0);
-  Mesh m;
-  m.points.reserve(points.size());
-  for (const auto& p : points) m.points.push_back(f.world(p));
-  m.triangles.reserve(triangles.size() + 2 * quads.size());
-  for (const auto& t : triangles) m.triangles.push_back({t[0], t[1], t[2]});
-  for (const auto& q : quads) {
-    if (norm(m.points[q[0]] - m.points[q[2]]) <= norm(m.points[q[1]] - m.points[q[3]])) {
-      m.triangles.push_back({q[0], q[1], q[2]});
-      m.triangles.push_back({q[0], q[2], q[3]});
-    } else {
-      m.triangles.push_back({q[0], q[1], q[3]});
-      m.triangles.push_back({q[1], q[2], q[3]});
-    }
-  }
-  if (enclosed_volume(m) < 0)
-    for (Triangle& t : m.triangles) std::swap(t[1], t[2]);
-  return m;
 }
 
 // Where a shape's surface passes exactly through lattice points (a sphere of radius 1 at voxel 0.04, a box's

@@ -15,6 +15,8 @@ const selfsim::OpenVdbTable table{
     [](const selfsim::WallGrid& g) { return g.voxel(); },
     selfsim::io::read_vdb_info,
     selfsim::io::read_vdb_surface,
+    selfsim::print::grid_thicken_size,
+    selfsim::print::thicken_on_grid,
 };
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "kernels/geom/level_set.h"
 #include "kernels/geom/wall_grid.h"
 #include "kernels/io/vdb_read.h"
+#include "kernels/print/grid_thicken.h"
 
 namespace selfsim {
 
@@ -23,6 +24,8 @@ struct OpenVdbTable {
   double (*wall_voxel)(const WallGrid&);
   std::vector<io::VdbGridInfo> (*read_vdb_info)(const std::filesystem::path&);
   io::VdbSurface (*read_vdb_surface)(const std::filesystem::path&, const std::string&, const std::filesystem::path&);
+  double (*grid_thicken_size)(const Mesh&, const print::GridThickenOptions&);
+  Mesh (*thicken_on_grid)(const Mesh&, const print::GridThickenOptions&, Progress&);
 };
 
 inline constexpr const char* openvdb_plugin = "selfsim_openvdb.so";

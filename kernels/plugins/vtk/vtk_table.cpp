@@ -2,10 +2,11 @@
 #include "kernels/plugins/vtk/vtk_table.h"
 
 #include "kernels/io/read.h"
+#include "kernels/print/decimate.h"
 
 namespace {
 
-const selfsim::VtkTable table{selfsim::io::read_vtk};
+const selfsim::VtkTable table{selfsim::io::read_vtk, selfsim::print::decimate};
 
 }  // namespace
 

@@ -87,3 +87,31 @@ TEST(WallRays, RefusesANonPositiveStep) {
                             {.step = 0, .wall_cap = 1, .gap_cap = 1}, w, g, no_progress()),
                Error);
 }
+
+TEST(WallRays, TheFarFlankOfAGrooveIsNotAGapButFacingWallsAre) {
+  // A V-shaped groove opening upwards, 60 degrees wide, the solid below its flanks: the ray from a point on
+  // one flank along its normal meets the other flank at 120 degrees to its normal (it does not face back).
+  const auto groove = [](Vec3 p) {
+    return std::max(0.866025403784 * p.x - 0.5 * p.z, -0.866025403784 * p.x - 0.5 * p.z);
+  };
+  const Vec3 on{0.05, 0, 0.0866025403784}, n{-0.866025403784, 0, 0.5};
+  EXPECT_EQ(rays({on}, {n}, of(+groove), {.step = 0.005, .wall_cap = 1, .gap_cap = 1}).gap[0], 1);
+  // Without the facing rule the ray reads the groove's width there.
+  EXPECT_NEAR(rays({on}, {n}, of(+groove), {.step = 0.005, .wall_cap = 1, .gap_cap = 1, .facing = -2}).gap[0],
+              0.173205080757, 1e-6);
+  // A slot 0.3 wide between two blocks: its walls face each other, a gap.
+  const auto slot = [](Vec3 p) { return std::max(-p.x, p.x - 0.3); };
+  EXPECT_NEAR(rays({{0, 0, 0}}, {{1, 0, 0}}, of(+slot), {.step = 0.01, .wall_cap = 1, .gap_cap = 1}).gap[0], 0.3, 1e-9);
+}
+
+TEST(WallRays, AWedgesOtherFaceIsNotAWallUnlessItFaces) {
+  // A wedge pointing up with a 60-degree edge (its faces' normals 120 degrees apart), solid below: the ray
+  // inwards from one face leaves through the other at 60 degrees to facing along it: not a thin wall.
+  const auto wedge = [](Vec3 p) {
+    return std::min(-(0.866025403784 * p.x + 0.5 * p.z), -(-0.866025403784 * p.x + 0.5 * p.z));
+  };
+  const Vec3 n{0.866025403784, 0, 0.5}, on{0.1, 0, -0.173205080757};
+  EXPECT_EQ(rays({on}, {n}, of(+wedge), {.step = 0.005, .wall_cap = 1, .gap_cap = 1}).wall[0], 1);
+  EXPECT_NEAR(rays({on}, {n}, of(+wedge), {.step = 0.005, .wall_cap = 1, .gap_cap = 1, .facing = -2}).wall[0],
+              0.346410161514, 1e-6);
+}
