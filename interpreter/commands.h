@@ -17,6 +17,9 @@ struct UsageError : std::runtime_error {
 int run_command(const RunConfig& config);
 int diff_command(const std::string& a, const std::string& b, double tol);
 int info_command(const std::string& file);
+// `selfsim info --print FILE [--profile fdm|sla]`: the print check of a solid in millimetres; exit 0 when it
+// passes, 1 with its findings, 2 when the file cannot be read or is not a closed solid.
+int print_info_command(const std::string& file, const std::string& profile);
 
 // `selfsim preview FILE... [-o DIR] [-q]`.
 struct PreviewConfig {

@@ -17,6 +17,7 @@
 #include "kernels/io/read.h"
 #include "kernels/io/series_file.h"
 #include "kernels/io/vdb_read.h"
+#include "kernels/print/print_check.h"
 
 namespace selfsim::interp {
 
@@ -140,6 +141,19 @@ int info_command(const std::string& given) {
       std::printf("cell field: %s (%d component%s)\n", shown_text(name, 200).c_str(), f.components,
                   f.components == 1 ? "" : "s");
     return 0;
+  } catch (...) {
+    return report("info");
+  }
+}
+
+int print_info_command(const std::string& file, const std::string& profile) {
+  try {
+    const print::PrintRules rules = print::PrintRules::named(profile);
+    const Mesh m = io::dataset_mesh(io::read_dataset(file));
+    const print::PrintReport r = print::check_print(m, rules, PointBudget{}, no_progress());
+    std::printf("file: %s\n%s\n", shown_text(file, 4096).c_str(), r.summary().c_str());
+    for (const std::string& f : r.findings) std::printf("  - %s\n", f.c_str());
+    return r.passes() ? 0 : 1;
   } catch (...) {
     return report("info");
   }

@@ -27,13 +27,17 @@ usage:
       --no-view             do not write view.py, the ParaView view of the run's VTK outputs
                             (written whenever the run saved a .vtp, .vtu, .pvd or .vtp.series)
       -q, --quiet           print nothing but errors
-  selfsim diff A B [--tol T] compare two geometry files (.vtp .vtu .svg .stl .obj .ply) point by point,
+  selfsim diff A B [--tol T] compare two geometry files (.vtp .vtu .svg .stl .3mf .obj .ply) point by point,
                              cell by cell and field by field; T is relative (default 1e-9).
                              Exit 0 same, 1 different, 2 error
   selfsim info FILE          points, cells, bounding box and fields of a geometry file, and for a
                              surface whether it is a closed manifold; for a .vdb, each grid's name,
                              class, value type, voxel size, active voxels and bounding boxes; for a
                              .pvd or .vtp.series, its steps and then the last one
+  selfsim info --print FILE [--profile fdm|sla]
+                             the print check of a closed solid in millimetres (.stl .3mf .obj .ply
+                             .vtp): closed, crossing, thinnest wall, narrowest gap, triangles, size.
+                             Exit 0 passes, 1 with its findings, 2 error
   selfsim preview FILE... [-o DIR] [-q]
                              a PNG picture of each file (.vtp .vtu .svg .stl .obj .ply, .vdb as its
                              surface, .pvd/.vtp.series as its last step): NAME.png beside it, or in DIR. Curves and flat drawings from above,
@@ -76,6 +80,16 @@ int main(int argc, char** argv) {
       return run_command(parse_run_arguments(rest));
     }
     if (command == "info") {
+      if (!rest.empty() && rest[0] == "--print") {
+        std::string profile = "fdm";
+        if (rest.size() == 4 && rest[2] == "--profile")
+          profile = rest[3];
+        else if (rest.size() != 2)
+          throw UsageError("info --print expects one file, and optionally --profile fdm|sla");
+        if (profile != "fdm" && profile != "sla")
+          throw UsageError("--profile expects fdm or sla, got '" + profile + "'");
+        return print_info_command(rest[1], profile);
+      }
       if (rest.size() != 1) throw UsageError("info expects one file");
       return info_command(rest[0]);
     }

@@ -21,7 +21,8 @@ namespace {
 Dataset read_by_extension(const std::filesystem::path& file, std::string ext) {
   try {
     ext = lower_case(std::move(ext));
-    const bool vtk = ext == ".vtp" || ext == ".vtu", mesh = ext == ".stl" || ext == ".obj" || ext == ".ply";
+    const bool vtk = ext == ".vtp" || ext == ".vtu",
+               mesh = ext == ".stl" || ext == ".obj" || ext == ".ply" || ext == ".3mf";
     if (vtk || mesh || ext == ".svg") {
       // selfsim never writes an empty file, and two broken files must never compare as "same".
       Dataset d = vtk ? read_vtk(file, ext == ".vtu") : mesh ? read_mesh_file(file, ext) : read_svg(file);
@@ -29,7 +30,7 @@ Dataset read_by_extension(const std::filesystem::path& file, std::string ext) {
       return d;
     }
     const RegularFile exists(file);  // a missing or unreadable file says so first
-    throw Error(cannot_read(file, "expected a .vtp, .vtu, .svg, .stl, .obj or .ply file"));
+    throw Error(cannot_read(file, "expected a .vtp, .vtu, .svg, .stl, .3mf, .obj or .ply file"));
   } catch (const Error& e) {
     const std::string message = e.what();
     if (message.rfind("cannot read '", 0) == 0) throw;

@@ -17,7 +17,7 @@ Dataset read_mesh_file(const std::filesystem::path& file, const std::string& ext
     throw Error("the file is larger than the reading limit for mesh files (" +
                 std::to_string(read_budget_bytes() / 16 >> 20) + " MiB, a sixteenth of " +
                 std::to_string(read_budget_bytes() >> 20) + " MiB: reading takes up to 16 bytes per file byte)");
-  Dataset d = ext == ".stl" ? read_stl(f) : ext == ".obj" ? read_obj(f) : read_ply(f);
+  Dataset d = ext == ".stl" ? read_stl(f) : ext == ".obj" ? read_obj(f) : ext == ".3mf" ? read_3mf(f) : read_ply(f);
   check_dataset(d);
   return d;
 }

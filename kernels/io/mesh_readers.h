@@ -12,5 +12,6 @@ namespace selfsim::io {
 Dataset read_stl(const RegularFile& f);
 Dataset read_obj(const RegularFile& f);
 Dataset read_ply(const RegularFile& f);
+Dataset read_3mf(const RegularFile& f);  // through lib3mf (threemf_read.cpp): millimetres, every mesh object
 
 }  // namespace selfsim::io

@@ -131,5 +131,25 @@ if grep -q "crossing" "$tmp/out"; then echo "FAIL: info tet names a crossing"; f
 expect 1 "diff meshes" -- "$selfsim" diff "$tmp/m/tet.vtp" "$tmp/m/open.vtu"
 contains "$tmp/out" "cell count differs: 4 vs 3" "diff meshes message"
 
+# The print check from the command line (issue 25): a 20 mm cube passes, a 0.3 mm plate does not (exit 1,
+# its finding), an open surface is an error (exit 2); .3mf files read back for info and diff.
+cat >"$tmp/print.lua" <<'LUA'
+local cube = solid.size(mesh { points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } },
+                               triangles = { { 1, 3, 2 }, { 1, 2, 4 }, { 2, 3, 4 }, { 3, 1, 4 } } }, 20)
+save(cube, "tet.3mf")
+save(solid.relief(polygon { { 0, 0 }, { 10, 0 }, { 10, 10 }, { 0, 10 } }, { height = 0.3, check = false }), "plate.stl")
+LUA
+expect 0 "run print recipe" -- "$selfsim" run "$tmp/print.lua" -o "$tmp/p" -q
+expect 0 "info --print passes" -- "$selfsim" info --print "$tmp/p/tet.3mf"
+contains "$tmp/out" "print check (fdm): passes: closed" "print check passes"
+expect 1 "info --print thin" -- "$selfsim" info --print "$tmp/p/plate.stl" --profile sla
+contains "$tmp/out" "walls thinner than 0.4 mm" "print check thin walls"
+expect 2 "info --print open" -- "$selfsim" info --print "$tmp/m/open.vtu"
+contains "$tmp/err" "the mesh is open" "print check open"
+expect 2 "info --print bad profile" -- "$selfsim" info --print "$tmp/p/tet.3mf" --profile laser
+expect 0 "info 3mf" -- "$selfsim" info "$tmp/p/tet.3mf"
+contains "$tmp/out" "surface: closed manifold, 1 component" "info 3mf closed"
+expect 0 "diff 3mf" -- "$selfsim" diff "$tmp/p/tet.3mf" "$tmp/p/tet.3mf"
+
 echo "$failures failures"
 [ "$failures" = 0 ]

@@ -1,0 +1,96 @@
+// Reading .3mf files back (selfsim diff, selfsim info) with lib3mf's own reader: every mesh object, its
+// points converted to millimetres from the model's unit, its triangles, and the object's name as the cell
+// field `object` (the objects in file order, counted from 0). Build items' placements are not applied:
+// objects are compared as they are defined. Like threemf_file.cpp, lib3mf's C interface stays in this file.
+#include <Model/COM/NMR_DLLInterfaces.h>
+
+#include <string>
+#include <vector>
+
+#include "kernels/geom/error.h"
+#include "kernels/io/mesh_readers.h"
+
+namespace selfsim::io {
+
+namespace {
+
+struct Handle {
+  NMR::PLib3MFBase* p = nullptr;
+  ~Handle() {
+    if (p != nullptr) NMR::lib3mf_release(p);
+  }
+};
+
+void check(LIB3MFRESULT result, NMR::PLib3MFBase* handle, const char* what) {
+  if (result == LIB3MF_OK) return;
+  DWORD code = 0;
+  LPCSTR message = nullptr;
+  std::string reason = "error " + std::to_string(result);
+  if (handle != nullptr && NMR::lib3mf_getlasterror(handle, &code, &message) == LIB3MF_OK && message != nullptr)
+    reason = message;
+  throw Error(std::string("lib3mf could not ") + what + ": " + reason);
+}
+
+// Millimetres per unit of a 3MF model (its `unit` attribute).
+double millimetres(DWORD unit) {
+  switch (unit) {
+    case NMR::MODELUNIT_MICROMETER:
+      return 1e-3;
+    case NMR::MODELUNIT_CENTIMETER:
+      return 10;
+    case NMR::MODELUNIT_INCH:
+      return 25.4;
+    case NMR::MODELUNIT_FOOT:
+      return 304.8;
+    case NMR::MODELUNIT_METER:
+      return 1000;
+    default:
+      return 1;
+  }
+}
+
+}  // namespace
+
+Dataset read_3mf(const RegularFile& f) {
+  std::vector<BYTE> bytes(f.size());
+  if (f.read_at(0, bytes.data(), bytes.size()) != bytes.size()) throw Error("the file changed while it was read");
+  Handle model, reader, meshes;
+  check(NMR::lib3mf_createmodel(&model.p), nullptr, "create a model");
+  check(NMR::lib3mf_model_queryreader(model.p, "3mf", &reader.p), model.p, "make a reader");
+  check(NMR::lib3mf_reader_readfrombuffer(reader.p, bytes.data(), bytes.size()), reader.p, "read it");
+  DWORD unit = NMR::MODELUNIT_MILLIMETER;
+  check(NMR::lib3mf_model_getunit(model.p, &unit), model.p, "read its unit");
+  const double scale = millimetres(unit);
+  check(NMR::lib3mf_model_getmeshobjects(model.p, &meshes.p), model.p, "list its meshes");
+  Dataset d;
+  d.shapes = CellShapes::polygons;
+  FieldValues object;
+  BOOL next = 0;
+  for (int k = 0; NMR::lib3mf_resourceiterator_movenext(meshes.p, &next) == LIB3MF_OK && next; ++k) {
+    Handle mesh;
+    check(NMR::lib3mf_resourceiterator_getcurrent(meshes.p, &mesh.p), meshes.p, "open a mesh");
+    DWORD nv = 0, nt = 0;
+    check(NMR::lib3mf_meshobject_getvertexcount(mesh.p, &nv), mesh.p, "count its points");
+    check(NMR::lib3mf_meshobject_gettrianglecount(mesh.p, &nt), mesh.p, "count its triangles");
+    std::vector<NMR::MODELMESHVERTEX> points(nv);
+    std::vector<NMR::MODELMESHTRIANGLE> triangles(nt);
+    if (nv > 0) check(NMR::lib3mf_meshobject_getvertices(mesh.p, points.data(), nv, &nv), mesh.p, "read its points");
+    if (nt > 0)
+      check(NMR::lib3mf_meshobject_gettriangleindices(mesh.p, triangles.data(), nt, &nt), mesh.p, "read its triangles");
+    const std::size_t base = d.points.size();
+    for (const auto& p : points)
+      d.points.push_back({scale * p.m_fPosition[0], scale * p.m_fPosition[1], scale * p.m_fPosition[2]});
+    for (const auto& t : triangles) {
+      for (DWORD i : t.m_nIndices) {
+        if (i >= nv) throw Error("a triangle of mesh " + std::to_string(k + 1) + " names point " + std::to_string(i));
+        d.cell_points.push_back(base + i);
+      }
+      d.cell_ends.push_back(d.cell_points.size());
+      object.values.push_back(k);
+    }
+  }
+  d.cell_fields["object"] = std::move(object);
+  return d;
+}
+
+}  // namespace selfsim::io
