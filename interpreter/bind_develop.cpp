@@ -6,6 +6,7 @@
 #include "interpreter/growth.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
+#include "interpreter/print_options.h"
 #include "interpreter/run_context.h"
 #include "kernels/develop/develop.h"
 #include "kernels/develop/rounded_corners.h"
@@ -131,6 +132,9 @@ int develop(lua_State* L) {
       const std::string message = recipe_where(L) + "develop: " + w;
       lua_warning(L, message.c_str(), 0);
     }
+    // A solid given a size in millimetres is meant for printing: the print check says if it is not printable.
+    if (opt.size > 0 && opt.thickness > 0 && opt.check)
+      warn_unless_printable(L, "develop", *test_geometry<Mesh>(L, -1), PrintCheckOption{});
     return 1;
   });
 }
