@@ -66,4 +66,34 @@ Dataset receive_dataset(PipeIn& in, std::uint64_t max_values) {
   return d;
 }
 
+namespace {
+
+template <class T>
+void put_values(PipeOut& out, const std::vector<T>& values) {
+  put_count(out, values.size());
+  if (!values.empty()) out.write(values.data(), values.size() * sizeof(T));
+}
+
+void put_fields(PipeOut& out, const std::map<std::string, FieldValues>& fields) {
+  put_count(out, fields.size());
+  for (const auto& [name, f] : fields) {
+    put_name(out, name);
+    put_count(out, static_cast<std::uint64_t>(f.components));
+    put_values(out, f.values);
+  }
+}
+
+}  // namespace
+
+void send_dataset(PipeOut& out, const Dataset& d) {
+  put_count(out, static_cast<std::uint64_t>(d.shapes));
+  put_values(out, d.points);
+  std::vector<std::uint64_t> ids(d.cell_ends.begin(), d.cell_ends.end());
+  put_values(out, ids);
+  ids.assign(d.cell_points.begin(), d.cell_points.end());
+  put_values(out, ids);
+  put_fields(out, d.point_fields);
+  put_fields(out, d.cell_fields);
+}
+
 }  // namespace selfsim::io

@@ -24,6 +24,9 @@ inline void put_name(PipeOut& out, const std::string& name) {
   out.write(name.data(), name.size());
 }
 
+// Sends a Dataset the child holds (a reader that builds one rather than writing from its own arrays).
+void send_dataset(PipeOut& out, const Dataset& d);
+
 // Refuses counts over max_values (the reader's memory budget in values) before allocating for them.
 Dataset receive_dataset(PipeIn& in, std::uint64_t max_values);
 

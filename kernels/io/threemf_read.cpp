@@ -4,11 +4,15 @@
 // objects are compared as they are defined. Like threemf_file.cpp, lib3mf's C interface stays in this file.
 #include <Model/COM/NMR_DLLInterfaces.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include "kernels/geom/error.h"
+#include "kernels/io/dataset_pipe.h"
 #include "kernels/io/mesh_readers.h"
+#include "kernels/io/read.h"
 
 namespace selfsim::io {
 
@@ -49,9 +53,8 @@ double millimetres(DWORD unit) {
   }
 }
 
-}  // namespace
-
-Dataset read_3mf(const RegularFile& f) {
+// The file parsed by lib3mf, in this process.
+Dataset parse_3mf(const RegularFile& f) {
   std::vector<BYTE> bytes(f.size());
   if (f.read_at(0, bytes.data(), bytes.size()) != bytes.size()) throw Error("the file changed while it was read");
   Handle model, reader, meshes;
@@ -90,6 +93,33 @@ Dataset read_3mf(const RegularFile& f) {
     }
   }
   d.cell_fields["object"] = std::move(object);
+  return d;
+}
+
+}  // namespace
+
+Dataset read_3mf(const RegularFile& f) {
+  // lib3mf trusts the file (a zip whose model can inflate without bound): it parses in a child process
+  // with limits, as VTK's reader does (kernels/plugins/vtk/vtk_read.cpp), and the Dataset comes back over a
+  // pipe; a crash or a runaway allocation ends the child, not the run.
+  ChildLimits limits;
+  limits.what = "the 3MF reader";
+  limits.memory_bytes = std::min<std::uint64_t>((std::uint64_t{1} << 30) + 64 * f.size(), 3 * read_budget_bytes());
+  limits.seconds = 30 + static_cast<double>(f.size()) / (4 << 20);
+  Dataset d;
+  run_in_child(
+      limits,
+      [&](PipeOut& out) {
+        try {
+          const Dataset parsed = parse_3mf(f);
+          send_success(out);
+          send_dataset(out, parsed);
+        } catch (const std::exception& e) {
+          send_failure(out, e.what());
+        }
+        return 0;
+      },
+      [&](PipeIn& in) { d = receive_answer(in, limits.what, read_budget_bytes() / 8); });
   return d;
 }
 

@@ -348,7 +348,14 @@ TEST(ReadFiles, GarbageEmptyAndSpecialFilesAreErrors) {
     expect_read_error(dir.path / (std::string("missing") + ext), "no such file");
   }
   write(dir.path / "c.txt", "x");
-  expect_read_error(dir.path / "c.txt", "expected a .vtp, .vtu, .svg, .stl, .obj or .ply file");
+  expect_read_error(dir.path / "c.txt", "expected a .vtp, .vtu, .svg, .stl, .3mf, .obj or .ply file");
+  // A .3mf that is not a zip, or a zip of nothing, is lib3mf's refusal in one line.
+  std::string garbage;
+  for (int i = 0; i < 3000; ++i) garbage += static_cast<char>((i * 7919) % 251);
+  write(dir.path / "garbage.3mf", garbage);
+  expect_read_error(dir.path / "garbage.3mf", "lib3mf could not read it");
+  write(dir.path / "empty.3mf", "");
+  expect_read_error(dir.path / "empty.3mf", "cannot read");
 }
 
 TEST(ReadSvg, PathDataMustBeFiniteAbsolutePairs) {
