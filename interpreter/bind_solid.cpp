@@ -195,7 +195,7 @@ int solid_decimate(lua_State* L) {
     const Held<Mesh> m = mesh_argument(L, call);
     Options o(L, 2);
     o.require("triangles", "how many triangles to keep, e.g. triangles = 1000000");
-    const double triangles = o.number("triangles", 0);
+    const double triangles = static_cast<double>(o.integer("triangles", 0, 4, 1LL << 40));
     o.finish();
     check_run_budget(L, budget_size(*m), "the decimated copy");
     push_geometry(L, print::decimate(*m, triangles, RunContext::of(L)));

@@ -2,218 +2,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <iterator>
 #include <numeric>
 #include <set>
 #include <string>
 #include <utility>
 
-#include "kernels/geom/bbox.h"
 #include "kernels/geom/cancellable_sort.h"
-#include "kernels/geom/check.h"
 #include "kernels/geom/error.h"
+#include "kernels/geom/region_check.h"
 
 namespace selfsim {
 
 namespace {
 
-using Index = std::uint32_t;
+using namespace region_detail;
 using Tri = std::array<Index, 3>;
-constexpr Index none = 0xffffffffu;
-
-// ---- Exact orientation: the sweep's order of edges and the pieces' ear tests must never contradict each
-// other, or the tree of edges and the faces fall apart on collinear input (a comb's teeth, a staircase).
-
-void two_sum(double a, double b, double& s, double& e) {
-  s = a + b;
-  const double bv = s - a, av = s - bv;
-  e = (a - av) + (b - bv);
-}
-
-// The sign of the turn a → b → c: 1 left (counter-clockwise), -1 right, 0 on one line, exactly. The
-// floating-point determinant decides when it is beyond its error bound (Shewchuk's ccwerrboundA); else the
-// six products of coordinates it expands to are summed exactly (each split into two doubles with fma) as a
-// non-overlapping expansion, whose largest component has the sign.
-int orientation(Vec2 a, Vec2 b, Vec2 c) {
-  const double l = (b.x - a.x) * (c.y - a.y), r = (b.y - a.y) * (c.x - a.x), det = l - r;
-  const double bound = 3.3306690738754716e-16 * (std::abs(l) + std::abs(r));
-  if (det > bound) return 1;
-  if (det < -bound) return -1;
-  const double factors[6][2] = {{b.x, c.y}, {-b.x, a.y}, {-a.x, c.y}, {-b.y, c.x}, {a.x, b.y}, {a.y, c.x}};
-  double e[12];
-  int n = 0;
-  auto grow = [&](double q) {  // Shewchuk's Grow-Expansion with zero elimination, in place
-    int m = 0;
-    for (int i = 0; i < n; ++i) {
-      double s, err;
-      two_sum(q, e[i], s, err);
-      q = s;
-      if (err != 0) e[m++] = err;
-    }
-    if (q != 0) e[m++] = q;
-    n = m;
-  };
-  for (const auto& f : factors) {
-    const double p = f[0] * f[1];
-    grow(std::fma(f[0], f[1], -p));
-    grow(p);
-  }
-  return n == 0 ? 0 : (e[n - 1] > 0 ? 1 : -1);
-}
-
-// The sweep's order: by y, ties by x (as if the sweep line were turned by an infinitesimal angle).
-bool before(Vec2 a, Vec2 b) { return a.y < b.y || (a.y == b.y && a.x < b.x); }
-
-std::string coordinates(Vec2 p) { return "(" + number_text(p.x) + ", " + number_text(p.y) + ")"; }
-
-// Whether segments a-b and c-d share a point (crossing, touching or overlapping), exactly.
-bool segments_touch(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  const int d1 = orientation(a, b, c), d2 = orientation(a, b, d), d3 = orientation(c, d, a), d4 = orientation(c, d, b);
-  if (d1 * d2 < 0 && d3 * d4 < 0) return true;
-  auto on = [](Vec2 p, Vec2 q, Vec2 r) {  // r, on the line p-q, lies within the segment
-    return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) && std::min(p.y, q.y) <= r.y &&
-           r.y <= std::max(p.y, q.y);
-  };
-  return (d1 == 0 && on(a, b, c)) || (d2 == 0 && on(a, b, d)) || (d3 == 0 && on(c, d, a)) || (d4 == 0 && on(c, d, b));
-}
-
-// The input's paths as rings of vertices: succ/pred in the input's order, before any turning around.
-struct Rings {
-  const Polyline* curve = nullptr;
-  std::vector<Vec2> pts;
-  std::vector<Index> source, path, succ, pred;
-
-  // "point 3 (0.5, 1)": the vertex's point in its input path, counted from 1.
-  std::string point(Index v) const {
-    return "point " + std::to_string(source[v] - curve->path_begin(path[v]) + 1) + " " + coordinates(pts[v]);
-  }
-};
-
-Rings prepare(const Polyline& c, const std::string& what, Progress& progress) {
-  if (c.paths() == 0) throw Error(what + " needs at least one closed curve");
-  if (c.points.size() >= none) throw Error(what + " of 4294967295 points or more is not supported");
-  Rings r;
-  r.curve = &c;
-  r.pts.reserve(c.points.size());
-  r.source.reserve(c.points.size());
-  for (std::size_t p = 0; p < c.paths(); ++p) {
-    const auto span = c.path(p);
-    const std::string name = "path " + std::to_string(p + 1);
-    for (std::size_t k = 0; k < span.size(); ++k)
-      if (!is_finite(span[k]))
-        throw Error(what + " needs finite points: point " + std::to_string(k + 1) + " of " + name + " is " +
-                    coordinates(span[k]));
-    if (span.size() < 3)
-      throw Error(what + " needs paths of at least 3 distinct points: " + name + " has " + std::to_string(span.size()) +
-                  " points");
-    if (!closed_path(span))
-      throw Error(what + " needs closed curves: " + name + " is open (it ends at " + coordinates(span.back()) +
-                  ", not at its start)");
-    const Index start = static_cast<Index>(r.pts.size());
-    for (std::size_t k = 0; k + 1 < span.size(); ++k) {  // the closing repeat of the start dropped
-      if (r.pts.size() > start && r.pts.back() == span[k]) continue;
-      r.pts.push_back(span[k]);
-      r.source.push_back(static_cast<Index>(c.path_begin(p) + k));
-    }
-    while (r.pts.size() > start + 1u && r.pts.back() == r.pts[start]) {
-      r.pts.pop_back();
-      r.source.pop_back();
-    }
-    const Index end = static_cast<Index>(r.pts.size());
-    if (end - start < 3)
-      throw Error(what + " needs paths of at least 3 distinct points: " + name + " has " + std::to_string(end - start) +
-                  " distinct points");
-    // All on one line (exactly): no area. A bowtie's lobes may cancel to none, but it is refused as crossing.
-    bool flat = true;
-    for (Index v = start + 2; v < end && flat; ++v) flat = orientation(r.pts[start], r.pts[start + 1], r.pts[v]) == 0;
-    if (flat)
-      throw Error(what + " needs curves that enclose an area: " + name + " encloses none (its points lie on one line)");
-    for (Index v = start; v < end; ++v) {
-      r.path.push_back(static_cast<Index>(p));
-      r.succ.push_back(v + 1 == end ? start : v + 1);
-      r.pred.push_back(v == start ? end - 1 : v - 1);
-    }
-    if ((p & 0xffff) == 0xffff) progress.step(0.05 * static_cast<double>(end) / static_cast<double>(c.points.size()));
-  }
-  return r;
-}
-
-// Refuses paths that cross or touch themselves or each other: each segment (vertex v to succ[v]) is listed in
-// the cells of a uniform grid it passes through (cells of about twice the median segment, at most ~4 per
-// segment), and the segments sharing a cell are tested pairwise. Neighbouring segments of a path always
-// share their common point; they are at fault only when they fold back over each other.
-void check_apart(const Rings& r, const std::string& what, Progress& progress) {
-  const std::size_t n = r.pts.size();
-  const auto& p = r.pts;
-  BBox2 box;
-  std::vector<double> lengths(n);
-  for (std::size_t v = 0; v < n; ++v) {
-    box.add(p[v]);
-    lengths[v] = norm(p[r.succ[v]] - p[v]);
-  }
-  const Vec2 size = box.size();
-  if (!(std::isfinite(size.x) && std::isfinite(size.y)))
-    throw Error(what + ": the curves' extent overflows (coordinates up to about 1e300 in size are supported)");
-  std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(n / 2), lengths.end());
-  double cell = std::max(2 * lengths[n / 2], 1e-12 * std::max(size.x, size.y));
-  const double most = std::min(4.0 * static_cast<double>(n) + 64, 16777216.0);
-  while ((size.x / cell + 1) * (size.y / cell + 1) > most) cell *= 1.5;
-  const auto nx = static_cast<std::uint64_t>(size.x / cell) + 1, ny = static_cast<std::uint64_t>(size.y / cell) + 1;
-  auto column = [&](double x) {
-    return static_cast<std::uint64_t>(std::clamp(std::floor((x - box.min.x) / cell), 0.0, nx - 1.0));
-  };
-  auto row = [&](double y) {
-    return static_cast<std::uint64_t>(std::clamp(std::floor((y - box.min.y) / cell), 0.0, ny - 1.0));
-  };
-  std::vector<std::uint64_t> entries;  // cell << 32 | segment
-  entries.reserve(3 * n);
-  for (Index s = 0; s < n; ++s) {
-    Vec2 a = p[s], b = p[r.succ[s]];
-    if (a.x > b.x) std::swap(a, b);
-    const std::uint64_t i0 = column(a.x), i1 = column(b.x);
-    // Column by column, the rows between the segment's lowest and highest y there, widened by far more than a
-    // rounding so that a cell it only grazes is listed too.
-    const double slope = b.x > a.x ? (b.y - a.y) / (b.x - a.x) : 0;
-    const double pad = 1e-9 * cell * (1 + std::abs(slope));
-    for (std::uint64_t i = i0; i <= i1; ++i) {
-      const double x0 = i == i0 ? a.x : box.min.x + static_cast<double>(i) * cell;
-      const double x1 = i == i1 ? b.x : box.min.x + static_cast<double>(i + 1) * cell;
-      const double y0 = i == i0 ? a.y : a.y + slope * (x0 - a.x), y1 = i == i1 ? b.y : a.y + slope * (x1 - a.x);
-      for (std::uint64_t j = row(std::min(y0, y1) - pad), hi = row(std::max(y0, y1) + pad); j <= hi; ++j)
-        entries.push_back((j * nx + i) << 32 | s);
-    }
-  }
-  cancellable_sort(entries.begin(), entries.end(), std::less<>(), progress);
-  auto meet = [&](Index s, Index t) {
-    const Index s1 = r.succ[s], t1 = r.succ[t];
-    if (s1 == t || t1 == s) {  // neighbours along one path: at fault when they fold back over each other
-      const Index shared = s1 == t ? t : s, a = s1 == t ? s : t, b = s1 == t ? t1 : s1;
-      return orientation(p[shared], p[a], p[b]) == 0 && dot(p[a] - p[shared], p[b] - p[shared]) > 0;
-    }
-    return segments_touch(p[s], p[s1], p[t], p[t1]);
-  };
-  std::pair<Index, Index> bad{none, none};
-  std::size_t work = 0;
-  for (std::size_t begin = 0, end = 0; begin < entries.size(); begin = end) {
-    for (end = begin; end < entries.size() && entries[end] >> 32 == entries[begin] >> 32;) ++end;
-    for (std::size_t i = begin; i < end; ++i)
-      for (std::size_t j = i + 1; j < end; ++j) {
-        if ((++work & 0xffff) == 0) progress.step(0.05 + 0.3 * static_cast<double>(begin) / entries.size());
-        const auto s = static_cast<Index>(entries[i]), t = static_cast<Index>(entries[j]);
-        if (std::pair(s, t) < bad && meet(s, t)) bad = {s, t};
-      }
-  }
-  if (bad.first == none) return;
-  const auto [s, t] = bad;
-  if (r.path[s] == r.path[t])
-    throw Error(what + " needs simple curves: path " + std::to_string(r.path[s] + 1) +
-                " crosses or touches itself where its segments from " + r.point(s) + " and from " + r.point(t) +
-                " meet");
-  throw Error(what + " needs curves apart: paths " + std::to_string(r.path[s] + 1) + " and " +
-              std::to_string(r.path[t] + 1) + " cross or touch where the segment from " + r.point(s) + " of path " +
-              std::to_string(r.path[s] + 1) + " meets the segment from " + r.point(t) + " of path " +
-              std::to_string(r.path[t] + 1));
-}
 
 // The edges crossing the sweep line, left to right. Edge e joins vertex e and succ[e]; it is compared by
 // the position of the later of two lower ends against the other edge (they cross no other edge, so this
@@ -438,6 +243,87 @@ void triangulate_pieces(const Rings& r, const std::vector<Index>& next,
   }
 }
 
+// ---- Slivers. Points on one line only to a rounding (a Koch snowflake's sides, made by rotations and
+// thirds) are, exactly, a hair off it, so the stack method may cut off a triangle of three of them that is
+// rightly counter-clockwise but a rounding error high: a relief's cap then touches its own walls. Each such
+// sliver whose long side is a diagonal is flipped away, the exact turn tests keeping every triangle
+// counter-clockwise.
+
+// A triangle's height over its longest side (twice its area over that side squared), scale-free and the
+// same whichever corner it is read from (the smallest index first), so that flips can only improve it.
+double shape(const std::vector<Vec2>& p, Tri t) {
+  const int k = t[0] < t[1] ? (t[0] < t[2] ? 0 : 2) : (t[1] < t[2] ? 1 : 2);
+  const Vec2 a = p[t[k]], b = p[t[(k + 1) % 3]], c = p[t[(k + 2) % 3]];
+  Vec2 u = b - a, v = c - a, w = c - b;
+  const double s = std::max({std::abs(u.x), std::abs(u.y), std::abs(v.x), std::abs(v.y), std::abs(w.x), std::abs(w.y)});
+  if (!(s > 0)) return 0;
+  u = u * (1 / s), v = v * (1 / s), w = w * (1 / s);
+  return cross(u, v) / std::max({dot(u, u), dot(v, v), dot(w, w)});
+}
+
+// Flips diagonals of triangles flatter than a millionth (height over longest side) while the flip leaves
+// both triangles of the pair less flat than the flatter was: each flip raises the sorted list of all
+// triangles' shapes, so the flips end, and O(1) each; nothing is done (not even the neighbours' table)
+// when no triangle is that flat.
+void flip_slivers(const std::vector<Vec2>& p, std::vector<Tri>& tris) {
+  constexpr double flat = 1e-6;
+  std::vector<Index> work;
+  for (Index t = 0; t < tris.size(); ++t)
+    if (shape(p, tris[t]) < flat) work.push_back(t);
+  if (work.empty()) return;
+  // Half-edge 3t + k runs from corner k to corner k + 1 of triangle t; twin[h]: the same edge in the
+  // neighbouring triangle, or none on the boundary.
+  const std::size_t halves = 3 * tris.size();
+  std::vector<std::pair<std::uint64_t, std::size_t>> keys(halves);
+  for (std::size_t h = 0; h < halves; ++h) {
+    const Index a = tris[h / 3][h % 3], b = tris[h / 3][(h + 1) % 3];
+    keys[h] = {std::uint64_t{std::min(a, b)} << 32 | std::max(a, b), h};
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<std::size_t> twin(halves, SIZE_MAX);
+  for (std::size_t i = 0; i + 1 < keys.size(); ++i)
+    if (keys[i].first == keys[i + 1].first)
+      twin[keys[i].second] = keys[i + 1].second, twin[keys[i + 1].second] = keys[i].second;
+  auto link = [&](std::size_t h, std::size_t g) {
+    twin[h] = g;
+    if (g != SIZE_MAX) twin[g] = h;
+  };
+  while (!work.empty()) {
+    const Index t = work.back();
+    work.pop_back();
+    const double before_t = shape(p, tris[t]);
+    if (before_t >= flat) continue;
+    // The best flip of one of t's three sides: t = (a, b, c) and u = (b, a, d) become (c, a, d), (d, b, c).
+    std::size_t best = SIZE_MAX;
+    double best_shape = 0;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::size_t g = twin[3 * t + k];
+      if (g == SIZE_MAX) continue;
+      const Tri& u = tris[g / 3];
+      const Index a = tris[t][k], b = tris[t][(k + 1) % 3], c = tris[t][(k + 2) % 3], d = u[(g % 3 + 2) % 3];
+      if (orientation(p[a], p[d], p[c]) <= 0 || orientation(p[d], p[b], p[c]) <= 0) continue;
+      const double now = std::min(before_t, shape(p, u));
+      const double then = std::min(shape(p, {c, a, d}), shape(p, {d, b, c}));
+      if (then > now && then > best_shape) best = 3 * t + k, best_shape = then;
+    }
+    if (best == SIZE_MAX) continue;
+    const std::size_t k = best % 3, g = twin[best], j = g % 3;
+    const Index ut = static_cast<Index>(g / 3);
+    const Index a = tris[t][k], b = tris[t][(k + 1) % 3], c = tris[t][(k + 2) % 3], d = tris[ut][(j + 2) % 3];
+    const std::size_t bc = twin[3 * t + (k + 1) % 3], ca = twin[3 * t + (k + 2) % 3];
+    const std::size_t ad = twin[3 * ut + (j + 1) % 3], db = twin[3 * ut + (j + 2) % 3];
+    tris[t] = {c, a, d};
+    tris[ut] = {d, b, c};
+    link(3 * t, ca), link(3 * t + 1, ad), link(3 * t + 2, 3 * ut + 2);
+    link(3 * ut, db), link(3 * ut + 1, bc);
+    // The pair and their neighbours may now have (better) flips.
+    work.push_back(t);
+    work.push_back(ut);
+    for (const std::size_t e : {bc, ca, ad, db})
+      if (e != SIZE_MAX) work.push_back(static_cast<Index>(e / 3));
+  }
+}
+
 }  // namespace
 
 RegionTriangles region_triangles(const Polyline& c, Progress& progress, std::string_view what) {
@@ -448,6 +334,7 @@ RegionTriangles region_triangles(const Polyline& c, Progress& progress, std::str
   RegionTriangles out;
   out.next = sweep(rings, diagonals, progress);
   triangulate_pieces(rings, out.next, diagonals, out.triangles, progress);
+  flip_slivers(rings.pts, out.triangles);
   progress.fraction(1);
   out.points = std::move(rings.pts);
   out.source = std::move(rings.source);

@@ -10,6 +10,9 @@
 // that point is inside), which orients every path with the region on its left: outlines counter-clockwise,
 // holes clockwise, islands counter-clockwise... Orientation tests are exact (a floating-point filter with an
 // exact fallback), so collinear runs and equal y-coordinates (staircases, combs) come out right.
+// Points on one line only to a rounding (a Koch snowflake's sides) are a hair off it exactly; a triangle of
+// three of them (a sliver a rounding high, which would make a relief's cap touch its walls) is flipped away
+// with its neighbour wherever the region allows.
 #pragma once
 
 #include <array>

@@ -62,7 +62,8 @@ Colouring natural_colouring(std::span<const FieldSummary> fields) {
     return nullptr;
   };
   const FieldSummary* chosen = nullptr;
-  for (const char* name : {"tile_class", "surface", "curve", "level", "arclength", "t"})
+  // A print check's copy shows its walls (print_check.h): that is what it was made for.
+  for (const char* name : {"wall", "tile_class", "surface", "curve", "level", "arclength", "t"})
     if ((chosen = pick(name, true))) break;
   if (!chosen)
     for (const FieldSummary& f : fields)

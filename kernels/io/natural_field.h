@@ -35,9 +35,9 @@ struct Colouring {
   std::vector<int> categories;  // the distinct values, when categorical
 };
 
-// The natural colouring among `fields`: tile_class, then a surface or curve id that differs between
-// elements, then a level that does, then arclength, then t; else the first other one-component field; else
-// none.
+// The natural colouring among `fields`: a print check's wall (mm), then tile_class, then a surface or curve id that
+// differs between elements, then a level that does, then arclength, then t; else the first other one-component field;
+// else none.
 Colouring natural_colouring(std::span<const FieldSummary> fields);
 
 // The summaries of a value's fields (points first, then cells), and of a file's fields read back.

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -62,6 +63,59 @@ std::uint32_t seek_bytes(std::uint64_t position, void* user) {
   return 0;
 }
 
+// lib3mf gives the object, the build and its item random UUIDs, so the same recipe would write different
+// bytes each run. UUIDs derived from the content instead (FNV-1a over the points and triangles, and a
+// salt per use, in the 8-4-4-4-12 form with the version-4 and variant bits) keep files repeatable.
+std::string content_uuid(const std::vector<NMR::MODELMESHVERTEX>& points,
+                         const std::vector<NMR::MODELMESHTRIANGLE>& triangles, const std::string& name,
+                         std::uint64_t salt) {
+  std::uint64_t h[2] = {1469598103934665603ull ^ salt, 1099511628211ull + salt};
+  const auto mix = [&](const void* data, std::size_t n) {
+    const auto* b = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < n; ++i) {
+      h[0] = (h[0] ^ b[i]) * 1099511628211ull;
+      h[1] = (h[1] ^ b[i]) * 0x100000001b3ull + 0x9e3779b97f4a7c15ull;
+    }
+  };
+  mix(points.data(), points.size() * sizeof(points[0]));
+  mix(triangles.data(), triangles.size() * sizeof(triangles[0]));
+  mix(name.data(), name.size());
+  char text[40];
+  std::snprintf(text, sizeof text, "%08x-%04x-4%03x-%04x-%012llx", static_cast<unsigned>(h[0] >> 32),
+                static_cast<unsigned>(h[0] >> 16) & 0xffff, static_cast<unsigned>(h[0]) & 0xfff,
+                (static_cast<unsigned>(h[1] >> 48) & 0x3fff) | 0x8000,
+                static_cast<unsigned long long>(h[1] & 0xffffffffffffull));
+  return text;
+}
+
+// lib3mf writes metadata values into the XML as they are (object names it escapes): "rock&roll" would make
+// the file unreadable.
+std::string xml_text(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 void write_3mf(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress) {
@@ -88,8 +142,8 @@ void write_3mf(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
   check(NMR::lib3mf_model_setunit(model.p, NMR::MODELUNIT_MILLIMETER), model.p, "set the unit");
   const std::string leaf = out.leaf();
   const std::string name = !opt.name.empty() ? opt.name : leaf.substr(0, leaf.rfind('.'));
-  check(NMR::lib3mf_model_addmetadatautf8(model.p, "Title", name.c_str()), model.p, "write the title");
-  check(NMR::lib3mf_model_addmetadatautf8(model.p, "Application", opt.application.c_str()), model.p,
+  check(NMR::lib3mf_model_addmetadatautf8(model.p, "Title", xml_text(name).c_str()), model.p, "write the title");
+  check(NMR::lib3mf_model_addmetadatautf8(model.p, "Application", xml_text(opt.application).c_str()), model.p,
         "write the application");
   check(NMR::lib3mf_model_addmeshobject(model.p, &mesh.p), model.p, "add the mesh");
   check(NMR::lib3mf_object_setnameutf8(mesh.p, name.c_str()), mesh.p, "name the mesh");
@@ -97,6 +151,12 @@ void write_3mf(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
                                            static_cast<DWORD>(triangles.size())),
         mesh.p, "store the mesh");
   check(NMR::lib3mf_model_addbuilditem(model.p, mesh.p, nullptr, &item.p), model.p, "place the mesh");
+  check(NMR::lib3mf_object_setuuidutf8(mesh.p, content_uuid(points, triangles, name, 1).c_str()), mesh.p,
+        "set the object's UUID");
+  check(NMR::lib3mf_builditem_setuuidutf8(item.p, content_uuid(points, triangles, name, 2).c_str()), item.p,
+        "set the build item's UUID");
+  check(NMR::lib3mf_model_setbuilduuidutf8(model.p, content_uuid(points, triangles, name, 3).c_str()), model.p,
+        "set the build's UUID");
   check(NMR::lib3mf_model_querywriter(model.p, "3mf", &writer.p), model.p, "make a writer");
   Bytes bytes;
   check(NMR::lib3mf_writer_writetocallback(writer.p, reinterpret_cast<void*>(&write_bytes),

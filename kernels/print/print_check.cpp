@@ -74,9 +74,9 @@ Spot spot_of(const std::vector<double>& values, const std::vector<Vec3>& where, 
 // The walls and gaps, on the distance grid of m (its parts as OpenVDB meshes them into one level set).
 void measure(const Mesh& m, const PointBudget& budget, Progress& progress, PrintReport& r, Mesh* marked) {
   const double smallest = std::min(r.rules.min_wall, r.rules.min_gap);
-  r.voxel = r.rules.voxel > 0 ? r.rules.voxel : smallest / 4;
-  r.wall_cap = 2 * r.rules.min_wall;
-  r.gap_cap = 2 * r.rules.min_gap;
+  r.voxel = r.rules.voxel > 0 ? r.rules.voxel : smallest / 3;
+  r.wall_cap = 1.5 * r.rules.min_wall;
+  r.gap_cap = 1.5 * r.rules.min_gap;
   Volume v;
   v.kind = Volume::Kind::mesh;
   Mesh shape;
@@ -119,12 +119,15 @@ void add_findings(PrintReport& r) {
                          std::to_string(r.crossing->first + 1) + " and " + std::to_string(r.crossing->second + 1) +
                          ")");
   const auto places = [](std::size_t n) { return count_text(double(n)) + (n == 1 ? " place" : " places"); };
+  // A crossing within the rays' first step is below what the grid resolves: said as "under" that step.
+  const double step = r.voxel / 2;
+  const auto measured = [&](double v) { return v <= 0.5 * step ? "under " + mm_text(step) : mm_text(v); };
   if (r.wall.measured && r.wall.under > 0)
     r.findings.push_back("walls thinner than " + mm_text(rules.min_wall) + " at " + places(r.wall.under) +
-                         ", the thinnest " + mm_text(r.wall.value) + " at " + mm_point_text(r.wall.where));
+                         ", the thinnest " + measured(r.wall.value) + " at " + mm_point_text(r.wall.where));
   if (r.gap.measured && r.gap.under > 0)
     r.findings.push_back("gaps narrower than " + mm_text(rules.min_gap) + " (they fuse) at " + places(r.gap.under) +
-                         ", the narrowest " + mm_text(r.gap.value) + " at " + mm_point_text(r.gap.where));
+                         ", the narrowest " + measured(r.gap.value) + " at " + mm_point_text(r.gap.where));
   if (static_cast<double>(r.triangles) > rules.max_triangles)
     r.findings.push_back(count_text(double(r.triangles)) + " triangles, over the " + count_text(rules.max_triangles) +
                          " a slicer handles well (decimate it)");
@@ -147,7 +150,9 @@ void add_findings(PrintReport& r) {
 }  // namespace
 
 std::string PrintReport::summary() const {
-  const auto at_least = [](const Spot& s, double cap) {
+  const double step = voxel / 2;
+  const auto at_least = [&](const Spot& s, double cap) {
+    if (s.value <= 0.5 * step) return "under " + mm_text(step);
     return (s.value >= cap ? ">= " : "") + mm_text(std::min(s.value, cap));
   };
   std::string facts = size_text(box.size()) + ", " + count_text(double(triangles)) + " triangles";

@@ -1,5 +1,6 @@
 #include "kernels/print/print_rules.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "kernels/geom/check.h"
@@ -17,7 +18,8 @@ void PrintRules::validate() const {
       if (!(side >= 1 && side <= 1e5))
         throw Error("option 'bed' must be three sides in [1, 100000] (mm), got {" + number_text(bed.x) + ", " +
                     number_text(bed.y) + ", " + number_text(bed.z) + "}");
-  if (voxel != 0) check_between(voxel, 1e-4, 10, "option 'voxel' (mm)");
+  // Coarser than half the smaller threshold, the grid cannot tell a wall of that size from none.
+  if (voxel != 0) check_between(voxel, 1e-3, std::min(min_wall, min_gap) / 2, "option 'voxel' (mm)");
 }
 
 PrintRules PrintRules::named(std::string_view profile) {

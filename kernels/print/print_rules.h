@@ -21,7 +21,7 @@ struct PrintRules {
   double min_gap = 0.4;        // mm: narrower gaps between parts fuse
   double max_triangles = 2e6;  // more is a finding (decimate)
   Vec3 bed{};                  // mm: the build volume; zero: not checked
-  double voxel = 0;            // mm: the distance grid's; 0 for a quarter of the smaller of min_wall and min_gap
+  double voxel = 0;            // mm: the distance grid's; 0 for a third of the smaller of min_wall and min_gap
 
   // Throws Error naming the option ("option 'min_wall' must be a number in [0.01, 100] (mm), got 0").
   void validate() const;

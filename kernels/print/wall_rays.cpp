@@ -24,40 +24,43 @@ void march(std::span<const Vec3> points, std::span<const Vec3> normals, const Cl
   // it starts outside and ends inside (distance > 0). `side` is +1 inwards: side·distance > 0 while the ray
   // is still in the medium it started in.
   const double side = sign < 0 ? 1 : -1;
-  std::vector<std::size_t> active;
-  std::vector<double> last;  // the previous sample's side·distance (0 at the surface itself)
+  struct Ray {
+    std::size_t i;
+    double t = 0, last = 0;  // how far it has gone, and side·distance there (0 at the surface itself)
+  };
+  std::vector<Ray> active;
   for (std::size_t i = begin; i < end; ++i) {
     out[i] = cap;
-    if (normals[i] != Vec3{}) {
-      active.push_back(i);
-      last.push_back(0);
-    }
+    if (normals[i] != Vec3{}) active.push_back({i});
   }
   std::vector<Vec3> at;
-  std::vector<double> value;
-  const auto steps = static_cast<std::size_t>(std::ceil(cap / step));
-  for (std::size_t k = 1; k <= steps && !active.empty(); ++k) {
-    const double t = std::min(cap, static_cast<double>(k) * step), previous = static_cast<double>(k - 1) * step;
+  std::vector<double> value, next;
+  while (!active.empty()) {
+    // Nothing is nearer than the distance read, less the grid's error (under two steps, a voxel): a ray far
+    // from any surface leaps (sphere tracing), one near a surface goes a step at a time.
     at.resize(active.size());
     value.resize(active.size());
-    for (std::size_t j = 0; j < active.size(); ++j) at[j] = points[active[j]] + (sign * t) * normals[active[j]];
+    next.resize(active.size());
+    for (std::size_t j = 0; j < active.size(); ++j) {
+      next[j] = std::min(cap, active[j].t + std::max(step, active[j].last - 2 * step));
+      at[j] = points[active[j].i] + (sign * next[j]) * normals[active[j].i];
+    }
     clearance(at, value);
     std::size_t kept = 0;
     for (std::size_t j = 0; j < active.size(); ++j) {
+      const Ray& r = active[j];
       const double d = side * value[j];
       if (d <= 0) {
         // Crossed between the previous sample and this one: where the distance, taken as linear, is zero.
         // Crossed within the first step (the surface's own value is taken as 0): half a step, as near as the
         // samples tell.
-        const double before = last[j];
-        out[active[j]] = std::min(cap, before > 0 ? previous + (t - previous) * before / (before - d) : 0.5 * t);
+        out[r.i] = std::min(cap, r.last > 0 ? r.t + (next[j] - r.t) * r.last / (r.last - d) : 0.5 * next[j]);
         continue;
       }
-      active[kept] = active[j];
-      last[kept++] = d;
+      if (next[j] >= cap) continue;  // no crossing within the cap
+      active[kept++] = {r.i, next[j], d};
     }
     active.resize(kept);
-    last.resize(kept);
   }
 }
 

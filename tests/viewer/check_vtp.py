@@ -16,7 +16,8 @@ for case in sorted(p for p in golden.iterdir() if p.is_dir()):
     if listing.exists():
         for line in listing.read_text().splitlines():
             if line.strip() and not line.startswith("#"):
-                # "name count", or "name count boundary" for a volume's boundary, which no level made
+                # "name count", or "name count boundary" for a surface no level made (a volume's boundary, a
+                # solid meshed again from a distance grid)
                 name, count, *kind = line.split()
                 counts[name] = int(count)
                 if kind == ["boundary"]:

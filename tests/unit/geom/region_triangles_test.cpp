@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -77,6 +78,10 @@ double checked_area(const RegionTriangles& t) {
     const Vec2 a = t.points[tri[0]], b = t.points[tri[1]], c = t.points[tri[2]];
     const double twice = cross(b - a, c - a);
     EXPECT_GT(twice, 0) << "triangle " << tri[0] << " " << tri[1] << " " << tri[2];
+    // Not a sliver either: three points on one line to a rounding (a triangle whose height is a rounding
+    // error beside its longest side) make a relief's cap touch its walls.
+    const double longest = std::max({dot(b - a, b - a), dot(c - b, c - b), dot(a - c, a - c)});
+    EXPECT_GT(twice, 1e-9 * longest) << "sliver " << tri[0] << " " << tri[1] << " " << tri[2];
     area += twice / 2;
     for (int k = 0; k < 3; ++k) ++uses[{tri[k], tri[(k + 1) % 3]}];
   }
@@ -128,6 +133,74 @@ TEST(RegionTriangles, KochSnowflakeHasNMinusTwoTrianglesAndItsArea) {
     EXPECT_NEAR(checked_area(t), area, 1e-9 * area);
     EXPECT_NEAR(area, std::sqrt(3.0) / 4 * (1 + 0.6 * (1 - std::pow(4.0 / 9, levels))), 1e-12);  // by formula
   }
+}
+
+TEST(RegionTriangles, KochSnowflakeOfFewLevelsHasNoSlivers) {
+  // From level 1 on, points of a snowflake lie on one line only to a rounding (the hexagram's top cap:
+  // (0, y), (1/3, y), (2/3, y), (1, y) each computed differently), which once gave triangles of three of them,
+  // of height 1e-17. Scaled and moved too, so that other roundings are tried.
+  for (int levels : {1, 2, 3})
+    for (const auto& [scale, shift] : {std::pair{1.0, Vec2{0, 0}}, std::pair{25.4, Vec2{0, 0}},
+                                       std::pair{3.7, Vec2{1000, -3}}, std::pair{1e-3, Vec2{0.1, 0.2}}}) {
+      Ring r = koch_snowflake(levels);
+      for (Vec2& p : r) p = scale * p + shift;
+      const RegionTriangles t = region_triangles(curve({r}));
+      ASSERT_EQ(t.points.size(), r.size());
+      EXPECT_EQ(t.triangles.size(), r.size() - 2) << "level " << levels << " scale " << scale;
+      const double area = shoelace(r);
+      EXPECT_NEAR(checked_area(t), area, 1e-9 * area) << "level " << levels << " scale " << scale;
+    }
+}
+
+TEST(RegionTriangles, CollinearPointsApartAlongALine) {
+  // Battlements: a bottom of many points on y = 0, merlon tops all on y = 3 (points on one line that are not
+  // neighbours), crenels all on y = 2. Then the same exactly slanted (sheared along y = x / 2, integer
+  // coordinates), turned by an angle (on one line only to a rounding), and as a hole in a rectangle.
+  Ring wall;
+  for (int x = 0; x <= 24; ++x) wall.push_back({double(x), 0});
+  for (int k = 11; k >= 0; --k)
+    wall.insert(wall.end(), {{2.0 * k + 2, 2}, {2.0 * k + 2, 3}, {2.0 * k + 1, 3}, {2.0 * k + 1, 2}});
+  wall.push_back({0, 2});
+  Ring sheared, turned, hole;
+  for (Vec2 p : wall) {
+    sheared.push_back({p.x, p.y + p.x / 2});
+    turned.push_back(p * polar(0.3217505543966422));  // atan(1/3)
+    hole.push_back({p.x + 3, p.y + 3});
+  }
+  for (const Ring& r : {wall, reversed(wall), sheared, turned}) {
+    const RegionTriangles t = region_triangles(curve({r}));
+    EXPECT_EQ(t.triangles.size(), r.size() - 2);
+    EXPECT_NEAR(checked_area(t), std::abs(shoelace(r)), 1e-9 * std::abs(shoelace(r)));
+  }
+  const RegionTriangles t = region_triangles(curve({rectangle(0, 0, 30, 9), hole}));
+  EXPECT_EQ(t.triangles.size(), 4 + hole.size() + 2 - 2);
+  EXPECT_NEAR(checked_area(t), 270 - std::abs(shoelace(hole)), 1e-9);
+}
+
+TEST(RegionTriangles, StarsWhosePointsLineUp) {
+  // The outlines of star polygons {n/2} and {n/3}: each notch on the line between the tips two (three)
+  // apart, so tips and notches line up across the polygon, to a rounding (made with cos and sin); turned by
+  // a few angles and scaled. And a star of integer points whose tips and notches line up exactly.
+  for (int tips = 5; tips <= 20; ++tips)
+    for (int skip : {2, 3}) {
+      const double inner = std::cos(skip * std::numbers::pi / tips) / std::cos(std::numbers::pi / tips);
+      if (inner < 0.1) continue;
+      for (double phase : {0.0, 0.25, 0.5})
+        for (double scale : {1.0, 7.3}) {
+          Ring r;
+          for (int k = 0; k < 2 * tips; ++k)
+            r.push_back(scale * (k % 2 ? inner : 1.0) * polar(std::numbers::pi * (k + phase) / tips));
+          const RegionTriangles t = region_triangles(curve({r}));
+          EXPECT_EQ(t.triangles.size(), r.size() - 2) << "{" << tips << "/" << skip << "}";
+          EXPECT_NEAR(checked_area(t), shoelace(r), 1e-9 * shoelace(r))
+              << "{" << tips << "/" << skip << "} turned " << phase;
+        }
+    }
+  const Ring exact{{6, 0},  {2, 1},   {6, 6},   {1, 2},   {0, 6},  {-1, 2}, {-6, 6}, {-2, 1},
+                   {-6, 0}, {-2, -1}, {-6, -6}, {-1, -2}, {0, -6}, {1, -2}, {6, -6}, {2, -1}};
+  const RegionTriangles t = region_triangles(curve({exact}));
+  EXPECT_EQ(t.triangles.size(), exact.size() - 2);
+  EXPECT_NEAR(checked_area(t), shoelace(exact), 1e-12);
 }
 
 TEST(RegionTriangles, HolesAndIslandsEvenOdd) {

@@ -95,6 +95,14 @@ TEST(Save3mf, MillimetresNameAndGeometry) {
   opt.name = "dragon ü";
   io::save(&box, dir.path / "b.3mf", opt, no_progress());
   EXPECT_EQ(read_3mf(dir.path / "b.3mf").name, "dragon ü");
+  // Characters XML escapes, in the name and so in the title: the file still parses.
+  opt.name = "rock&roll <\"x'>";
+  io::save(&box, dir.path / "c.3mf", opt, no_progress());
+  const Read3mf c = read_3mf(dir.path / "c.3mf");
+  EXPECT_EQ(c.name, opt.name);
+  // lib3mf reads metadata back as it stands in the XML, entities and all (it writes it so too: hence the
+  // escaping); an XML parser, as a slicer's, reads the name.
+  EXPECT_EQ(c.title, "rock&amp;roll &lt;&quot;x&apos;&gt;");
 }
 
 TEST(Save3mf, RefusesAnOpenMesh) {

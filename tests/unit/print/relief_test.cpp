@@ -12,6 +12,7 @@
 
 #include "kernels/geom/error.h"
 #include "kernels/geom/mesh_check.h"
+#include "kernels/geom/mesh_intersections.h"
 
 using namespace selfsim;
 using namespace selfsim::print;
@@ -159,6 +160,23 @@ TEST(Relief, KochSnowflakeVolume) {
   EXPECT_EQ(mesh_topology(bare).euler(), 2);
   EXPECT_EQ(bare.faces(), 2 * (r.size() - 2) + 2 * r.size());
   EXPECT_NEAR(enclosed_volume(bare), 0.1 * area, 1e-9 * area);
+}
+
+TEST(Relief, KochSnowflakesDoNotCrossThemselves) {
+  // A snowflake's sides hold points on one line to a rounding; the cap once had triangles of three of them,
+  // a rounding high, which touched the walls beside them.
+  for (int levels : {1, 2, 3})
+    for (double scale : {1.0, 25.4}) {
+      Ring r = koch_snowflake(levels);
+      for (Vec2& p : r) p = scale * p;
+      for (const ReliefOptions& o : {options(2), options(2, 0.5, 0.3 * scale)}) {
+        const Mesh m = relief(curve({r}), o);
+        EXPECT_TRUE(mesh_topology(m).closed()) << "level " << levels << " base " << o.base;
+        const auto crossing = first_intersection(m, no_progress());
+        EXPECT_FALSE(crossing.has_value()) << "level " << levels << " scale " << scale << " base " << o.base
+                                           << ": triangles " << crossing->first << " and " << crossing->second;
+      }
+    }
 }
 
 TEST(Relief, SizePredictionBoundsTheResult) {
