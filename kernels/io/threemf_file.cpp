@@ -5,8 +5,6 @@
 // bytes then go to the OutputFile like every other format: atomic, and confined to the output folder.
 // A 3MF is a printable object: the mesh must be closed. Coordinates are written with lib3mf's six decimals
 // (a nanometre in millimetres).
-#include <Model/COM/NMR_DLLInterfaces.h>
-
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
@@ -16,30 +14,13 @@
 
 #include "kernels/geom/error.h"
 #include "kernels/geom/mesh_check.h"
+#include "kernels/io/lib3mf_call.h"
 #include "kernels/io/writers.h"
+#include "kernels/io/xml_text.h"
 
 namespace selfsim::io {
 
 namespace {
-
-// A lib3mf handle, released when it goes out of scope.
-struct Handle {
-  NMR::PLib3MFBase* p = nullptr;
-  ~Handle() {
-    if (p != nullptr) NMR::lib3mf_release(p);
-  }
-};
-
-// Throws Error with lib3mf's own message when a call failed.
-void check(LIB3MFRESULT result, NMR::PLib3MFBase* handle, const char* what) {
-  if (result == LIB3MF_OK) return;
-  DWORD code = 0;
-  LPCSTR message = nullptr;
-  std::string reason = "error " + std::to_string(result);
-  if (handle != nullptr && NMR::lib3mf_getlasterror(handle, &code, &message) == LIB3MF_OK && message != nullptr)
-    reason = message;
-  throw Error(std::string("lib3mf could not ") + what + ": " + reason);
-}
 
 // The zip stream lib3mf writes, held in memory.
 struct Bytes {
@@ -88,34 +69,6 @@ std::string content_uuid(const std::vector<NMR::MODELMESHVERTEX>& points,
   return text;
 }
 
-// lib3mf writes metadata values into the XML as they are (object names it escapes): "rock&roll" would make
-// the file unreadable.
-std::string xml_text(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&apos;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 }  // namespace
 
 void write_3mf(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress) {
@@ -137,31 +90,33 @@ void write_3mf(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
     for (int k = 0; k < 3; ++k) triangles[f].m_nIndices[k] = m.triangles[f][k];
   if (progress.cancelled()) throw Cancelled();
 
-  Handle model, mesh, item, writer;
-  check(NMR::lib3mf_createmodel(&model.p), nullptr, "create a model");
-  check(NMR::lib3mf_model_setunit(model.p, NMR::MODELUNIT_MILLIMETER), model.p, "set the unit");
+  Lib3mfHandle model, mesh, item, writer;
+  lib3mf_check(NMR::lib3mf_createmodel(&model.p), nullptr, "create a model");
+  lib3mf_check(NMR::lib3mf_model_setunit(model.p, NMR::MODELUNIT_MILLIMETER), model.p, "set the unit");
   const std::string leaf = out.leaf();
   const std::string name = !opt.name.empty() ? opt.name : leaf.substr(0, leaf.rfind('.'));
-  check(NMR::lib3mf_model_addmetadatautf8(model.p, "Title", xml_text(name).c_str()), model.p, "write the title");
-  check(NMR::lib3mf_model_addmetadatautf8(model.p, "Application", xml_text(opt.application).c_str()), model.p,
-        "write the application");
-  check(NMR::lib3mf_model_addmeshobject(model.p, &mesh.p), model.p, "add the mesh");
-  check(NMR::lib3mf_object_setnameutf8(mesh.p, name.c_str()), mesh.p, "name the mesh");
-  check(NMR::lib3mf_meshobject_setgeometry(mesh.p, points.data(), static_cast<DWORD>(points.size()), triangles.data(),
-                                           static_cast<DWORD>(triangles.size())),
-        mesh.p, "store the mesh");
-  check(NMR::lib3mf_model_addbuilditem(model.p, mesh.p, nullptr, &item.p), model.p, "place the mesh");
-  check(NMR::lib3mf_object_setuuidutf8(mesh.p, content_uuid(points, triangles, name, 1).c_str()), mesh.p,
-        "set the object's UUID");
-  check(NMR::lib3mf_builditem_setuuidutf8(item.p, content_uuid(points, triangles, name, 2).c_str()), item.p,
-        "set the build item's UUID");
-  check(NMR::lib3mf_model_setbuilduuidutf8(model.p, content_uuid(points, triangles, name, 3).c_str()), model.p,
-        "set the build's UUID");
-  check(NMR::lib3mf_model_querywriter(model.p, "3mf", &writer.p), model.p, "make a writer");
+  // lib3mf writes metadata values into the XML as they are (object names it escapes itself).
+  lib3mf_check(NMR::lib3mf_model_addmetadatautf8(model.p, "Title", xml_escaped(name).c_str()), model.p,
+               "write the title");
+  lib3mf_check(NMR::lib3mf_model_addmetadatautf8(model.p, "Application", xml_escaped(opt.application).c_str()), model.p,
+               "write the application");
+  lib3mf_check(NMR::lib3mf_model_addmeshobject(model.p, &mesh.p), model.p, "add the mesh");
+  lib3mf_check(NMR::lib3mf_object_setnameutf8(mesh.p, name.c_str()), mesh.p, "name the mesh");
+  lib3mf_check(NMR::lib3mf_meshobject_setgeometry(mesh.p, points.data(), static_cast<DWORD>(points.size()),
+                                                  triangles.data(), static_cast<DWORD>(triangles.size())),
+               mesh.p, "store the mesh");
+  lib3mf_check(NMR::lib3mf_model_addbuilditem(model.p, mesh.p, nullptr, &item.p), model.p, "place the mesh");
+  lib3mf_check(NMR::lib3mf_object_setuuidutf8(mesh.p, content_uuid(points, triangles, name, 1).c_str()), mesh.p,
+               "set the object's UUID");
+  lib3mf_check(NMR::lib3mf_builditem_setuuidutf8(item.p, content_uuid(points, triangles, name, 2).c_str()), item.p,
+               "set the build item's UUID");
+  lib3mf_check(NMR::lib3mf_model_setbuilduuidutf8(model.p, content_uuid(points, triangles, name, 3).c_str()), model.p,
+               "set the build's UUID");
+  lib3mf_check(NMR::lib3mf_model_querywriter(model.p, "3mf", &writer.p), model.p, "make a writer");
   Bytes bytes;
-  check(NMR::lib3mf_writer_writetocallback(writer.p, reinterpret_cast<void*>(&write_bytes),
-                                           reinterpret_cast<void*>(&seek_bytes), &bytes),
-        writer.p, "write the file");
+  lib3mf_check(NMR::lib3mf_writer_writetocallback(writer.p, reinterpret_cast<void*>(&write_bytes),
+                                                  reinterpret_cast<void*>(&seek_bytes), &bytes),
+               writer.p, "write the file");
   if (progress.cancelled()) throw Cancelled();
   out.write(bytes.data);
 }

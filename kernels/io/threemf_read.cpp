@@ -2,8 +2,6 @@
 // points converted to millimetres from the model's unit, its triangles, and the object's name as the cell
 // field `object` (the objects in file order, counted from 0). Build items' placements are not applied:
 // objects are compared as they are defined. Like threemf_file.cpp, lib3mf's C interface stays in this file.
-#include <Model/COM/NMR_DLLInterfaces.h>
-
 #include <algorithm>
 #include <cstdint>
 #include <string>
@@ -11,29 +9,13 @@
 
 #include "kernels/geom/error.h"
 #include "kernels/io/dataset_pipe.h"
+#include "kernels/io/lib3mf_call.h"
 #include "kernels/io/mesh_readers.h"
 #include "kernels/io/read.h"
 
 namespace selfsim::io {
 
 namespace {
-
-struct Handle {
-  NMR::PLib3MFBase* p = nullptr;
-  ~Handle() {
-    if (p != nullptr) NMR::lib3mf_release(p);
-  }
-};
-
-void check(LIB3MFRESULT result, NMR::PLib3MFBase* handle, const char* what) {
-  if (result == LIB3MF_OK) return;
-  DWORD code = 0;
-  LPCSTR message = nullptr;
-  std::string reason = "error " + std::to_string(result);
-  if (handle != nullptr && NMR::lib3mf_getlasterror(handle, &code, &message) == LIB3MF_OK && message != nullptr)
-    reason = message;
-  throw Error(std::string("lib3mf could not ") + what + ": " + reason);
-}
 
 // Millimetres per unit of a 3MF model (its `unit` attribute).
 double millimetres(DWORD unit) {
@@ -57,29 +39,31 @@ double millimetres(DWORD unit) {
 Dataset parse_3mf(const RegularFile& f) {
   std::vector<BYTE> bytes(f.size());
   if (f.read_at(0, bytes.data(), bytes.size()) != bytes.size()) throw Error("the file changed while it was read");
-  Handle model, reader, meshes;
-  check(NMR::lib3mf_createmodel(&model.p), nullptr, "create a model");
-  check(NMR::lib3mf_model_queryreader(model.p, "3mf", &reader.p), model.p, "make a reader");
-  check(NMR::lib3mf_reader_readfrombuffer(reader.p, bytes.data(), bytes.size()), reader.p, "read it");
+  Lib3mfHandle model, reader, meshes;
+  lib3mf_check(NMR::lib3mf_createmodel(&model.p), nullptr, "create a model");
+  lib3mf_check(NMR::lib3mf_model_queryreader(model.p, "3mf", &reader.p), model.p, "make a reader");
+  lib3mf_check(NMR::lib3mf_reader_readfrombuffer(reader.p, bytes.data(), bytes.size()), reader.p, "read it");
   DWORD unit = NMR::MODELUNIT_MILLIMETER;
-  check(NMR::lib3mf_model_getunit(model.p, &unit), model.p, "read its unit");
+  lib3mf_check(NMR::lib3mf_model_getunit(model.p, &unit), model.p, "read its unit");
   const double scale = millimetres(unit);
-  check(NMR::lib3mf_model_getmeshobjects(model.p, &meshes.p), model.p, "list its meshes");
+  lib3mf_check(NMR::lib3mf_model_getmeshobjects(model.p, &meshes.p), model.p, "list its meshes");
   Dataset d;
   d.shapes = CellShapes::polygons;
   FieldValues object;
   BOOL next = 0;
   for (int k = 0; NMR::lib3mf_resourceiterator_movenext(meshes.p, &next) == LIB3MF_OK && next; ++k) {
-    Handle mesh;
-    check(NMR::lib3mf_resourceiterator_getcurrent(meshes.p, &mesh.p), meshes.p, "open a mesh");
+    Lib3mfHandle mesh;
+    lib3mf_check(NMR::lib3mf_resourceiterator_getcurrent(meshes.p, &mesh.p), meshes.p, "open a mesh");
     DWORD nv = 0, nt = 0;
-    check(NMR::lib3mf_meshobject_getvertexcount(mesh.p, &nv), mesh.p, "count its points");
-    check(NMR::lib3mf_meshobject_gettrianglecount(mesh.p, &nt), mesh.p, "count its triangles");
+    lib3mf_check(NMR::lib3mf_meshobject_getvertexcount(mesh.p, &nv), mesh.p, "count its points");
+    lib3mf_check(NMR::lib3mf_meshobject_gettrianglecount(mesh.p, &nt), mesh.p, "count its triangles");
     std::vector<NMR::MODELMESHVERTEX> points(nv);
     std::vector<NMR::MODELMESHTRIANGLE> triangles(nt);
-    if (nv > 0) check(NMR::lib3mf_meshobject_getvertices(mesh.p, points.data(), nv, &nv), mesh.p, "read its points");
+    if (nv > 0)
+      lib3mf_check(NMR::lib3mf_meshobject_getvertices(mesh.p, points.data(), nv, &nv), mesh.p, "read its points");
     if (nt > 0)
-      check(NMR::lib3mf_meshobject_gettriangleindices(mesh.p, triangles.data(), nt, &nt), mesh.p, "read its triangles");
+      lib3mf_check(NMR::lib3mf_meshobject_gettriangleindices(mesh.p, triangles.data(), nt, &nt), mesh.p,
+                   "read its triangles");
     const std::size_t base = d.points.size();
     for (const auto& p : points)
       d.points.push_back({scale * p.m_fPosition[0], scale * p.m_fPosition[1], scale * p.m_fPosition[2]});
