@@ -10,6 +10,7 @@
 #include "kernels/geom/error.h"
 #include "kernels/lsystem/context_match.h"
 #include "kernels/lsystem/cut.h"
+#include "kernels/lsystem/derivation_frame.h"
 #include "kernels/lsystem/rule_index.h"
 
 namespace selfsim::lsystem {
@@ -26,30 +27,6 @@ double held_points(const ModuleString& s) {
           8.0 * static_cast<double>(s.args.capacity() + s.lineage.capacity())) /
          16;
 }
-
-// A level's successor on the depth-first stack: read in place from its production (the symbols and
-// layout the Successor keeps, the parameters as evaluated), or held when decomposition rewrote it.
-struct Frame {
-  ModuleString held;
-  std::vector<double> values;
-  const Successor* succ = nullptr;  // null: held
-  std::uint64_t parent = 0;         // the rewritten module's lineage (stochastic grammars)
-  ModuleRun run{};
-
-  void hold() {
-    succ = nullptr;
-    run = run_of(held, 0, held.size());
-  }
-  void view(const Successor& s, std::uint64_t lineage) {
-    succ = &s;
-    parent = lineage;
-    run = {s.symbols.data(), s.arg_end.data(), values.data(), 0, s.symbols.size()};
-  }
-  std::uint64_t lineage(std::size_t i, bool stochastic) const {
-    if (!stochastic) return 0;
-    return succ == nullptr ? held.lineage[i] : child_lineage(parent, succ->modules[i].salt);
-  }
-};
 
 class Deriver {
  public:
@@ -84,14 +61,14 @@ class Deriver {
 
   // Context-free grammars: depth-first, one evaluated successor per level.
   void depth_first(int level, ModuleSink& sink) {
-    std::vector<Frame> frames(static_cast<std::size_t>(level) + 1);
+    std::vector<DerivationFrame> frames(static_cast<std::size_t>(level) + 1);
     std::vector<std::size_t> pos(frames.size(), 0);
     frames[0].held = axiom();
     frames[0].hold();
     Cut cut;
     std::size_t d = 0;
     while (true) {
-      const Frame& f = frames[d];
+      const DerivationFrame& f = frames[d];
       const ModuleRun& run = f.run;
       if (pos[d] == run.end) {
         if (d == 0) break;
@@ -115,7 +92,7 @@ class Deriver {
             emit_successor(*p, lineage, level, cut, sink);  // the last level: never held
             continue;
           }
-          Frame& next = frames[++d];
+          DerivationFrame& next = frames[++d];
           pos[d] = 0;
           if (decompose_.total == 0) {  // the successor read in place, with its evaluated parameters
             const Successor& succ = chosen(*p, lineage);
@@ -347,7 +324,7 @@ class Deriver {
                       " modules, over the limit (64 x --max-points)");
   }
 
-  void check(const std::vector<Frame>& frames, const std::vector<std::size_t>& pos, std::size_t d) {
+  void check(const std::vector<DerivationFrame>& frames, const std::vector<std::size_t>& pos, std::size_t d) {
     next_check_ = work_ + check_every;
     if (static_cast<double>(work_ + written_) > limits_.work) over_budget();
     // Done so far: the finished share of each level's successor, nested.
