@@ -134,7 +134,7 @@ int develop(lua_State* L) {
     }
     // A solid given a size in millimetres is meant for printing: the print check says if it is not printable.
     if (opt.size > 0 && opt.thickness > 0 && opt.check)
-      warn_unless_printable(L, "develop", *test_geometry<Mesh>(L, -1), PrintCheckOption{});
+      warn_unless_printable(L, "develop", test_geometry<Mesh>(L, -1), PrintCheckOption{});
     return 1;
   });
 }

@@ -174,7 +174,7 @@ int save(lua_State* L) {
     // the run, the files it did write were already reported.
     if (!run.config.quiet) std::printf("wrote %s (%zu points)\n", shown_text(written, 4096).c_str(), v->points());
     if (!run.config.quiet && (format.extension == ".stl" || format.extension == ".3mf"))
-      std::printf("  %s\n", print_summary(L, *std::get<const Mesh*>(v->ref())).c_str());
+      std::printf("  %s\n", print_summary(L, std::get<Held<Mesh>>(v->held)).c_str());
     return 0;
   });
 }

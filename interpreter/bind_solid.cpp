@@ -14,8 +14,10 @@
 #include "kernels/develop/loop_subdivision.h"
 #include "kernels/geom/check.h"
 #include "kernels/geom/mesh_intersections.h"
+#include "kernels/geom/point_text.h"
 #include "kernels/print/decimate.h"
 #include "kernels/print/grid_thicken.h"
+#include "kernels/print/grid_tube.h"
 #include "kernels/print/print_size.h"
 #include "kernels/print/relief.h"
 #include "kernels/print/thicken.h"
@@ -56,6 +58,18 @@ double diagonal(const BBox<V>& b) {
   return norm(b.size());
 }
 
+// An exclusion surface carries its clearance (a uniform face field): pieces once apart keep it, so a
+// thickness below it cannot fuse them, and one at or past it may.
+void warn_past_clearance(lua_State* L, const Mesh& m, double thickness) {
+  const Field* c = m.face_fields.find("clearance");
+  if (c == nullptr || !c->uniform || c->scalar() != Scalar::Float64 || thickness < c->at(0)) return;
+  const std::string message = recipe_where(L) + "solid.thicken: a thickness of " + mm_text(thickness) +
+                              " reaches the surface's clearance of " + mm_text(c->at(0)) +
+                              " (its last exclusion radius, which pieces once apart keep): they may fuse; below "
+                              "it they cannot";
+  lua_warning(L, message.c_str(), 0);
+}
+
 int solid_thicken(lua_State* L) {
   return call_kernel(L, "solid.thicken", [&] {
     const std::string call = "solid.thicken(mesh, { thickness = 1 })";
@@ -71,6 +85,7 @@ int solid_thicken(lua_State* L) {
     }
     const PrintCheckOption check = read_print_check(o);
     o.finish();
+    warn_past_clearance(L, *m, t);
     Mesh solid;
     if (grid) {
       solid = with_budget(L, [&](const PointBudget& b) {
@@ -84,8 +99,8 @@ int solid_thicken(lua_State* L) {
       check_run_budget(L, 2 * budget_size(*m) + 2 * 3 * static_cast<double>(m->faces()), "the thickened solid");
       solid = print::thicken(surface, RunContext::of(L));
     }
-    warn_unless_printable(L, "solid.thicken", solid, check);
     push_geometry(L, std::move(solid));
+    warn_unless_printable(L, "solid.thicken", test_geometry<Mesh>(L, -1), check);
     return 1;
   });
 }
@@ -118,23 +133,39 @@ int solid_tube(lua_State* L) {
     Options o(L, 2);
     const double size = c2 ? diagonal(c2->bbox()) : diagonal(c3->bbox());
     const double radius = length_option(o, "radius", size, "the tube's radius in mm, e.g. 0.5");
+    const bool grid = o.enumeration("method", {"rings", "grid"}, 0) == 1;
     print::TubeOptions opt;
-    opt.sides = static_cast<int>(o.integer("sides", opt.sides, 3, 256));
-    const std::string by = o.string("by", "");
+    print::GridTubeOptions on_grid{.radius = radius};
+    std::string by;
     double taper = 0;
-    if (o.has("taper")) {
-      taper = check_between(o.number("taper", 1), 1e-6, 1e6, "option 'taper'");
-      if (by.empty()) throw Error("option 'taper' needs 'by', the point field it is raised to (e.g. by = \"level\")");
+    if (grid) {
+      // One radius: the grid's solid is every point within it of the curve.
+      for (const char* ring_only : {"sides", "by", "taper"})
+        if (o.has(ring_only))
+          throw Error("option '" + std::string(ring_only) +
+                      "' is for method = \"rings\"; a tube on the grid has one radius and round joints");
+      on_grid.voxel = o.number("voxel", 0);
+      on_grid.adaptivity = o.number("adaptivity", 0);
+    } else {
+      opt.sides = static_cast<int>(o.integer("sides", opt.sides, 3, 256));
+      by = o.string("by", "");
+      if (o.has("taper")) {
+        taper = check_between(o.number("taper", 1), 1e-6, 1e6, "option 'taper'");
+        if (by.empty()) throw Error("option 'taper' needs 'by', the point field it is raised to (e.g. by = \"level\")");
+      }
     }
     const PrintCheckOption check = read_print_check(o);
     o.finish();
     Mesh solid = with_budget(L, [&](const PointBudget& b) {
-      opt.budget = b;
+      opt.budget = on_grid.budget = b;
+      if (grid)
+        return c2 ? print::grid_tube(*c2, on_grid, RunContext::of(L))
+                  : print::grid_tube(*c3, on_grid, RunContext::of(L));
       return c2 ? print::tube(*c2, tube_radii(*c2, radius, by, taper), opt, RunContext::of(L))
                 : print::tube(*c3, tube_radii(*c3, radius, by, taper), opt, RunContext::of(L));
     });
-    warn_unless_printable(L, "solid.tube", solid, check);
     push_geometry(L, std::move(solid));
+    warn_unless_printable(L, "solid.tube", test_geometry<Mesh>(L, -1), check);
     return 1;
   });
 }
@@ -149,6 +180,10 @@ int solid_relief(lua_State* L) {
     print::ReliefOptions opt;
     opt.height = length_option(o, "height", diagonal(c->bbox()), "the relief's height in mm, e.g. 2");
     opt.base = o.number("base", 0);
+    if (o.has("margin") && !(opt.base > 0))
+      throw Error(
+          "option 'margin' is the base plate's border beyond the outline: it needs 'base', the plate's "
+          "thickness in mm (e.g. base = 1.5)");
     opt.margin = o.number("margin", opt.base > 0 ? 0.05 * std::max(c->bbox().size().x, c->bbox().size().y) : 0);
     const PrintCheckOption check = read_print_check(o);
     o.finish();
@@ -156,8 +191,8 @@ int solid_relief(lua_State* L) {
       opt.budget = b;
       return print::relief(*c, opt, RunContext::of(L));
     });
-    warn_unless_printable(L, "solid.relief", solid, check);
     push_geometry(L, std::move(solid));
+    warn_unless_printable(L, "solid.relief", test_geometry<Mesh>(L, -1), check);
     return 1;
   });
 }
@@ -254,9 +289,10 @@ int solid_check(lua_State* L) {
     o.finish();
     check_run_budget(L, budget_size(*m), "the checked copy with fields wall and gap");
     Mesh marked;
-    const print::PrintReport r = check_print_in_run(L, *m, rules, &marked);
+    const print::PrintReport r = check_print_in_run(L, m, rules, &marked);
     push_print_report(L, r);
     push_geometry(L, std::move(marked));
+    keep_print_report(L, test_geometry<Mesh>(L, -1), r);  // the same solid: saving it checks nothing again
     return 2;
   });
 }

@@ -34,12 +34,49 @@ PrintCheckOption read_print_check(Options& o) {
   return c;
 }
 
-print::PrintReport check_print_in_run(lua_State* L, const Mesh& m, const print::PrintRules& rules, Mesh* marked) {
-  return with_budget(L,
-                     [&](const PointBudget& b) { return print::check_print(m, rules, b, RunContext::of(L), marked); });
+// Reports by value. A value that has died no longer matches (its weak pointer expired), so an address reused
+// by a new value is never mistaken for it; the dead entries go when a report is kept.
+struct PrintReports {
+  struct Entry {
+    std::weak_ptr<const Mesh> mesh;
+    print::PrintReport report;
+  };
+  std::vector<Entry> entries;
+
+  const print::PrintReport* find(const Held<Mesh>& m, const print::PrintRules& rules) const {
+    for (const Entry& e : entries)
+      if (e.report.rules == rules && !e.mesh.expired() && e.mesh.lock() == m) return &e.report;
+    return nullptr;
+  }
+  void keep(const Held<Mesh>& m, const print::PrintReport& r) {
+    std::erase_if(entries, [](const Entry& e) { return e.mesh.expired(); });
+    entries.push_back({m, r});
+  }
+};
+
+namespace {
+
+PrintReports& reports_of(lua_State* L) {
+  RunContext& run = RunContext::of(L);
+  if (!run.print_reports) run.print_reports = std::make_shared<PrintReports>();
+  return *run.print_reports;
 }
 
-void warn_unless_printable(lua_State* L, const char* fn, const Mesh& m, const PrintCheckOption& check) {
+}  // namespace
+
+print::PrintReport check_print_in_run(lua_State* L, const Held<Mesh>& m, const print::PrintRules& rules, Mesh* marked) {
+  PrintReports& reports = reports_of(L);
+  if (marked == nullptr)
+    if (const print::PrintReport* r = reports.find(m, rules)) return *r;
+  print::PrintReport r =
+      with_budget(L, [&](const PointBudget& b) { return print::check_print(*m, rules, b, RunContext::of(L), marked); });
+  reports.keep(m, r);
+  return r;
+}
+
+void keep_print_report(lua_State* L, const Held<Mesh>& m, const print::PrintReport& r) { reports_of(L).keep(m, r); }
+
+void warn_unless_printable(lua_State* L, const char* fn, const Held<Mesh>& m, const PrintCheckOption& check) {
   if (!check.on) return;
   const print::PrintReport r = check_print_in_run(L, m, check.rules);
   if (r.passes()) return;
@@ -47,8 +84,9 @@ void warn_unless_printable(lua_State* L, const char* fn, const Mesh& m, const Pr
   lua_warning(L, message.c_str(), 0);
 }
 
-std::string print_summary(lua_State* L, const Mesh& m) {
-  const MeshTopology t = mesh_topology(m, RunContext::of(L));
+std::string print_summary(lua_State* L, const Held<Mesh>& m) {
+  if (const print::PrintReport* r = reports_of(L).find(m, print::PrintRules{})) return r->summary();
+  const MeshTopology t = mesh_topology(*m, RunContext::of(L));
   if (t.boundary_edges > 0)
     return "print check: an open surface (" + std::to_string(t.boundary_edges) +
            " boundary edges), not a solid: thicken it to print (solid.thicken)";

@@ -6,6 +6,7 @@
 #include <lua.hpp>
 #include <string>
 
+#include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
 #include "kernels/geom/mesh.h"
 #include "kernels/print/print_check.h"
@@ -22,16 +23,20 @@ struct PrintCheckOption {
 };
 PrintCheckOption read_print_check(Options& o);
 
-// check_print with the run's budget and progress.
-print::PrintReport check_print_in_run(lua_State* L, const Mesh& m, const print::PrintRules& rules,
+// check_print with the run's budget and progress. A value's report is kept while the value lives (values
+// never change), so checking it again with the same rules costs nothing; with `marked` the check runs (the
+// fields need it) and its report is kept for m and for `marked_value`, the marked copy once it is a value.
+print::PrintReport check_print_in_run(lua_State* L, const Held<Mesh>& m, const print::PrintRules& rules,
                                       Mesh* marked = nullptr);
+// Keeps r as the report of `m` (a marked copy pushed after its check).
+void keep_print_report(lua_State* L, const Held<Mesh>& m, const print::PrintReport& r);
 
 // With check.on, checks m and warns (one line, naming the recipe line and fn) when it fails.
-void warn_unless_printable(lua_State* L, const char* fn, const Mesh& m, const PrintCheckOption& check);
+void warn_unless_printable(lua_State* L, const char* fn, const Held<Mesh>& m, const PrintCheckOption& check);
 
 // The line save() prints under a print format's file: the check's summary (fdm), or that the mesh is an
 // open surface and not a solid.
-std::string print_summary(lua_State* L, const Mesh& m);
+std::string print_summary(lua_State* L, const Held<Mesh>& m);
 
 // Pushes the report as a table: passes, summary, findings (a list), triangles, size {x, y, z}, thinnest_wall
 // and narrowest_gap (mm; nil when not measured), thin and narrow (counts), closed, crossing.

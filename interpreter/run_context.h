@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <lua.hpp>
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -18,6 +19,8 @@
 #include "kernels/io/paraview_view.h"
 
 namespace selfsim::interp {
+
+struct PrintReports;  // print_options.cpp
 
 struct RunConfig {
   std::filesystem::path recipe;
@@ -58,6 +61,9 @@ class RunContext : public Progress {
   std::map<std::pair<unsigned long long, unsigned long long>, std::string> saved_files;
   // The VTK files and series written, in order, for the run's ParaView view (paraview_view.h).
   std::vector<io::ViewDataset> view_datasets;
+  // The print checks already made of values still alive (print_options.cpp): a solid's warning, solid.check
+  // and save's summary measure it once.
+  std::shared_ptr<PrintReports> print_reports;
 
   // What the run's values may still make: --max-points less what live values hold.
   PointBudget budget() const { return {config.max_points, held_points}; }

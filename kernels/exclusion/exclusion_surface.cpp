@@ -238,6 +238,16 @@ SurfaceResult exclusion_surface(const Mesh& boundary, const Mesh& start, const S
     result.levels.push_back(report);
   }
   result.surface = in_place(s.result());
+  // What a print may rely on (solid.thicken): after level k pieces once apart keep that level's radius (the
+  // start is meant to keep the first), or the gap between start surfaces that began nearer. On every step,
+  // so a growth series carries the same fields throughout.
+  const auto mark = [&](Mesh& m, int level) {
+    const double r = opt.radius * std::pow(opt.factor, std::max(level, 1) - 1);
+    const double gap = result.start_gaps.between;
+    m.face_fields.set(Field{"clearance", 1, std::vector<double>{std::isfinite(gap) ? std::min(r, gap) : r}, true});
+  };
+  for (std::size_t k = 0; k < result.steps.size(); ++k) mark(result.steps[k], static_cast<int>(k));
+  mark(result.surface, opt.levels);
   return result;
 }
 

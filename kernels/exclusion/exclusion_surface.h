@@ -62,8 +62,10 @@ struct StartGaps {
 };
 
 struct SurfaceResult {
-  Mesh surface;  // point field `level` (0: a start point); face fields `level` (the oldest corner's) and
-                 // `surface` (from 1: the start's face-connected pieces, in order)
+  Mesh surface;  // point field `level` (0: a start point); face fields `level` (the oldest corner's),
+                 // `surface` (from 1: the start's face-connected pieces, in order) and `clearance`
+                 // (uniform: the last level's radius, or a nearer start's gap between surfaces: what pieces
+                 // once apart keep from each other, docs/exclusion.md)
   std::vector<LevelReport> levels;
   StartGaps start_gaps;
   std::vector<Mesh> steps;  // with keep_levels: the surface after levels 0 (the start), 1, ..., levels − 1, with

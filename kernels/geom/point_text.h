@@ -33,6 +33,12 @@ inline std::string mm_text(double v) {
   return s + " mm";
 }
 
+// An area in square millimetres: "0.0031 mm²" (two significant digits), "120 mm²" (whole from 10 up).
+inline std::string area_text(double v) {
+  if (!(std::abs(v) >= 10 && std::abs(v) < 1e15)) return short_number(v, 2) + " mm²";
+  return std::to_string(static_cast<long long>(std::llround(v))) + " mm²";
+}
+
 // A point in millimetres: "(12.31, 3.4, 8) mm".
 inline std::string mm_point_text(Vec3 p) {
   auto number = [](double v) {

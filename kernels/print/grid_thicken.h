@@ -16,6 +16,9 @@ struct GridThickenOptions {
   double thickness = 0;   // > 0, in the mesh's units (mm)
   double voxel = 0;       // the grid's; 0 for a quarter of the thickness
   double adaptivity = 0;  // in [0, 1]
+  // The surface's area, for the budget; 0: the mesh's own. A curve's segments given as degenerate triangles
+  // (grid_tube.h) have none, so their caller says how much sheet their band amounts to.
+  double area = 0;
   PointBudget budget;
 
   // Throws Error naming the option.

@@ -56,13 +56,16 @@ std::vector<double> at_points(const Mesh& m, const std::vector<double>& per_face
   return sum;
 }
 
-// The smallest value under `threshold`, where, and how many are under it.
-Spot spot_of(const std::vector<double>& values, const std::vector<Vec3>& where, double threshold) {
+// The smallest value under `threshold`, where, and how many (and how much area) are under it.
+Spot spot_of(const Mesh& m, const std::vector<double>& values, const std::vector<Vec3>& where, double threshold) {
   Spot s;
   s.measured = true;
   s.value = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < values.size(); ++i) {
-    if (values[i] < threshold) ++s.under;
+    if (values[i] < threshold) {
+      ++s.under;
+      s.area_under += 0.5 * norm(area_normal(m, m.triangles[i]));
+    }
     if (values[i] < s.value) {
       s.value = values[i];
       s.where = where[i];
@@ -100,8 +103,8 @@ void measure(const Mesh& m, const PointBudget& budget, Progress& progress, Print
   measure_rays(
       s.points, s.normals, [&](std::span<const Vec3> p, std::span<double> out) { grid.clearances(p, out); },
       {.step = r.voxel / 2, .wall_cap = r.wall_cap, .gap_cap = r.gap_cap}, wall, gap, rays);
-  r.wall = spot_of(wall, s.points, r.rules.min_wall);
-  r.gap = spot_of(gap, s.points, r.rules.min_gap);
+  r.wall = spot_of(m, wall, s.points, r.rules.min_wall);
+  r.gap = spot_of(m, gap, s.points, r.rules.min_gap);
   if (marked == nullptr) return;
   *marked = m;
   marked->point_fields.set(real_field("wall", at_points(m, wall)));
@@ -122,10 +125,10 @@ void add_findings(PrintReport& r) {
   // A crossing within the rays' first step is below what the grid resolves: said as "under" that step.
   const double step = r.voxel / 2;
   const auto measured = [&](double v) { return v <= 0.5 * step ? "under " + mm_text(step) : mm_text(v); };
-  if (r.wall.measured && r.wall.under > 0)
+  if (r.wall.measured && r.wall.area_under >= r.nozzle_spot())
     r.findings.push_back("walls thinner than " + mm_text(rules.min_wall) + " at " + places(r.wall.under) +
                          ", the thinnest " + measured(r.wall.value) + " at " + mm_point_text(r.wall.where));
-  if (r.gap.measured && r.gap.under > 0)
+  if (r.gap.measured && r.gap.area_under >= r.nozzle_spot())
     r.findings.push_back("gaps narrower than " + mm_text(rules.min_gap) + " (they fuse) at " + places(r.gap.under) +
                          ", the narrowest " + measured(r.gap.value) + " at " + mm_point_text(r.gap.where));
   if (static_cast<double>(r.triangles) > rules.max_triangles)
@@ -152,8 +155,12 @@ void add_findings(PrintReport& r) {
 std::string PrintReport::summary() const {
   const double step = voxel / 2;
   const auto at_least = [&](const Spot& s, double cap) {
-    if (s.value <= 0.5 * step) return "under " + mm_text(step);
-    return (s.value >= cap ? ">= " : "") + mm_text(std::min(s.value, cap));
+    // Under the threshold over less than the nozzle's spot: no finding, and said so.
+    const std::string speck = s.under > 0 && s.area_under < nozzle_spot()
+                                  ? " on a " + area_text(s.area_under) + " speck, smaller than the nozzle's spot"
+                                  : "";
+    if (s.value <= 0.5 * step) return "under " + mm_text(step) + speck;
+    return (s.value >= cap ? ">= " : "") + mm_text(std::min(s.value, cap)) + speck;
   };
   std::string facts = size_text(box.size()) + ", " + count_text(double(triangles)) + " triangles";
   if (wall.measured) facts += ", walls " + at_least(wall, wall_cap) + ", gaps " + at_least(gap, gap_cap);

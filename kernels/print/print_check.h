@@ -7,6 +7,8 @@
 //     and outwards to the next part), within the grid's interpolation error (WallGrid::error);
 //   - the triangle count and the bounding box, against the triangle budget and the printer's bed;
 //   - a solid only a few millimetres across, which is most often one still in its curve's units.
+// Thin walls or narrow gaps over less area than the nozzle's spot (a disc of its width) are no finding: the
+// printer cannot draw anything that small (a mesher's dimple); the summary says them apart.
 // Each problem is one finding: a line of text naming where it is. The walls and gaps are also point and
 // face fields (`wall`, `gap`, mm) so ParaView shows the thin spots.
 #pragma once
@@ -30,6 +32,7 @@ struct Spot {
   double value = 0;  // mm; the cap when nothing was measured below it
   Vec3 where;
   std::size_t under = 0;
+  double area_under = 0;  // mm², of the triangles under the threshold
   bool measured = false;  // false when the walls were not measured (see PrintReport::skipped)
 };
 
@@ -47,6 +50,8 @@ struct PrintReport {
   std::vector<std::string> findings;
 
   bool passes() const { return findings.empty(); }
+  // A disc of the nozzle's width: the least area a thin wall or narrow gap must cover to be a finding.
+  double nozzle_spot() const { return 0.25 * 3.14159265358979 * rules.nozzle * rules.nozzle; }
   // One line: "print check: passes (closed, 120 x 80 x 40 mm, 212,340 triangles, walls >= 0.92 mm, gaps >=
   // 0.41 mm)" or "print check: 2 problems: ...; ...".
   std::string summary() const;

@@ -25,6 +25,7 @@ struct PrintRules {
 
   // Throws Error naming the option ("option 'min_wall' must be a number in [0.01, 100] (mm), got 0").
   void validate() const;
+  bool operator==(const PrintRules&) const = default;
   // The profile's defaults; throws Error listing the profiles for an unknown name.
   static PrintRules named(std::string_view profile);
   static std::vector<std::string> profiles();

@@ -13,7 +13,7 @@ namespace selfsim::print {
 
 namespace {
 
-constexpr std::array<const char*, 5> length_fields{"thickness", "radius", "width", "wall", "gap"};
+constexpr std::array<const char*, 6> length_fields{"thickness", "radius", "width", "wall", "gap", "clearance"};
 
 void scale_fields(Fields& fields, double k) {
   for (const char* name : length_fields) {

@@ -69,18 +69,23 @@ void march(std::span<const Vec3> points, std::span<const Vec3> normals, const Cl
 // other part faces back. A crossing at a steep angle is the other side of a groove or a wedge meeting the
 // ray's side (a V-shaped crease of a crumpled surface, whose bottom a printer fills anyway): read as the cap.
 // The surface's normal at the crossing is the distance's gradient there (central differences a step wide).
-// Crossings within the first step are kept: the grid does not resolve the normal of so thin a wall.
+// A wall crossed within the first step is kept: the grid does not resolve the normal of so thin a wall.
+// A gap crossed within the first step is tested like any other: at the bottom of a crease the ray enters
+// the other flank at once, at its angle, while two parts nearly touching face each other there too.
 void keep_facing(std::span<const Vec3> points, std::span<const Vec3> normals, const Clearance& clearance,
                  const RayLimits& limits, double cap, double sign, std::size_t begin, std::size_t end,
                  std::span<double> out) {
+  const double facing = sign < 0 ? limits.wall_facing : limits.gap_facing;
   std::vector<std::size_t> crossed;
   std::vector<Vec3> at;
   const double h = limits.step;
   const Vec3 axes[3] = {{h, 0, 0}, {0, h, 0}, {0, 0, h}};
   for (std::size_t i = begin; i < end; ++i) {
-    if (!(out[i] < cap) || out[i] <= limits.step) continue;
+    if (!(out[i] < cap) || (sign < 0 && out[i] <= limits.step)) continue;
     crossed.push_back(i);
-    const Vec3 x = points[i] + (sign * out[i]) * normals[i];
+    // Within the first step the crossing is read a step farther in, where the grid resolves the other side.
+    const double at_distance = out[i] <= limits.step ? out[i] + limits.step : out[i];
+    const Vec3 x = points[i] + (sign * at_distance) * normals[i];
     for (const Vec3& e : axes) {
       at.push_back(x + e);
       at.push_back(x - e);
@@ -96,7 +101,7 @@ void keep_facing(std::span<const Vec3> points, std::span<const Vec3> normals, co
     if (!(length > 0)) continue;
     const double along = dot(outward, sign * normals[crossed[j]]) / length;  // cosine with the ray
     // Inwards the far side's outward normal points along the ray; outwards the other part's points back.
-    if (sign < 0 ? along < limits.facing : along > -limits.facing) out[crossed[j]] = cap;
+    if (sign < 0 ? along < facing : along > -facing) out[crossed[j]] = cap;
   }
 }
 

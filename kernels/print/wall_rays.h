@@ -26,7 +26,11 @@ struct RayLimits {
   double step = 0;      // between samples along a ray, > 0
   double wall_cap = 0;  // the longest wall measured
   double gap_cap = 0;   // the widest gap measured
-  double facing = 0.7;  // a crossing counts when the surface crossed is within acos(facing) of facing the ray
+  // A crossing counts when the surface crossed is within acos(facing) of facing the ray. Gaps are stricter:
+  // at the narrowest spot between two parts (or two stretches of one) the surfaces face each other exactly,
+  // while the bottom of a V-shaped crease (a folded sheet's inner side) fills without joining anything new.
+  double wall_facing = 0.7;  // 45 degrees: a wedge sharper than 90 degrees is thin near its edge
+  double gap_facing = 0.94;  // 20 degrees: a crease's groove narrower than 40 degrees still counts
 };
 
 // wall[i] and gap[i] for the ray pair from points[i] along unit normals[i] (a zero normal reads as both

@@ -36,7 +36,7 @@ double grid_thicken_size(const Mesh& m, const GridThickenOptions& opt) {
   const vdb::Frame f = frame_around(m, opt);
   // The band on both sides of the surface, and the solid: two sheets of the surface's area at the voxel's
   // spacing (points and twice as many triangles).
-  const double area = surface_area(m);
+  const double area = opt.area > 0 ? opt.area : surface_area(m);
   return vdb::tree_size(m.points, area, f, 2 * band_of(opt)) + 2 * 3 * area / (f.voxel * f.voxel);
 }
 

@@ -63,6 +63,16 @@ TEST(PrintCheck, TwoBlocksCloseTogetherHaveANarrowGap) {
   EXPECT_TRUE(mentions(r, "gaps narrower than 0.4 mm")) << r.summary();
   EXPECT_LE(r.gap.value, 0.2 + r.error);  // a gap of under two voxels reads as under half a voxel or more
   EXPECT_FALSE(mentions(r, "walls thinner"));
+  // A narrow gap over less area than the nozzle's spot is no finding (here a 20 mm nozzle, whose disc of
+  // 314 mm² covers more than the blocks' facing sides, 2 x 100 mm²), and the summary says why.
+  PrintRules wide;
+  wide.nozzle = 20;
+  const PrintReport speck = check_print(two, wide, PointBudget{}, no_progress());
+  EXPECT_FALSE(mentions(speck, "gaps narrower")) << speck.summary();
+  EXPECT_NE(speck.summary().find("mm² speck, smaller than the nozzle's spot"), std::string::npos) << speck.summary();
+  // One side's facing triangles at least (a gap of 1.5 voxels may read from one side only), at most both.
+  EXPECT_GE(speck.gap.area_under, 100 - 1e-9);
+  EXPECT_LE(speck.gap.area_under, 200 + 1e-9);
   // The same blocks 1 mm apart pass.
   const Mesh apart = joined(box_mesh({0, 0, 0}, {10, 10, 5}), box_mesh({0, 0, 6}, {10, 10, 11}));
   EXPECT_TRUE(check_print(apart, PrintRules{}, PointBudget{}, no_progress()).passes());

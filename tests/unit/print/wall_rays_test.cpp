@@ -97,7 +97,7 @@ TEST(WallRays, TheFarFlankOfAGrooveIsNotAGapButFacingWallsAre) {
   const Vec3 on{0.05, 0, 0.0866025403784}, n{-0.866025403784, 0, 0.5};
   EXPECT_EQ(rays({on}, {n}, of(+groove), {.step = 0.005, .wall_cap = 1, .gap_cap = 1}).gap[0], 1);
   // Without the facing rule the ray reads the groove's width there.
-  EXPECT_NEAR(rays({on}, {n}, of(+groove), {.step = 0.005, .wall_cap = 1, .gap_cap = 1, .facing = -2}).gap[0],
+  EXPECT_NEAR(rays({on}, {n}, of(+groove), {.step = 0.005, .wall_cap = 1, .gap_cap = 1, .gap_facing = -2}).gap[0],
               0.173205080757, 1e-6);
   // A slot 0.3 wide between two blocks: its walls face each other, a gap.
   const auto slot = [](Vec3 p) { return std::max(-p.x, p.x - 0.3); };
@@ -112,6 +112,19 @@ TEST(WallRays, AWedgesOtherFaceIsNotAWallUnlessItFaces) {
   };
   const Vec3 n{0.866025403784, 0, 0.5}, on{0.1, 0, -0.173205080757};
   EXPECT_EQ(rays({on}, {n}, of(+wedge), {.step = 0.005, .wall_cap = 1, .gap_cap = 1}).wall[0], 1);
-  EXPECT_NEAR(rays({on}, {n}, of(+wedge), {.step = 0.005, .wall_cap = 1, .gap_cap = 1, .facing = -2}).wall[0],
+  EXPECT_NEAR(rays({on}, {n}, of(+wedge), {.step = 0.005, .wall_cap = 1, .gap_cap = 1, .wall_facing = -2}).wall[0],
               0.346410161514, 1e-6);
+}
+
+TEST(WallRays, ANarrowCreasesBottomIsNotAGapButANarrowWedgeIsAThinWall) {
+  // A folded sheet's inner side: a V-groove 30 degrees wide (its flanks' normals 150 degrees apart). Its
+  // bottom fills without joining anything: not a gap (gaps count within 20 degrees of facing).
+  static const double c = std::cos(0.2617993877991), s = std::sin(0.2617993877991);  // 15 degrees
+  const auto groove = [](Vec3 p) { return std::max(c * p.x - s * p.z, -c * p.x - s * p.z); };
+  const Vec3 on{0.05 * s, 0, 0.05 * c}, n{-c, 0, s};
+  EXPECT_EQ(rays({on}, {n}, of(+groove), {.step = 0.001, .wall_cap = 1, .gap_cap = 1}).gap[0], 1);
+  // The same angle as a solid wedge (its edge 30 degrees) is thin near the edge: walls count within 45.
+  const auto wedge = [](Vec3 p) { return -std::max(c * p.x - s * p.z, -c * p.x - s * p.z); };
+  EXPECT_NEAR(rays({on}, {-1.0 * n}, of(+wedge), {.step = 0.001, .wall_cap = 1, .gap_cap = 1}).wall[0],
+              0.05 * std::tan(0.5235987755983), 1e-6);
 }
