@@ -282,9 +282,11 @@ WallGrid::WallGrid(const Volume& v, double voxel, double depth, const PointBudge
   // its zero surface measured again (levelSetRebuild): the distance to the region's own walls, deep inside
   // it. The combined bands alone read a union's parts' distances, so a wall where two parts touch.
   data->grid = openvdb_call([&] {
-    // A mesh's distances are measured from its triangles directly, as deep as asked.
+    // A mesh's distances are measured from its triangles directly, as deep as asked: two voxels each side
+    // when nothing deeper is asked (OpenVDB then skips widening the band, the costly step; beyond it the
+    // sign is still right everywhere).
     if (!v.samples && v.kind == Volume::Kind::mesh)
-      return mesh_grid(*v.mesh, true, f, interrupt, outside_band(voxel, outside), band(voxel, depth));
+      return mesh_grid(*v.mesh, true, f, interrupt, band(voxel, outside), band(voxel, depth));
     const Grid::Ptr combined = v.samples ? samples_grid(*v.samples) : volume_level_set(v, f, interrupt);
     if (progress.cancelled()) throw Cancelled();
     return openvdb::tools::levelSetRebuild(*combined, 0.0f, outside_band(voxel, outside), band(voxel, depth), nullptr,
