@@ -207,6 +207,7 @@ int solid_smooth(lua_State* L) {
     opt.steps = static_cast<int>(o.integer("steps", 1, 0, 12));
     opt.bounded = o.enumeration("stencil", {"loop", "bounded"}, 0) == 1;
     const bool meets = o.boolean("meets", false);
+    const PrintCheckOption check = read_print_check(o);
     o.finish();
     Mesh smooth = with_budget(L, [&](const PointBudget& b) {
       opt.budget = b;
@@ -219,6 +220,7 @@ int solid_smooth(lua_State* L) {
                     ", " + number_text(p->where.z) + "} (its triangles " + std::to_string(p->first + 1) + " and " +
                     std::to_string(p->second + 1) + "): fewer steps, or keep it with meets = true");
     push_geometry(L, std::move(smooth));
+    warn_unless_printable_solid(L, "solid.smooth", test_geometry<Mesh>(L, -1), check);
     return 1;
   });
 }
@@ -231,9 +233,11 @@ int solid_decimate(lua_State* L) {
     Options o(L, 2);
     o.require("triangles", "how many triangles to keep, e.g. triangles = 1000000");
     const double triangles = static_cast<double>(o.integer("triangles", 0, 4, 1LL << 40));
+    const PrintCheckOption check = read_print_check(o);
     o.finish();
     check_run_budget(L, budget_size(*m), "the decimated copy");
     push_geometry(L, print::decimate(*m, triangles, RunContext::of(L)));
+    warn_unless_printable_solid(L, "solid.decimate", test_geometry<Mesh>(L, -1), check);
     return 1;
   });
 }

@@ -149,7 +149,11 @@ int info_command(const std::string& given) {
 int print_info_command(const std::string& file, const std::string& profile) {
   try {
     const print::PrintRules rules = print::PrintRules::named(profile);
-    const Mesh m = io::dataset_mesh(io::read_dataset(file));
+    const io::Dataset d = io::read_dataset(file);
+    if (d.shapes != io::CellShapes::polygons || d.cell_ends.empty())
+      throw Error("it holds " + std::string(d.cell_ends.empty() ? "no cells" : "curves (polylines)") +
+                  ", not a solid's surface: make a solid of it first (solid.tube or solid.relief in a recipe)");
+    const Mesh m = io::dataset_mesh(d);
     const print::PrintReport r = print::check_print(m, rules, PointBudget{}, no_progress());
     std::printf("file: %s\n%s\n", shown_text(file, 4096).c_str(), r.summary().c_str());
     for (const std::string& f : r.findings) std::printf("  - %s\n", f.c_str());

@@ -84,6 +84,10 @@ void warn_unless_printable(lua_State* L, const char* fn, const Held<Mesh>& m, co
   lua_warning(L, message.c_str(), 0);
 }
 
+void warn_unless_printable_solid(lua_State* L, const char* fn, const Held<Mesh>& m, const PrintCheckOption& check) {
+  if (check.on && mesh_topology(*m, RunContext::of(L)).closed()) warn_unless_printable(L, fn, m, check);
+}
+
 std::string print_summary(lua_State* L, const Held<Mesh>& m) {
   if (const print::PrintReport* r = reports_of(L).find(m, print::PrintRules{})) return r->summary();
   const MeshTopology t = mesh_topology(*m, RunContext::of(L));

@@ -34,6 +34,10 @@ void keep_print_report(lua_State* L, const Held<Mesh>& m, const print::PrintRepo
 // With check.on, checks m and warns (one line, naming the recipe line and fn) when it fails.
 void warn_unless_printable(lua_State* L, const char* fn, const Held<Mesh>& m, const PrintCheckOption& check);
 
+// The same for a function whose result may be an open surface on its way to a solid (solid.smooth,
+// solid.decimate): an open mesh is not checked.
+void warn_unless_printable_solid(lua_State* L, const char* fn, const Held<Mesh>& m, const PrintCheckOption& check);
+
 // The line save() prints under a print format's file: the check's summary (fdm), or that the mesh is an
 // open surface and not a solid.
 std::string print_summary(lua_State* L, const Held<Mesh>& m);

@@ -138,6 +138,7 @@ local cube = solid.size(mesh { points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 },
                                triangles = { { 1, 3, 2 }, { 1, 2, 4 }, { 2, 3, 4 }, { 3, 1, 4 } } }, 20)
 save(cube, "tet.3mf")
 save(solid.relief(polygon { { 0, 0 }, { 10, 0 }, { 10, 10 }, { 0, 10 } }, { height = 0.3, check = false }), "plate.stl")
+save(polyline { { 0, 0 }, { 10, 0 }, { 10, 10 } }, "curve.vtp")
 LUA
 expect 0 "run print recipe" -- "$selfsim" run "$tmp/print.lua" -o "$tmp/p" -q
 expect 0 "info --print passes" -- "$selfsim" info --print "$tmp/p/tet.3mf"
@@ -146,6 +147,8 @@ expect 1 "info --print thin" -- "$selfsim" info --print "$tmp/p/plate.stl" --pro
 contains "$tmp/out" "walls thinner than 0.4 mm" "print check thin walls"
 expect 2 "info --print open" -- "$selfsim" info --print "$tmp/m/open.vtu"
 contains "$tmp/err" "the mesh is open" "print check open"
+expect 2 "info --print curve" -- "$selfsim" info --print "$tmp/p/curve.vtp"
+contains "$tmp/err" "it holds curves (polylines), not a solid's surface: make a solid of it first" "print check curve"
 expect 2 "info --print bad profile" -- "$selfsim" info --print "$tmp/p/tet.3mf" --profile laser
 expect 0 "info 3mf" -- "$selfsim" info "$tmp/p/tet.3mf"
 contains "$tmp/out" "surface: closed manifold, 1 component" "info 3mf closed"
