@@ -1,6 +1,6 @@
 -- The Koch snowflake (seed 000's substitution curves, curves.koch_snowflake) as a relief: the closed curve at
--- `level`, scaled to `size` mm, raised `height` mm on a `base` mm plate that follows the outline `margin` mm
--- out. Saved as 3MF and STL for a slicer.
+-- `level`, scaled to `size` mm, raised `height` mm on a `base` mm rectangular plate reaching `margin` mm
+-- beyond the outline's bounding box. Saved as 3MF and STL for a slicer.
 --   selfsim run examples/print_relief.lua
 local curves = require "selfsim.curves"
 local flake = curves.koch_snowflake():curve { level = param("level", 3) }

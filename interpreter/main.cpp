@@ -80,18 +80,33 @@ int main(int argc, char** argv) {
       return run_command(parse_run_arguments(rest));
     }
     if (command == "info") {
-      if (!rest.empty() && rest[0] == "--print") {
-        std::string profile = "fdm";
-        if (rest.size() == 4 && rest[2] == "--profile")
-          profile = rest[3];
-        else if (rest.size() != 2)
-          throw UsageError("info --print expects one file, and optionally --profile fdm|sla");
+      // --print and --profile P may come before or after the file, in any order.
+      bool print = false;
+      std::string profile, file;
+      int files = 0;
+      for (std::size_t i = 0; i < rest.size(); ++i) {
+        if (rest[i] == "--print") {
+          print = true;
+        } else if (rest[i] == "--profile") {
+          if (i + 1 == rest.size()) throw UsageError("--profile expects fdm or sla");
+          profile = rest[++i];
+        } else {
+          file = rest[i];
+          ++files;
+        }
+      }
+      if (!profile.empty() && !print) throw UsageError("--profile is for info --print FILE");
+      if (files != 1)
+        throw UsageError(print ? "info --print expects one file (and optionally --profile fdm|sla), got " +
+                                     std::to_string(files)
+                               : "info expects one file, got " + std::to_string(files));
+      if (print) {
+        if (profile.empty()) profile = "fdm";
         if (profile != "fdm" && profile != "sla")
           throw UsageError("--profile expects fdm or sla, got '" + profile + "'");
-        return print_info_command(rest[1], profile);
+        return print_info_command(file, profile);
       }
-      if (rest.size() != 1) throw UsageError("info expects one file");
-      return info_command(rest[0]);
+      return info_command(file);
     }
     if (command == "preview") {
       for (const std::string& a : rest)

@@ -26,6 +26,9 @@ void measure(FieldSummary& s, std::size_t count, Get values, Progress& progress 
     first = false;
     if (s.integer && seen.size() <= max_categories) seen.insert(static_cast<int>(v));
   }
+  // Values that differ only by rounding (a tube's walls all read as the 1.2 mm cap) are one value: a colour
+  // scale spread over 1e-15 would paint the noise.
+  if (!first && s.max - s.min <= 1e-9 * std::max(std::abs(s.min), std::abs(s.max))) s.max = s.min;
   s.distinct.assign(seen.begin(), seen.end());
 }
 

@@ -12,6 +12,7 @@
 #include "kernels/geom/check.h"
 #include "kernels/geom/error.h"
 #include "kernels/geom/mesh_intersections.h"
+#include "kernels/geom/point_text.h"
 
 namespace selfsim::print {
 
@@ -25,7 +26,7 @@ constexpr double degrees_per_radian = 180 / std::numbers::pi;
 constexpr std::size_t report_points = 65536;
 
 // "(1.5, 0, -2)": six significant digits, enough to find the place in a viewer without a wall of digits.
-std::string point_text(Vec3 p) {
+std::string place_text(Vec3 p) {
   char buf[96];
   std::snprintf(buf, sizeof buf, "(%.6g, %.6g, %.6g)", p.x, p.y, p.z);
   return buf;
@@ -41,7 +42,7 @@ std::string count(std::size_t i) { return std::to_string(i + 1); }
 
 // "path 2, point 7 (1, 0.5, 0)", counted from 1.
 std::string at_point(std::size_t path, std::size_t point, Vec3 p) {
-  return "path " + count(path) + ", point " + count(point) + " " + point_text(p);
+  return "path " + count(path) + ", point " + count(point) + " " + place_text(p);
 }
 
 // One path as the tube sees it: a closed path's last point dropped (its first ring closes the loop).
@@ -129,9 +130,9 @@ void check_curve(const Polyline3& c, std::span<const double> radii) {
 void check_path(const Path& v) {
   const std::string path = "path " + count(v.index);
   if (v.given.size() == 1)
-    throw Error(path + " has a single point " + point_text(v.given[0]) + ": a tube needs at least one segment");
+    throw Error(path + " has a single point " + place_text(v.given[0]) + ": a tube needs at least one segment");
   const auto zero_length = [&](std::size_t j, Vec3 p) {
-    return Error(path + ", points " + count(j) + " and " + count(j + 1) + " are both at " + point_text(p) +
+    return Error(path + ", points " + count(j) + " and " + count(j + 1) + " are both at " + place_text(p) +
                  ": a zero-length segment has no direction to make a tube along (remove the duplicate point)");
   };
   for (std::size_t j = 0; j + 1 < v.given.size(); ++j)
@@ -143,7 +144,7 @@ void check_path(const Path& v) {
     const double turn = std::acos(std::clamp(dot(v.direction(a), v.direction(i)), -1.0, 1.0));
     const std::string deg = angle_text(turn * degrees_per_radian);
     if (turn * degrees_per_radian > max_turn_degrees)
-      throw Error(path + " turns by " + deg + " degrees at point " + count(i) + " " + point_text(v.points[i]) +
+      throw Error(path + " turns by " + deg + " degrees at point " + count(i) + " " + place_text(v.points[i]) +
                   ": more than " + angle_text(max_turn_degrees) + ", the tube's mitred joint would explode");
     // The ring reaches r tan(turn / 2) back along each segment on the inner side of the bend; past half a
     // segment it could cross the neighbouring ring's reach and the wall between them would fold.
@@ -151,8 +152,8 @@ void check_path(const Path& v) {
     const double room = 0.5 * std::min(v.length(a), v.length(i));
     if (reach > room)
       throw Error("the tube would fold at " + at_point(v.index, i, v.points[i]) + ": its radius " +
-                  number_text(v.radii[i]) + " turning by " + deg + " degrees reaches " + number_text(reach) +
-                  " along its segments, more than half the shorter one (" + number_text(room) + ")");
+                  short_number(v.radii[i], 4) + " turning by " + deg + " degrees reaches " + short_number(reach, 4) +
+                  " along its segments, more than half the shorter one (" + short_number(room, 4) + ")");
   }
 }
 
@@ -323,7 +324,7 @@ Mesh tube(const Polyline3& c, std::span<const double> radii, const TubeOptions& 
   if (!m.finite()) throw Error("the tube has points that are not finite: its radii or coordinates are too large");
 
   if (const auto hit = first_intersection(m, checking))
-    throw Error("the tube meets itself near " + point_text(hit->where) + ": " +
+    throw Error("the tube meets itself near " + place_text(hit->where) + ": " +
                 part_text(paths, triangle_begin, sides, hit->first) + " and " +
                 part_text(paths, triangle_begin, sides, hit->second) + " come closer than their two radii");
 

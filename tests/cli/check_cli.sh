@@ -147,6 +147,11 @@ expect 1 "info --print thin" -- "$selfsim" info --print "$tmp/p/plate.stl" --pro
 contains "$tmp/out" "walls thinner than 0.4 mm" "print check thin walls"
 expect 2 "info --print open" -- "$selfsim" info --print "$tmp/m/open.vtu"
 contains "$tmp/err" "the mesh is open" "print check open"
+expect 1 "info --print, flags after the file" -- "$selfsim" info "$tmp/p/plate.stl" --print --profile sla
+contains "$tmp/out" "walls thinner than 0.4 mm" "print check flags after the file"
+expect 1 "info --print, profile before the file" -- "$selfsim" info --print --profile sla "$tmp/p/plate.stl"
+expect 2 "info two files" -- "$selfsim" info --print "$tmp/p/plate.stl" "$tmp/p/tet.3mf"
+contains "$tmp/err" "info --print expects one file (and optionally --profile fdm|sla), got 2" "info two files message"
 expect 2 "info --print curve" -- "$selfsim" info --print "$tmp/p/curve.vtp"
 contains "$tmp/err" "it holds curves (polylines), not a solid's surface: make a solid of it first" "print check curve"
 expect 2 "info --print bad profile" -- "$selfsim" info --print "$tmp/p/tet.3mf" --profile laser

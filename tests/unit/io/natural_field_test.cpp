@@ -90,3 +90,19 @@ TEST(NaturalField, FieldsReadBackFromAFileAreSummarisedAlike) {
   EXPECT_EQ(c.field, "t");  // one curve id does not vary: the next natural field
   EXPECT_TRUE(c.on_points);
 }
+
+TEST(NaturalField, ValuesDifferingOnlyByRoundingAreOneValue) {
+  // A checked tube: every wall reads as the 1.2 mm cap, give or take the last bit.
+  Mesh m = two_triangles();
+  m.face_fields.set(real_field("wall", {1.2, 1.2000000000000006}));
+  const io::ValueRef v = &m;
+  const std::vector<io::FieldSummary> same = io::summarise(v);
+  ASSERT_EQ(same.size(), 1u);
+  EXPECT_EQ(same[0].min, same[0].max);
+  EXPECT_TRUE(io::natural_colouring(same).field.empty());  // one colour, not a scale over the noise
+  // A real difference, however small beside the value, stays.
+  m.face_fields.set(real_field("wall", {1.2, 1.2001}));
+  const io::Colouring d = io::natural_colouring(io::summarise(io::ValueRef{&m}));
+  EXPECT_EQ(d.field, "wall");
+  EXPECT_LT(d.min, d.max);
+}
