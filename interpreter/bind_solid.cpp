@@ -50,6 +50,10 @@ double length_option(Options& o, const char* key, double shape_size, const std::
   if (shape_size > 0 && v > 1e6 * shape_size)
     throw Error("option '" + std::string(key) + "' is " + number_text(v) + ", more than 1e6 times the shape's size " +
                 number_text(shape_size) + " (sizes are millimetres: scale the shape first, solid.size)");
+  // Below a millionth of the shape, double precision cannot tell the solid's sides apart.
+  if (shape_size > 0 && v < 1e-6 * shape_size)
+    throw Error("option '" + std::string(key) + "' is " + number_text(v) + ", under a millionth of the shape's size " +
+                number_text(shape_size) + " (sizes are millimetres)");
   return v;
 }
 
@@ -258,7 +262,11 @@ int solid_size(lua_State* L) {
       Options o(L, 2);
       opt.size = o.number("size", 0);
       opt.axis = o.enumeration("axis", {"x", "y", "z"}, -1);
-      if (const auto fit = o.point3("fit")) opt.fit = *fit;
+      if (const auto fit = o.point3("fit")) {
+        // Checked here: a box of zeros would read as no box at all.
+        for (double side : {fit->x, fit->y, fit->z}) check_between(side, 1e-6, 1e6, "each side of option 'fit' (mm)");
+        opt.fit = *fit;
+      }
       o.finish();
     }
     const io::ValueRef ref = v->ref();

@@ -66,6 +66,21 @@ std::vector<HalfEdge> sorted_half_edges(const Mesh& m, Progress& progress) {
 
 }  // namespace
 
+std::vector<std::uint32_t> face_components(const Mesh& m, Progress& progress) {
+  const std::vector<HalfEdge> half = sorted_half_edges(m, progress);
+  Components faces(m.triangles.size());
+  for (std::size_t i = 1; i < half.size(); ++i)
+    if (half[i].key() == half[i - 1].key()) faces.join(half[i - 1].face, half[i].face);
+  std::vector<std::uint32_t> id(m.triangles.size()), number(m.triangles.size(), UINT32_MAX);
+  std::uint32_t next = 0;
+  for (std::uint32_t f = 0; f < m.triangles.size(); ++f) {
+    std::uint32_t& n = number[faces.root(f)];
+    if (n == UINT32_MAX) n = next++;
+    id[f] = n;
+  }
+  return id;
+}
+
 MeshTopology mesh_topology(const Mesh& m, Progress& progress) {
   MeshTopology t;
   t.faces = m.triangles.size();

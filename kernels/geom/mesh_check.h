@@ -4,7 +4,9 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "kernels/geom/mesh.h"
 #include "kernels/geom/progress.h"
@@ -38,8 +40,12 @@ struct MeshTopology {
 // Points and triangles count from 1.
 std::string first_open_edge(const Mesh& m);
 
-// The topology of m. Points and faces in first_problem count from 1. O(F log F); looks for a stop (throws
-// Cancelled) as it sorts and every 65,536 faces.
+// The topology of m. Points and faces in first_problem count from 1. O(F); looks for a stop (throws
+// Cancelled) every 65,536 points and faces.
 MeshTopology mesh_topology(const Mesh& m, Progress& progress = no_progress());
+
+// Each face's face-connected piece (faces sharing an edge are in one), numbered from 0 in the order of each
+// piece's first face. O(F).
+std::vector<std::uint32_t> face_components(const Mesh& m, Progress& progress = no_progress());
 
 }  // namespace selfsim

@@ -19,7 +19,7 @@ void check_fields(const std::map<std::string, FieldValues>& fields, std::size_t 
     for (std::size_t i = 0; i < f.values.size(); ++i)
       if (!std::isfinite(f.values[i]))
         throw Error(what + " has a non-finite value (" + std::to_string(f.values[i]) + ") at " + where + " " +
-                    std::to_string(i / static_cast<std::size_t>(f.components)));
+                    std::to_string(i / static_cast<std::size_t>(f.components) + 1));  // from 1, as c:point(i)
   }
 }
 

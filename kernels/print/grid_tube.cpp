@@ -40,15 +40,18 @@ template <class V>
 Mesh tube_on_grid(const PolylineT<V>& c, const GridTubeOptions& opt, Progress& progress) {
   opt.validate();
   double length = 0;
-  const Mesh segments = segments_of(c, length);
-  if (segments.triangles.empty()) throw Error("the curve has no segment of non-zero length to make a tube of");
+  const Mesh segments_mesh = segments_of(c, length);
+  if (segments_mesh.triangles.empty()) throw Error("the curve has no segment of non-zero length to make a tube of");
   GridThickenOptions grid{
       .thickness = 2 * opt.radius, .voxel = opt.voxel_size(), .adaptivity = opt.adaptivity, .budget = opt.budget};
-  // The budget as a sheet of this area: its band (both sides, radius + 2 voxels deep) holds twice the
-  // cylinder's voxels, its two meshed sheets about the tube's 2 pi r L: predicted high rather than low.
+  // The budget as a sheet of this area: its band (both sides, radius + 2 voxels deep) holds at least the
+  // capsules' voxels, its two meshed sheets at least their surface (2 pi r L, and a whole ball, 4 pi r²,
+  // for each segment: many short segments apart are that many balls). Predicted high rather than low:
+  // segments that overlap make less.
   const double reach = opt.radius + 2 * grid.voxel;
-  grid.area = std::numbers::pi * reach * length;
-  return thicken_on_grid(segments, grid, progress);
+  const double segments = static_cast<double>(segments_mesh.triangles.size());
+  grid.area = std::numbers::pi * reach * length + 4 * std::numbers::pi * reach * reach * segments;
+  return thicken_on_grid(segments_mesh, grid, progress);
 }
 
 }  // namespace

@@ -42,6 +42,25 @@ Samples samples_of(const Mesh& m, bool inward) {
   return s;
 }
 
+// Faces of closed shells that face inwards inside the solid: a sealed cavity's walls (their enclosed volume
+// is negative). OpenVDB's signed distance takes its sign from a flood fill in from outside, so it reads a
+// cavity as solid: a ray from a cavity's wall into it would read a gap of nothing. Those gaps are not
+// measured (the cavity is empty space a printer walls in, not a gap that fuses).
+std::vector<char> cavity_faces(const Mesh& m, Progress& progress) {
+  const std::vector<std::uint32_t> piece = face_components(m, progress);
+  std::vector<double> volume;
+  const BBox3 b = m.bbox();
+  const Vec3 o = 0.5 * (b.min + b.max);
+  for (std::size_t f = 0; f < m.faces(); ++f) {
+    if (piece[f] >= volume.size()) volume.resize(piece[f] + 1, 0);
+    const Triangle& t = m.triangles[f];
+    volume[piece[f]] += dot(m.points[t[0]] - o, cross(m.points[t[1]] - o, m.points[t[2]] - o));
+  }
+  std::vector<char> cavity(m.faces());
+  for (std::size_t f = 0; f < m.faces(); ++f) cavity[f] = volume[piece[f]] < 0;
+  return cavity;
+}
+
 // A point's value: the area-weighted mean of its triangles' (for ParaView's point colouring).
 std::vector<double> at_points(const Mesh& m, const std::vector<double>& per_face) {
   std::vector<double> sum(m.points.size(), 0), weight(m.points.size(), 0);
@@ -91,10 +110,20 @@ void measure(const Mesh& m, const PointBudget& budget, Progress& progress, Print
   // narrowest band (two voxels each side). Deeper in a wall (or a gap) they read the band's edge and leap by
   // it, a voxel at a time. A wider band took three quarters of the check's time and changed no result.
   const double depth = 0, outside = 0;
+  // OpenVDB's frames hold 2^20 voxels across (grid_frame.h); a solid wider than that (150 m at 0.13 mm) is
+  // no print, and the report says so rather than failing.
+  const Vec3 extent = m.bbox().size();
+  const double across = std::max({extent.x, extent.y, extent.z}) / r.voxel;
+  if (!(across + 64 < 1048576.0)) {
+    r.skipped = "walls and gaps not measured: the solid is " + count_text(across) + " voxels of " + mm_text(r.voxel) +
+                " across, more than a distance grid holds (sizes are millimetres)";
+    return;
+  }
   const double size = WallGrid::size(v, r.voxel, depth, outside);
   if (size > budget.left()) {
     r.skipped = "walls and gaps not measured: the distance grid at a " + mm_text(r.voxel) + " voxel would take " +
-                count_text(size) + " points' worth of memory, over the limit (set a larger 'voxel')";
+                count_text(size) + " points' worth of memory, over the limit (solid.check's 'voxel' larger, or " +
+                "--max-points)";
     return;
   }
   ProgressStage build(progress, 0.3, 0.7);
@@ -106,6 +135,11 @@ void measure(const Mesh& m, const PointBudget& budget, Progress& progress, Print
   measure_rays(
       s.points, s.normals, [&](std::span<const Vec3> p, std::span<double> out) { grid.clearances(p, out); },
       {.step = r.voxel / 2, .wall_cap = r.wall_cap, .gap_cap = r.gap_cap}, wall, gap, rays);
+  if (!r.inward) {
+    const std::vector<char> cavity = cavity_faces(m, progress);
+    for (std::size_t f = 0; f < gap.size(); ++f)
+      if (cavity[f]) gap[f] = r.gap_cap;
+  }
   r.wall = spot_of(m, wall, s.points, r.rules.min_wall);
   r.gap = spot_of(m, gap, s.points, r.rules.min_gap);
   if (marked == nullptr) return;
@@ -128,10 +162,10 @@ void add_findings(PrintReport& r) {
   // A crossing within the rays' first step is below what the grid resolves: said as "under" that step.
   const double step = r.voxel / 2;
   const auto measured = [&](double v) { return v <= 0.5 * step ? "under " + mm_text(step) : mm_text(v); };
-  if (r.wall.measured && r.wall.area_under >= r.nozzle_spot())
+  if (r.wall.measured && r.wall.under > 0 && !r.speck(r.wall))
     r.findings.push_back("walls thinner than " + mm_text(rules.min_wall) + " at " + places(r.wall.under) +
                          ", the thinnest " + measured(r.wall.value) + " at " + mm_point_text(r.wall.where));
-  if (r.gap.measured && r.gap.area_under >= r.nozzle_spot())
+  if (r.gap.measured && r.gap.under > 0 && !r.speck(r.gap))
     r.findings.push_back("gaps narrower than " + mm_text(rules.min_gap) + " (they fuse) at " + places(r.gap.under) +
                          ", the narrowest " + measured(r.gap.value) + " at " + mm_point_text(r.gap.where));
   if (static_cast<double>(r.triangles) > rules.max_triangles)
@@ -159,9 +193,8 @@ std::string PrintReport::summary() const {
   const double step = voxel / 2;
   const auto at_least = [&](const Spot& s, double cap) {
     // Under the threshold over less than the nozzle's spot: no finding, and said so.
-    const std::string speck = s.under > 0 && s.area_under < nozzle_spot()
-                                  ? " on a " + area_text(s.area_under) + " speck, smaller than the nozzle's spot"
-                                  : "";
+    const std::string speck =
+        this->speck(s) ? " on a " + area_text(s.area_under) + " speck, smaller than the nozzle's spot" : "";
     if (s.value <= 0.5 * step) return "under " + mm_text(step) + speck;
     return (s.value >= cap ? ">= " : "") + mm_text(std::min(s.value, cap)) + speck;
   };
@@ -183,6 +216,7 @@ PrintReport check_print(const Mesh& m, const PrintRules& rules, const PointBudge
   PrintReport r;
   r.rules = rules;
   r.triangles = m.faces();
+  r.area = surface_area(m);
   r.box = m.bbox();
   r.topology = mesh_topology(m, progress);
   if (r.topology.boundary_edges > 0)

@@ -7,8 +7,9 @@
 //     and outwards to the next part), within the grid's interpolation error (WallGrid::error);
 //   - the triangle count and the bounding box, against the triangle budget and the printer's bed;
 //   - a solid only a few millimetres across, which is most often one still in its curve's units.
-// Thin walls or narrow gaps over less area than the nozzle's spot (a disc of its width) are no finding: the
-// printer cannot draw anything that small (a mesher's dimple); the summary says them apart.
+// Thin walls or narrow gaps over less area than the nozzle's spot (a disc of its width), and under a tenth
+// of the surface, are no finding: the printer cannot draw anything that small (a mesher's dimple); the
+// summary says them apart.
 // Each problem is one finding: a line of text naming where it is. The walls and gaps are also point and
 // face fields (`wall`, `gap`, mm) so ParaView shows the thin spots.
 #pragma once
@@ -39,6 +40,7 @@ struct Spot {
 struct PrintReport {
   PrintRules rules;
   std::size_t triangles = 0;
+  double area = 0;  // mm², the whole surface's
   BBox3 box;
   MeshTopology topology;
   bool inward = false;  // closed, but facing inwards (negative volume)
@@ -52,6 +54,9 @@ struct PrintReport {
   bool passes() const { return findings.empty(); }
   // A disc of the nozzle's width: the least area a thin wall or narrow gap must cover to be a finding.
   double nozzle_spot() const { return 0.25 * 3.14159265358979 * rules.nozzle * rules.nozzle; }
+  // Under the threshold on a speck: less than the nozzle's spot, and under a tenth of the whole surface
+  // (a solid thin all over is no speck, however small).
+  bool speck(const Spot& s) const { return s.under > 0 && s.area_under < nozzle_spot() && s.area_under < 0.1 * area; }
   // One line: "print check: passes (closed, 120 x 80 x 40 mm, 212,340 triangles, walls >= 0.92 mm, gaps >=
   // 0.41 mm)" or "print check: 2 problems: ...; ...".
   std::string summary() const;

@@ -53,7 +53,10 @@ Mesh thicken_on_grid(const Mesh& m, const GridThickenOptions& opt, Progress& pro
   Mesh solid = vdb::openvdb_call([&] {
     const vdb::Grid::Ptr distance = vdb::mesh_grid(m, false, f, interrupt, band_of(opt));
     if (progress.cancelled()) throw Cancelled();
-    return vdb::iso_surface(*distance, f, opt.thickness / 2 / f.voxel, opt.adaptivity);
+    // A thousandth of a voxel inside half the thickness: a surface lying on the lattice (a sheet or a
+    // curve in a coordinate plane, at the default voxel a whole number of voxels from it) would put samples
+    // exactly on the iso value, where the mesher makes coincident points and folded triangles.
+    return vdb::iso_surface(*distance, f, opt.thickness / 2 / f.voxel - 1.0 / 1024, opt.adaptivity);
   });
   if (progress.cancelled()) throw Cancelled();
   const MeshTopology t = mesh_topology(solid, progress);

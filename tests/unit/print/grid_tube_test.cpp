@@ -63,4 +63,15 @@ TEST(GridTube, RefusesBadOptionsEmptyCurvesAndBigGrids) {
   GridTubeOptions small{.radius = 1};
   small.budget.limit = 1000;
   EXPECT_THROW(grid_tube(c, small, no_progress()), BudgetError);
+  // Many short segments far apart are as many balls (12 million points at radius 2, voxel 0.1): predicted
+  // from their count, not their length (a hundredth of a millimetre in all), and refused before any work.
+  Polyline3 dots;
+  for (int i = 0; i < 400; ++i) {
+    dots.points.push_back({5.0 * (i % 20), 5.0 * (i / 20), 0});
+    dots.points.push_back({5.0 * (i % 20) + 1e-4, 5.0 * (i / 20), 0});
+    dots.path_ends.push_back(dots.points.size());
+  }
+  GridTubeOptions balls{.radius = 2, .voxel = 0.1};
+  balls.budget.limit = 2e6;
+  EXPECT_THROW(grid_tube(dots, balls, no_progress()), BudgetError);
 }

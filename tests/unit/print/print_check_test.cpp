@@ -63,11 +63,13 @@ TEST(PrintCheck, TwoBlocksCloseTogetherHaveANarrowGap) {
   EXPECT_TRUE(mentions(r, "gaps narrower than 0.4 mm")) << r.summary();
   EXPECT_LE(r.gap.value, 0.2 + r.error);  // a gap of under two voxels reads as under half a voxel or more
   EXPECT_FALSE(mentions(r, "walls thinner"));
-  // A narrow gap over less area than the nozzle's spot is no finding (here a 20 mm nozzle, whose disc of
-  // 314 mm² covers more than the blocks' facing sides, 2 x 100 mm²), and the summary says why.
+  // A narrow gap over less area than the nozzle's spot, and under a tenth of the surface, is no finding
+  // (here a 20 mm nozzle, whose disc of 314 mm² covers more than the tall blocks' facing sides, 2 x 100 mm²
+  // of 4,400), and the summary says why.
   PrintRules wide;
   wide.nozzle = 20;
-  const PrintReport speck = check_print(two, wide, PointBudget{}, no_progress());
+  const Mesh tall = joined(box_mesh({0, 0, -45}, {10, 10, 5}), box_mesh({0, 0, 5.2}, {10, 10, 55}));
+  const PrintReport speck = check_print(tall, wide, PointBudget{}, no_progress());
   EXPECT_FALSE(mentions(speck, "gaps narrower")) << speck.summary();
   EXPECT_NE(speck.summary().find("mm² speck, smaller than the nozzle's spot"), std::string::npos) << speck.summary();
   // One side's facing triangles at least (a gap of 1.5 voxels may read from one side only), at most both.
@@ -129,4 +131,36 @@ TEST(PrintCheck, ProfilesAndRules) {
   sla.min_wall = 0.3;
   EXPECT_FALSE(
       mentions(check_print(box_mesh({0, 0, 0}, {10, 10, 0.4}), sla, PointBudget{}, no_progress()), "walls thinner"));
+}
+
+TEST(PrintCheck, ASolidThinAllOverIsNoSpeck) {
+  // A 1 mm square plate 0.1 mm thick: its thin walls cover less than a 20 mm nozzle's spot, but they are
+  // most of its surface.
+  PrintRules wide;
+  wide.nozzle = 20;
+  const PrintReport r = check_print(box_mesh({0, 0, 0}, {10, 10, 0.1}), wide, PointBudget{}, no_progress());
+  EXPECT_TRUE(mentions(r, "walls thinner than 0.8 mm")) << r.summary();
+}
+
+TEST(PrintCheck, ASealedCavityIsNoGap) {
+  // A 20 mm cube hollowed by a 10 mm cavity (its faces turned inwards): walls 5 mm, no gap anywhere. The
+  // distance grid reads the cavity as solid; its walls' gaps are not measured.
+  Mesh cavity = box_mesh({5, 5, 5}, {15, 15, 15});
+  for (Triangle& t : cavity.triangles) std::swap(t[1], t[2]);
+  const PrintReport r =
+      check_print(joined(box_mesh({0, 0, 0}, {20, 20, 20}), cavity), PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_TRUE(r.passes()) << r.summary();
+  // With 0.5 mm walls round the cavity the walls are found.
+  Mesh near = box_mesh({0.5, 0.5, 0.5}, {19.5, 19.5, 19.5});
+  for (Triangle& t : near.triangles) std::swap(t[1], t[2]);
+  const PrintReport thin =
+      check_print(joined(box_mesh({0, 0, 0}, {20, 20, 20}), near), PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_TRUE(mentions(thin, "walls thinner than 0.8 mm")) << thin.summary();
+  EXPECT_FALSE(mentions(thin, "gaps narrower")) << thin.summary();
+}
+
+TEST(PrintCheck, ASolidTooWideForAGridIsSaidNotMeasured) {
+  const PrintReport r = check_print(box_mesh({0, 0, 0}, {200000, 10, 10}), PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_TRUE(mentions(r, "walls and gaps not measured: the solid is")) << r.summary();
+  EXPECT_FALSE(r.wall.measured);
 }
