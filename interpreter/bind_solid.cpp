@@ -220,9 +220,9 @@ int solid_smooth(lua_State* L) {
     // Smoothing pulls a crumpled surface's folds towards each other: the same check develop makes.
     if (!meets)
       if (const auto p = first_intersection(smooth, RunContext::of(L)))
-        throw Error("the smoothed mesh meets itself near {" + number_text(p->where.x) + ", " + number_text(p->where.y) +
-                    ", " + number_text(p->where.z) + "} (its triangles " + std::to_string(p->first + 1) + " and " +
-                    std::to_string(p->second + 1) + "): fewer steps, or keep it with meets = true");
+        throw Error("the smoothed mesh meets itself near " + point_text(p->where) + " (its triangles " +
+                    std::to_string(p->first + 1) + " and " + std::to_string(p->second + 1) +
+                    "): fewer steps, or keep it with meets = true");
     push_geometry(L, std::move(smooth));
     warn_unless_printable_solid(L, "solid.smooth", test_geometry<Mesh>(L, -1), check);
     return 1;

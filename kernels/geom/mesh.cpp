@@ -47,8 +47,12 @@ double enclosed_volume(const Mesh& m) {
   const BBox3 b = m.bbox();
   const Vec3 o = 0.5 * (b.min + b.max);
   double v = 0;
-  for (const Triangle& t : m.triangles) v += dot(m.points[t[0]] - o, cross(m.points[t[1]] - o, m.points[t[2]] - o));
+  for (const Triangle& t : m.triangles) v += volume_term(m, t, o);
   return v / 6;
+}
+
+double volume_term(const Mesh& m, const Triangle& t, Vec3 o) {
+  return dot(m.points[t[0]] - o, cross(m.points[t[1]] - o, m.points[t[2]] - o));
 }
 
 }  // namespace selfsim

@@ -46,5 +46,7 @@ double surface_area(const Mesh& m);
 // its bounding box: from the origin, a shape far away (1e6) or small beside its distance (2e-6 at 1) sums
 // terms that cancel to rounding noise and can come out with the wrong sign.
 double enclosed_volume(const Mesh& m);
+// Six times the signed volume of the tetrahedron from o to triangle t: enclosed_volume's term, for a part's.
+double volume_term(const Mesh& m, const Triangle& t, Vec3 o);
 
 }  // namespace selfsim

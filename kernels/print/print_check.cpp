@@ -53,8 +53,7 @@ std::vector<char> cavity_faces(const Mesh& m, Progress& progress) {
   const Vec3 o = 0.5 * (b.min + b.max);
   for (std::size_t f = 0; f < m.faces(); ++f) {
     if (piece[f] >= volume.size()) volume.resize(piece[f] + 1, 0);
-    const Triangle& t = m.triangles[f];
-    volume[piece[f]] += dot(m.points[t[0]] - o, cross(m.points[t[1]] - o, m.points[t[2]] - o));
+    volume[piece[f]] += volume_term(m, m.triangles[f], o);
   }
   std::vector<char> cavity(m.faces());
   for (std::size_t f = 0; f < m.faces(); ++f) cavity[f] = volume[piece[f]] < 0;
@@ -101,10 +100,9 @@ void measure(const Mesh& m, const PointBudget& budget, Progress& progress, Print
   r.gap_cap = 1.5 * r.rules.min_gap;
   Volume v;
   v.kind = Volume::Kind::mesh;
-  Mesh shape;
-  shape.points = m.points;
-  shape.triangles = m.triangles;
-  v.mesh = std::make_shared<const Mesh>(std::move(shape));
+  // m itself, not a copy: the grid reads it while it is built and keeps nothing of it (an owner-less
+  // shared_ptr, which m outlives).
+  v.mesh = std::shared_ptr<const Mesh>(std::shared_ptr<const Mesh>{}, &m);
   v.bounds = m.bbox();
   // The rays need the distance only near the surfaces they cross, and its sign everywhere: the grid's
   // narrowest band (two voxels each side). Deeper in a wall (or a gap) they read the band's edge and leap by
