@@ -15,6 +15,7 @@
 #include "interpreter/growth.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
+#include "interpreter/param_spec.h"
 #include "interpreter/parse_text.h"
 #include "interpreter/print_options.h"
 #include "interpreter/run_context.h"
@@ -133,6 +134,7 @@ int save_volume(lua_State* L, const Volume& vol) {
 int save(lua_State* L) {
   return call_kernel(L, "save", [&] {
     RunContext& run = RunContext::of(L);
+    if (run.config.params_only) throw Cancelled();  // `selfsim params` writes nothing
     if (lua_type(L, 2) == LUA_TSTRING &&
         lower_case(std::filesystem::path(lua_tostring(L, 2)).extension().string()) == ".csv") {
       const io::CsvRows rows = csv_rows(L);
@@ -179,14 +181,22 @@ int save(lua_State* L) {
   });
 }
 
-// param(name, default): the --set value for name, read with the default's type, or the default.
+// param(name, default, { min, max, step, choices, doc }): the --set value for name, read with the default's
+// type and checked against its range or choices, or the default. The declaration is kept for `selfsim
+// params`, sweeps and the studio; one name declared twice must be declared alike.
 int param(lua_State* L) {
   return call_kernel(L, "param", [&] {
     RunContext& run = RunContext::of(L);
     const std::string name = text_value(L, 1, "argument 1 (the parameter name)");
-    const int type = lua_type(L, 2);
-    if (type != LUA_TNUMBER && type != LUA_TSTRING && type != LUA_TBOOLEAN)
-      throw Error("default of '" + name + "' must be a number, string or boolean, got " + describe(L, 2));
+    ParamSpec spec = read_param_spec(L, name, 2, 3);
+    spec.where = recipe_where(L);
+    const auto same =
+        std::find_if(run.params.begin(), run.params.end(), [&](const ParamSpec& p) { return p.name == name; });
+    if (same == run.params.end())
+      run.params.push_back(spec);
+    else if (!(*same == spec))
+      throw Error("'" + name + "' is declared again with another default or annotation (first at " +
+                  same->where.substr(0, same->where.size() - 2) + ")");
     run.used_params.insert(name);
     const auto it = run.config.sets.find(name);
     if (it == run.config.sets.end()) {
@@ -194,18 +204,15 @@ int param(lua_State* L) {
       return 1;
     }
     const std::string& text = it->second;
-    if (type == LUA_TSTRING) {
+    check_param_value(spec, text);
+    if (spec.type == ParamSpec::Type::string)
       lua_pushlstring(L, text.data(), text.size());
-    } else if (type == LUA_TBOOLEAN) {
-      if (text != "true" && text != "false") throw Error("--set " + name + "=" + text + ": expected true or false");
+    else if (spec.type == ParamSpec::Type::boolean)
       lua_pushboolean(L, text == "true");
-    } else if (const auto whole = parse_text<long long>(text)) {
+    else if (const auto whole = parse_text<long long>(text))
       lua_pushinteger(L, *whole);  // a number default takes any number: integers stay integers
-    } else {
-      const auto v = parse_text<double>(text);
-      if (!v) throw Error("--set " + name + "=" + text + ": expected a finite number");
-      lua_pushnumber(L, *v);
-    }
+    else
+      lua_pushnumber(L, *parse_text<double>(text));
     return 1;
   });
 }

@@ -323,7 +323,9 @@ int push_sorted_keys(lua_State* L, int table) {
 }
 
 std::string cancel_message(lua_State* L) {
-  const std::string reason = RunContext::of(L).stop_reason();
+  const RunContext& run = RunContext::of(L);
+  if (run.config.params_only) return params_stop;
+  const std::string reason = run.stop_reason();
   return reason.empty() ? "cancelled" : reason;
 }
 

@@ -53,6 +53,8 @@ bool run_has_ended(lua_State* L);
 
 // Message for a cancelled kernel: the timeout or the interrupt that caused it.
 std::string cancel_message(lua_State* L);
+// The message of a kernel stopped under `selfsim params`, which runs a recipe only up to its first heavy step.
+inline constexpr const char* params_stop = "stopped here: params lists those read before the first heavy step";
 
 // Ends the progress bar a kernel may have drawn (every call_kernel does, whatever happened).
 void end_progress(lua_State* L) noexcept;

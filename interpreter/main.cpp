@@ -27,6 +27,10 @@ usage:
       --no-view             do not write view.py, the ParaView view of the run's VTK outputs
                             (written whenever the run saved a .vtp, .vtu, .pvd or .vtp.series)
       -q, --quiet           print nothing but errors
+  selfsim params RECIPE.lua [--set KEY=VALUE]...
+                             the recipe's parameters as JSON: name, type, default, min, max, step,
+                             choices, doc. The recipe runs only up to its first heavy step (nothing
+                             is built or written); "complete" says whether it reached its end
   selfsim diff A B [--tol T] compare two geometry files (.vtp .vtu .svg .stl .3mf .obj .ply) point by point,
                              cell by cell and field by field; T is relative (default 1e-9).
                              Exit 0 same, 1 different, 2 error
@@ -60,7 +64,7 @@ int main(int argc, char** argv) {
   using namespace selfsim::interp;
   std::vector<std::string> args(argv + 1, argv + argc);
   try {
-    if (args.empty()) throw UsageError("expected a command: run, diff, info or preview");
+    if (args.empty()) throw UsageError("expected a command: run, params, diff, info or preview");
     const std::string command = args[0];
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     if (command == "--help" || command == "-h" || command == "help") {
@@ -78,6 +82,14 @@ int main(int argc, char** argv) {
           return 0;
         }
       return run_command(parse_run_arguments(rest));
+    }
+    if (command == "params") {
+      RunConfig config = parse_run_arguments(rest);
+      config.params_only = true;
+      config.quiet = true;
+      config.view = false;
+      if (config.timeout == 0) config.timeout = 30;  // a recipe whose Lua loops before its first kernel
+      return run_command(config);
     }
     if (command == "info") {
       // --print and --profile P may come before or after the file, in any order.
@@ -138,7 +150,7 @@ int main(int argc, char** argv) {
       line.insert(line.end(), rest.begin(), rest.end());
       throw UsageError("unknown command '" + command + "'; to run a recipe: " + shell_command(line));
     }
-    const std::string near = suggestion(command, {"run", "diff", "info", "preview", "--help", "--version"});
+    const std::string near = suggestion(command, {"run", "params", "diff", "info", "preview", "--help", "--version"});
     throw UsageError("unknown command '" + command + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
   } catch (const UsageError& e) {
     return usage_error(e.what());

@@ -1,5 +1,7 @@
 // `selfsim run RECIPE.lua`: runs a recipe in the sandbox and reports its outputs or its one-line error.
+#include <fcntl.h>
 #include <tbb/global_control.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <csignal>
@@ -14,6 +16,7 @@
 #include "interpreter/options_reader.h"
 #include "interpreter/sandbox.h"
 #include "interpreter/watchdog.h"
+#include "kernels/io/json_text.h"
 
 namespace selfsim::interp {
 
@@ -106,6 +109,41 @@ void write_view(const RunContext& run) {
   }
 }
 
+// Sends stdout to /dev/null while it lives: under `selfsim params` the recipe's print() and a kernel's
+// messages must not mix with the JSON.
+class QuietStdout {
+ public:
+  explicit QuietStdout(bool on) {
+    if (!on) return;
+    std::fflush(stdout);
+    saved_ = ::dup(1);
+    const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (saved_ >= 0 && null >= 0) ::dup2(null, 1);
+    if (null >= 0) ::close(null);
+  }
+  ~QuietStdout() {
+    if (saved_ < 0) return;
+    std::fflush(stdout);
+    ::dup2(saved_, 1);
+    ::close(saved_);
+  }
+  QuietStdout(const QuietStdout&) = delete;
+  QuietStdout& operator=(const QuietStdout&) = delete;
+
+ private:
+  int saved_ = -1;
+};
+
+// `selfsim params`: the parameters as JSON, and whether the recipe ran to its end or stopped at its first
+// heavy step (a param() after that step is not listed).
+int print_params(const RunContext& run, const std::string& stopped_at) {
+  std::printf("{\"recipe\": %s, \"complete\": %s,%s \"parameters\": %s}\n",
+              io::json_string(run.config.recipe.string()).c_str(), stopped_at.empty() ? "true" : "false",
+              stopped_at.empty() ? "" : (" \"stopped_at\": " + io::json_string(stopped_at) + ",").c_str(),
+              params_json(run.params).c_str());
+  return 0;
+}
+
 }  // namespace
 
 int run_command(const RunConfig& config) {
@@ -128,13 +166,20 @@ int run_command(const RunConfig& config) {
   }
   open_all(L);
   lua_pushcfunction(L, message_handler);
-  int status = luaL_loadfilex(L, config.recipe.c_str(), "t");
-  if (status == LUA_OK) status = lua_pcall(L, 0, 0, 1);
+  int status = LUA_OK;
+  {
+    const QuietStdout quiet(config.params_only);
+    status = luaL_loadfilex(L, config.recipe.c_str(), "t");
+    if (status == LUA_OK) status = lua_pcall(L, 0, 0, 1);
+  }
   run.ended = true;  // finalizers still to run (at lua_close) can no longer write
   run.finish_bar();
   int code = 0;
-  if (status != LUA_OK) {
-    std::fprintf(stderr, "%s\n", failure_message(L, run, status).c_str());
+  std::string message = status == LUA_OK ? std::string() : failure_message(L, run, status);
+  if (config.params_only && (status == LUA_OK || message.ends_with(params_stop))) {
+    code = print_params(run, message.substr(0, message.find(": ")));
+  } else if (status != LUA_OK) {
+    std::fprintf(stderr, "%s\n", message.c_str());
     std::fflush(stderr);
     run.reported = true;
     code = interrupted.load() ? 130 : 1;

@@ -63,7 +63,7 @@ std::string RunContext::stop_reason() const {
   return {};
 }
 
-bool RunContext::cancelled() { return !stop_reason().empty(); }
+bool RunContext::cancelled() { return config.params_only || !stop_reason().empty(); }
 
 RunContext& RunContext::of(lua_State* L) {
   lua_getfield(L, LUA_REGISTRYINDEX, registry_key);

@@ -14,6 +14,7 @@
 
 #include "interpreter/live_values.h"
 #include "interpreter/lua_memory.h"
+#include "interpreter/param_spec.h"
 #include "kernels/geom/budget.h"
 #include "kernels/geom/progress.h"
 #include "kernels/io/paraview_view.h"
@@ -33,6 +34,9 @@ struct RunConfig {
   int threads = 0;                          // worker threads for parallel kernels, 0 = all cores
   bool quiet = false;
   bool view = true;  // write view.py, a ParaView view of the run's VTK outputs
+  // `selfsim params`: the recipe runs only to collect its param() declarations. Kernels are cancelled at
+  // their first check and save() writes nothing, so the heavy part never runs.
+  bool params_only = false;
 };
 
 // Set by the SIGINT handler; checked by the Lua hook and by every kernel's Progress.
@@ -48,6 +52,7 @@ class RunContext : public Progress {
   const RunConfig config;
   std::filesystem::path scripts_dir;  // the DSL's own library (require "selfsim.curves")
   std::set<std::string> used_params;  // --set keys that param() read
+  std::vector<ParamSpec> params;      // the parameters declared, in order (param_spec.h)
   double held_points = 0;             // points held by live values (curves), against --max-points
   bool ended = false;                 // the recipe has returned or failed: nothing more may be written
   std::atomic<bool> reported{false};  // the run's error line is printed: the watchdog adds none

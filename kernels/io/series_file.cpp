@@ -9,6 +9,7 @@
 #include "kernels/geom/check.h"
 #include "kernels/geom/error.h"
 #include "kernels/geom/lower_case.h"
+#include "kernels/io/json_text.h"
 #include "kernels/io/output_file.h"
 #include "kernels/io/read_error.h"
 #include "kernels/io/utf8.h"
@@ -95,24 +96,6 @@ std::string pvd_text(const std::vector<std::string>& files, std::span<const Seri
     s += "    <DataSet timestep=\"" + time_text(steps[i].time) + "\" group=\"\" part=\"0\" file=\"" +
          xml_escaped(files[i]) + "\"/>\n";
   return s + "  </Collection>\n</VTKFile>\n";
-}
-
-// JSON string content: the step names are ours (stem, digits, extension), but the stem is the recipe's.
-std::string json_escaped(const std::string& text) {
-  std::string out;
-  for (unsigned char c : text) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += static_cast<char>(c);
-    } else if (c < 0x20) {
-      char buffer[8];
-      std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
-      out += buffer;
-    } else {
-      out += static_cast<char>(c);
-    }
-  }
-  return out;
 }
 
 std::string series_text(const std::vector<std::string>& files, std::span<const SeriesStep> steps) {

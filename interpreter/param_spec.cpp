@@ -1,0 +1,184 @@
+#include "interpreter/param_spec.h"
+
+#include <charconv>
+#include <cmath>
+
+#include "interpreter/options_reader.h"
+#include "interpreter/parse_text.h"
+#include "kernels/io/json_text.h"
+
+namespace selfsim::interp {
+
+const char* type_name(ParamSpec::Type type) {
+  switch (type) {
+    case ParamSpec::Type::integer:
+      return "integer";
+    case ParamSpec::Type::number:
+      return "number";
+    case ParamSpec::Type::string:
+      return "string";
+    case ParamSpec::Type::boolean:
+      return "boolean";
+  }
+  return "?";
+}
+
+std::string number_text(double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+namespace {
+
+bool is_number(ParamSpec::Type t) { return t == ParamSpec::Type::integer || t == ParamSpec::Type::number; }
+
+// "in [0.05, 1]", "at least 0.05", "at most 1".
+std::string range_text(const ParamSpec& s) {
+  if (s.min && s.max) return "in [" + number_text(*s.min) + ", " + number_text(*s.max) + "]";
+  if (s.min) return "at least " + number_text(*s.min);
+  return "at most " + number_text(*s.max);
+}
+
+std::string choices_text(const std::vector<std::string>& choices) {
+  std::string s;
+  for (const std::string& c : choices) s += (s.empty() ? "'" : ", '") + c + "'";
+  return s;
+}
+
+std::vector<std::string> read_choices(lua_State* L, Options& o, const std::string& name) {
+  std::vector<std::string> choices;
+  if (o.push("choices") != LUA_TTABLE) {
+    lua_pop(L, 1);
+    throw Error("choices of '" + name + "' must be a list of strings, got " + describe(L, -1));
+  }
+  const lua_Integer n = luaL_len(L, -1);
+  for (lua_Integer i = 1; i <= n; ++i) {
+    lua_rawgeti(L, -1, i);
+    if (lua_type(L, -1) != LUA_TSTRING)
+      throw Error("choices of '" + name + "': entry " + std::to_string(i) + " must be a string, got " +
+                  describe(L, -1));
+    std::string c = text_value(L, -1, "choice " + std::to_string(i) + " of '" + name + "'");
+    for (const std::string& earlier : choices)
+      if (earlier == c) throw Error("choices of '" + name + "' name '" + c + "' twice");
+    choices.push_back(std::move(c));
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  if (choices.empty()) throw Error("choices of '" + name + "' must list at least one string");
+  return choices;
+}
+
+}  // namespace
+
+ParamSpec read_param_spec(lua_State* L, const std::string& name, int def, int opts) {
+  ParamSpec s;
+  s.name = name;
+  switch (lua_type(L, def)) {
+    case LUA_TNUMBER:
+      if (lua_isinteger(L, def)) {
+        s.type = ParamSpec::Type::integer;
+        s.default_text = std::to_string(lua_tointeger(L, def));
+      } else {
+        s.type = ParamSpec::Type::number;
+        s.default_text = number_text(finite_number(L, def, "the default of '" + name + "'"));
+      }
+      break;
+    case LUA_TSTRING:
+      s.type = ParamSpec::Type::string;
+      s.default_text = text_value(L, def, "the default of '" + name + "'");
+      break;
+    case LUA_TBOOLEAN:
+      s.type = ParamSpec::Type::boolean;
+      s.default_text = lua_toboolean(L, def) ? "true" : "false";
+      break;
+    default:
+      throw Error("default of '" + name + "' must be a number, string or boolean, got " + describe(L, def));
+  }
+  if (lua_isnoneornil(L, opts)) return s;
+  if (!lua_istable(L, opts))
+    throw Error("argument 3 of param('" + name + "', ...) must be a table of min, max, step, choices, doc, got " +
+                describe(L, opts));
+  Options o(L, opts);
+  const char* kind = is_number(s.type) ? "a number" : s.type == ParamSpec::Type::string ? "a string" : "a boolean";
+  const std::pair<const char*, std::optional<double>*> numbers[] = {
+      {"min", &s.min}, {"max", &s.max}, {"step", &s.step}};
+  for (const auto& [key, field] : numbers)
+    if (o.has(key)) {
+      if (!is_number(s.type))
+        throw Error(std::string(key) + " is for number parameters; '" + name + "' defaults to " + kind +
+                    (s.type == ParamSpec::Type::string ? " (list its values as choices = { ... })" : ""));
+      *field = o.number(key, 0);
+    }
+  if (o.has("choices")) {
+    if (s.type != ParamSpec::Type::string)
+      throw Error("choices is for string parameters; '" + name + "' defaults to " + kind +
+                  (is_number(s.type) ? " (give its range as min and max)" : ""));
+    s.choices = read_choices(L, o, name);
+  }
+  if (o.has("doc")) {
+    if (o.push("doc") != LUA_TSTRING) throw Error("doc of '" + name + "' must be a string, got " + describe(L, -1));
+    s.doc = text_value(L, -1, "doc of '" + name + "'");
+    lua_pop(L, 1);
+  }
+  o.finish();
+  if (s.min && s.max && *s.min > *s.max)
+    throw Error("'" + name + "': min " + number_text(*s.min) + " is above max " + number_text(*s.max));
+  if (s.step && !(*s.step > 0)) throw Error("'" + name + "': step must be > 0, got " + number_text(*s.step));
+  if (is_number(s.type) && (s.min || s.max)) {
+    const double v = *parse_text<double>(s.default_text);
+    if ((s.min && v < *s.min) || (s.max && v > *s.max))
+      throw Error("'" + name + "': the default " + s.default_text + " is outside its range: it must be " +
+                  range_text(s));
+  }
+  if (!s.choices.empty()) {
+    bool found = false;
+    for (const std::string& c : s.choices) found = found || c == s.default_text;
+    if (!found)
+      throw Error("'" + name + "': the default '" + s.default_text + "' is not one of its choices " +
+                  choices_text(s.choices));
+  }
+  return s;
+}
+
+void check_param_value(const ParamSpec& s, const std::string& text) {
+  const std::string set = "--set " + s.name + "=" + text + ": ";
+  if (s.type == ParamSpec::Type::boolean) {
+    if (text != "true" && text != "false") throw Error(set + "expected true or false");
+  } else if (is_number(s.type)) {
+    const auto v = parse_text<double>(text);
+    if (!v) throw Error(set + "expected a finite number");
+    if ((s.min && *v < *s.min) || (s.max && *v > *s.max))
+      throw Error(set + "'" + s.name + "' must be " + range_text(s));
+  } else if (!s.choices.empty()) {
+    for (const std::string& c : s.choices)
+      if (c == text) return;
+    const std::string near = suggestion(text, s.choices);
+    throw Error(set + "expected one of " + choices_text(s.choices) +
+                (near.empty() ? std::string() : " (did you mean '" + near + "'?)"));
+  }
+}
+
+std::string params_json(const std::vector<ParamSpec>& specs) {
+  using io::json_string;
+  std::string s = "[";
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    const ParamSpec& p = specs[i];
+    s += i == 0 ? "\n" : ",\n";
+    s += "  {\"name\": " + json_string(p.name) + ", \"type\": \"" + type_name(p.type) + "\", \"default\": ";
+    s += p.type == ParamSpec::Type::string ? json_string(p.default_text) : p.default_text;
+    if (p.min) s += ", \"min\": " + number_text(*p.min);
+    if (p.max) s += ", \"max\": " + number_text(*p.max);
+    if (p.step) s += ", \"step\": " + number_text(*p.step);
+    if (!p.choices.empty()) {
+      s += ", \"choices\": [";
+      for (std::size_t c = 0; c < p.choices.size(); ++c) s += (c ? ", " : "") + json_string(p.choices[c]);
+      s += "]";
+    }
+    if (!p.doc.empty()) s += ", \"doc\": " + json_string(p.doc);
+    s += "}";
+  }
+  return s + (specs.empty() ? "]" : "\n]");
+}
+
+}  // namespace selfsim::interp

@@ -1,0 +1,45 @@
+// A recipe's parameter as param(name, default, { min, max, step, choices, doc }) declares it: what
+// `--set` may give it, what `selfsim params` lists, the range a sweep is checked against and the control
+// the studio draws.
+#pragma once
+
+#include <lua.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace selfsim::interp {
+
+struct ParamSpec {
+  enum class Type { integer, number, string, boolean };
+  std::string name;
+  Type type = Type::number;
+  std::string default_text;  // the default as --set would give it: "11", "0.8", "clamp", "true"
+  std::optional<double> min, max, step;
+  std::vector<std::string> choices;
+  std::string doc;
+  std::string where;  // "recipe.lua:3: ", the line that declared it first
+
+  bool operator==(const ParamSpec& o) const {
+    return name == o.name && type == o.type && default_text == o.default_text && min == o.min && max == o.max &&
+           step == o.step && choices == o.choices && doc == o.doc;
+  }
+};
+
+const char* type_name(ParamSpec::Type type);
+
+// The parameter declared by the call param(name, default, options) whose default is at `def` and options
+// (nil or a table) at `opts`. Throws Error for an annotation that does not fit the default: min or max on a
+// string, min above max, a default outside its range or not among its choices, a step that is not > 0.
+ParamSpec read_param_spec(lua_State* L, const std::string& name, int def, int opts);
+
+// Checks `text` (a --set value) against the parameter; throws Error naming its range or choices.
+void check_param_value(const ParamSpec& spec, const std::string& text);
+
+// The parameters as `selfsim params` prints them: a JSON array of objects, one per line.
+std::string params_json(const std::vector<ParamSpec>& specs);
+
+// A number as the shortest text that reads back to the same double ("0.3", "11", "1e-07").
+std::string number_text(double v);
+
+}  // namespace selfsim::interp

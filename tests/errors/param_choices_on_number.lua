@@ -1,0 +1,1 @@
+local level = param("level", 4, { choices = { "4", "5" } })

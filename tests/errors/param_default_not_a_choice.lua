@@ -1,0 +1,1 @@
+local mode = param("mode", "clamp", { choices = { "repeat", "rotate" } })

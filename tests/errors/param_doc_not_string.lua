@@ -1,0 +1,1 @@
+local doc = param("level", 3, { doc = 3 })

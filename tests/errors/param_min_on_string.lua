@@ -1,0 +1,1 @@
+local mode = param("mode", "clamp", { min = 1 })

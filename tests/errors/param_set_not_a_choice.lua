@@ -1,0 +1,2 @@
+-- args: --set mode=rotat
+local mode = param("mode", "clamp", { choices = { "clamp", "repeat", "rotate" } })

@@ -1,0 +1,1 @@
+local factor = param("factor", 0.5, { step = 0 })
