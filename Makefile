@@ -4,7 +4,7 @@ SANITIZE_BUILD ?= build-sanitize
 JOBS       ?= $(shell nproc)
 PACKAGES   := cmake g++ make libopenvdb-dev libboost-iostreams-dev liblua5.4-dev libopenmesh-dev libvtk9-dev \
               libtbb-dev lib3mf-dev libgtest-dev libgmock-dev libbenchmark-dev python3-vtk9 xvfb xauth libgl1-mesa-dri \
-              libglx-mesa0 librsvg2-bin clang-format ghostscript python3-openvdb paraview
+              libglx-mesa0 librsvg2-bin clang-format ghostscript python3-openvdb paraview parallel
 # ParaView's Python modules, unpacked from Debian's python3-paraview (never installed: it conflicts with
 # python3-vtk9, which libvtk9-dev needs) for scripts/pvbatch-selfsim. README: "ParaView and selfsim on one machine".
 PARAVIEW_PYTHON ?= /opt/selfsim/paraview-python

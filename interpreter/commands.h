@@ -2,6 +2,7 @@
 // files that differ), 2 usage error.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -24,7 +25,8 @@ int print_info_command(const std::string& file, const std::string& profile);
 // `selfsim preview FILE... [-o DIR] [-q]`.
 struct PreviewConfig {
   std::vector<std::string> files;
-  std::string out_dir;  // empty: each PNG beside its input
+  std::string out_dir;                      // empty: each PNG beside its input
+  std::vector<std::filesystem::path> pngs;  // when given, the PNG of each file, in order (a sweep's previews)
   bool quiet = false;
 };
 // Throws UsageError.

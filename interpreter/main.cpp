@@ -6,6 +6,7 @@
 
 #include "interpreter/commands.h"
 #include "interpreter/options_reader.h"
+#include "interpreter/sweep.h"
 
 namespace {
 
@@ -24,9 +25,20 @@ usage:
       -h, --help            this text
       --threads N           threads for parallel kernels (default: all cores); the files are
                             byte-identical for any N
+      --jobs N              a sweep's runs at a time (default: one per core)
       --no-view             do not write view.py, the ParaView view of the run's VTK outputs
                             (written whenever the run saved a .vtp, .vtu, .pvd or .vtp.series)
       -q, --quiet           print nothing but errors
+  A sweep: a --set with several values runs the recipe once per value, and several such --set once per
+  combination, each into its own folder of the output folder named by its values (out/level=4,mode=clamp),
+  with a contact sheet of each result (sheet_NAME.svg) and a ParaView series of each VTK file:
+      --set level=4..10     whole numbers 4 to 10        --set factor=0.3..0.9:0.1   a range with a step
+      --set mode=clamp,rotate  a list ("\," for a comma inside a value)
+  selfsim sweep RECIPE.lua --set ... [run options] [--jobs-file F] [--slurm F] [--collect] [--no-sheet]
+                             as run with a sweep; --jobs-file writes the runs as a job list for GNU
+                             parallel (into the output folder) instead of running them, --slurm a Slurm
+                             job-array script and its collect job; --collect builds the sheets and
+                             series once they have run; --no-sheet skips the sheets and previews
   selfsim params RECIPE.lua [--set KEY=VALUE]...
                              the recipe's parameters as JSON: name, type, default, min, max, step,
                              choices, doc. The recipe runs only up to its first heavy step (nothing
@@ -64,7 +76,7 @@ int main(int argc, char** argv) {
   using namespace selfsim::interp;
   std::vector<std::string> args(argv + 1, argv + argc);
   try {
-    if (args.empty()) throw UsageError("expected a command: run, params, diff, info or preview");
+    if (args.empty()) throw UsageError("expected a command: run, sweep, params, diff, info or preview");
     const std::string command = args[0];
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     if (command == "--help" || command == "-h" || command == "help") {
@@ -82,6 +94,14 @@ int main(int argc, char** argv) {
           return 0;
         }
       return run_command(parse_run_arguments(rest));
+    }
+    if (command == "sweep") {
+      for (const std::string& a : rest)
+        if (a == "--help" || a == "-h") {
+          std::fputs(help, stdout);
+          return 0;
+        }
+      return sweep_command(parse_sweep_arguments(rest));
     }
     if (command == "params") {
       RunConfig config = parse_run_arguments(rest);
@@ -150,7 +170,8 @@ int main(int argc, char** argv) {
       line.insert(line.end(), rest.begin(), rest.end());
       throw UsageError("unknown command '" + command + "'; to run a recipe: " + shell_command(line));
     }
-    const std::string near = suggestion(command, {"run", "params", "diff", "info", "preview", "--help", "--version"});
+    const std::string near =
+        suggestion(command, {"run", "sweep", "params", "diff", "info", "preview", "--help", "--version"});
     throw UsageError("unknown command '" + command + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
   } catch (const UsageError& e) {
     return usage_error(e.what());

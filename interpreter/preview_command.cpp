@@ -93,9 +93,11 @@ int preview_command(const PreviewConfig& config) {
       }
       if (!display) display = std::make_unique<DisplayServer>();
       // NAME.png beside the input or in DIR; a second input of the same name in this run gets NAME_EXT.png.
-      const std::filesystem::path folder =
-          config.out_dir.empty() ? file.parent_path() : std::filesystem::path(config.out_dir);
-      std::string leaf = stem + ".png";
+      const std::size_t at = static_cast<std::size_t>(&name - config.files.data());
+      const std::filesystem::path folder = at < config.pngs.size()  ? config.pngs[at].parent_path()
+                                           : config.out_dir.empty() ? file.parent_path()
+                                                                    : std::filesystem::path(config.out_dir);
+      std::string leaf = at < config.pngs.size() ? config.pngs[at].filename().string() : stem + ".png";
       const std::string key = (folder / leaf).lexically_normal().string();
       // A later input of the same name in this run gets NAME_EXT.png, then NAME_EXT_2.png, ...
       if (!written.insert(key).second) {

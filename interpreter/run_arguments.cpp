@@ -9,6 +9,7 @@
 #include "interpreter/commands.h"
 #include "interpreter/options_reader.h"
 #include "interpreter/parse_text.h"
+#include "interpreter/sweep.h"
 #include "kernels/geom/count_text.h"
 
 namespace selfsim::interp {
@@ -56,9 +57,9 @@ double size_argument(const std::string& flag, const std::string& text) {
 }  // namespace
 
 const std::vector<std::string>& run_flags() {
-  static const std::vector<std::string> flags{"-o",           "--output",  "--set",   "--max-points",
-                                              "--max-memory", "--timeout", "--seed",  "--threads",
-                                              "--no-view",    "-q",        "--quiet", "--help"};
+  static const std::vector<std::string> flags{"-o",        "--output", "--set",     "--max-points", "--max-memory",
+                                              "--timeout", "--seed",   "--threads", "--jobs",       "--no-view",
+                                              "-q",        "--quiet",  "--help"};
   return flags;
 }
 
@@ -92,6 +93,11 @@ RunConfig parse_run_arguments(const std::vector<std::string>& args) {
       if (!n || *n < 1 || *n > 1024)
         throw UsageError("--threads expects a whole number in [1, 1024], got '" + text + "'");
       c.threads = static_cast<int>(*n);
+    } else if (a == "--jobs") {
+      const std::string& text = value();
+      const auto n = parse_text<long long>(text);
+      if (!n || *n < 1 || *n > 1024) throw UsageError("--jobs expects a whole number in [1, 1024], got '" + text + "'");
+      c.jobs = static_cast<int>(*n);
     } else if (a == "--seed") {
       const std::string& text = value();
       const auto seed = parse_text<long long>(text);
@@ -129,6 +135,34 @@ RunConfig parse_run_arguments(const std::vector<std::string>& args) {
   if (std::filesystem::exists(c.out_dir, ec) && !std::filesystem::is_directory(c.out_dir, ec))
     throw UsageError("-o '" + c.out_dir.string() + "' is a file, not a folder");
   return c;
+}
+
+SweepConfig parse_sweep_arguments(const std::vector<std::string>& args) {
+  SweepConfig s;
+  std::vector<std::string> rest;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--jobs-file" || a == "--slurm") {
+      if (i + 1 >= args.size() || args[i + 1].empty()) throw UsageError(a + " expects a file name");
+      (a == "--slurm" ? s.slurm : s.jobs_file) = args[++i];
+    } else if (a == "--collect") {
+      s.collect_only = true;
+    } else if (a == "--no-sheet") {
+      s.sheet = false;
+    } else {
+      rest.push_back(a);
+    }
+  }
+  s.run = parse_run_arguments(rest);
+  if (!is_sweep(s.run.sets))
+    throw UsageError("sweep expects a --set with several values: key=4..10, key=0.3..0.9:0.1 or key=a,b");
+  if (s.collect_only && (!s.jobs_file.empty() || !s.slurm.empty()))
+    throw UsageError("--collect builds the sheets of a sweep already run; it takes no --jobs-file or --slurm");
+  for (const std::string* name : {&s.jobs_file, &s.slurm})
+    if (name->find('/') != std::string::npos)
+      throw UsageError("the job list and Slurm script go into the output folder: give a file name, got '" + *name +
+                       "'");
+  return s;
 }
 
 }  // namespace selfsim::interp

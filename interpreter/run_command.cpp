@@ -15,6 +15,7 @@
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
 #include "interpreter/sandbox.h"
+#include "interpreter/sweep.h"
 #include "interpreter/watchdog.h"
 #include "kernels/io/json_text.h"
 
@@ -146,7 +147,61 @@ int print_params(const RunContext& run, const std::string& stopped_at) {
 
 }  // namespace
 
+void check_sweep_params(const RunConfig& sweep, const SweepPlan& plan) {
+  RunConfig config = sweep;
+  config.sets = plan.runs.front().sets;
+  config.params_only = true;
+  config.quiet = true;
+  config.view = false;
+  if (config.timeout == 0) config.timeout = 30;
+  RunContext run(config);
+  run.scripts_dir = find_scripts_dir();
+  lua_State* L = new_sandbox(run);
+  if (L == nullptr) throw Error("cannot create a Lua state (out of memory)");
+  open_all(L);
+  lua_pushcfunction(L, message_handler);
+  int status = LUA_OK;
+  {
+    const QuietStdout quiet(true);
+    status = luaL_loadfilex(L, config.recipe.c_str(), "t");
+    if (status == LUA_OK) status = lua_pcall(L, 0, 0, 1);
+  }
+  run.ended = true;
+  const std::string message = status == LUA_OK ? std::string() : failure_message(L, run, status);
+  const bool timed_out = !run.stop_reason().empty();
+  lua_close(L);
+  const bool complete = status == LUA_OK;
+  if (timed_out && sweep.timeout == 0)
+    throw Error(message.substr(0, message.find(": ") + 2) +
+                "reading the recipe's parameters took over 30 s (a long Lua loop before its first heavy step?); "
+                "declare the parameters first");
+  if (!complete && !message.ends_with(params_stop)) throw Error(message);
+  std::vector<std::string> names;
+  for (const ParamSpec& p : run.params) names.push_back(p.name);
+  for (const auto& [key, text] : sweep.sets) {
+    const auto spec =
+        std::find_if(run.params.begin(), run.params.end(), [&](const ParamSpec& p) { return p.name == key; });
+    if (spec == run.params.end()) {
+      const std::string near = suggestion(key, names);
+      if (!complete) {  // perhaps declared after the first heavy step: each run checks it
+        std::fprintf(stderr, "selfsim: warning: --set %s: no param '%s' is read before %s%s\n", shown_text(key).c_str(),
+                     shown_text(key).c_str(), message.substr(0, message.find(": ")).c_str(),
+                     near.empty() ? "" : (" (did you mean '" + near + "'?)").c_str());
+        continue;
+      }
+      throw Error("--set " + key + "=" + text + ": the recipe declares no parameter '" + key + "'" +
+                  (near.empty() ? "" : " (did you mean '" + near + "'?)"));
+    }
+    for (const std::string& value : sweep_values(key, text)) check_param_value(*spec, value);
+  }
+}
+
 int run_command(const RunConfig& config) {
+  if (is_sweep(config.sets)) {
+    SweepConfig sweep;
+    sweep.run = config;
+    return sweep_command(sweep);
+  }
   std::error_code ec;
   if (!std::filesystem::is_regular_file(config.recipe, ec))
     throw UsageError("cannot open recipe '" + config.recipe.string() + "'" +

@@ -32,6 +32,7 @@ struct RunConfig {
   double timeout = 0;                       // seconds, 0 = none
   long long seed = 0;                       // math.random seed, in [0, 2^63)
   int threads = 0;                          // worker threads for parallel kernels, 0 = all cores
+  int jobs = 0;                             // a sweep's runs at a time, 0 = one per core
   bool quiet = false;
   bool view = true;  // write view.py, a ParaView view of the run's VTK outputs
   // `selfsim params`: the recipe runs only to collect its param() declarations. Kernels are cancelled at

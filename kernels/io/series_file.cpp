@@ -88,15 +88,19 @@ std::string time_text(double t) {
   return buffer;
 }
 
-std::string pvd_text(const std::vector<std::string>& files, std::span<const SeriesStep> steps) {
+}  // namespace
+
+std::string pvd_text(const std::vector<std::string>& files, std::span<const double> times) {
   std::string s =
       "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
       "  <Collection>\n";
   for (std::size_t i = 0; i < files.size(); ++i)
-    s += "    <DataSet timestep=\"" + time_text(steps[i].time) + "\" group=\"\" part=\"0\" file=\"" +
-         xml_escaped(files[i]) + "\"/>\n";
+    s += "    <DataSet timestep=\"" + time_text(times[i]) + "\" group=\"\" part=\"0\" file=\"" + xml_escaped(files[i]) +
+         "\"/>\n";
   return s + "  </Collection>\n</VTKFile>\n";
 }
+
+namespace {
 
 std::string series_text(const std::vector<std::string>& files, std::span<const SeriesStep> steps) {
   std::string s = "{\n  \"file-series-version\" : \"1.0\",\n  \"files\" : [\n";
@@ -249,7 +253,9 @@ SeriesFiles save_series(std::span<const SeriesStep> steps, const std::filesystem
   }
   for (const std::string& leaf : leaves) rename_file(root, folder, hidden(leaf), leaf);
   OutputFile out(root, name);
-  out.write(n.json ? series_text(in_series, steps) : pvd_text(in_series, steps));
+  std::vector<double> times;
+  for (const SeriesStep& step : steps) times.push_back(step.time);
+  out.write(n.json ? series_text(in_series, steps) : pvd_text(in_series, times));
   out.commit();
   written.series = out.path();
   const std::set<std::string> kept(leaves.begin(), leaves.end());

@@ -38,6 +38,9 @@ struct SeriesFiles {
 // The step file names a series file `name` uses for `count` steps, relative to root, and their extension.
 std::vector<std::string> series_step_names(const std::string& name, std::size_t count);
 
+// The text of a .pvd (ParaView's XML Collection) naming `files` (relative to it) at `times`.
+std::string pvd_text(const std::vector<std::string>& files, std::span<const double> times);
+
 // Writes the series. Throws Error for a bad name (".series" without a dataset extension before it, or one
 // that is not .vtp/.vtu), no steps, times that are not finite and increasing, or anything save() refuses for
 // a step (naming the step).

@@ -1,0 +1,183 @@
+// `selfsim run RECIPE --set level=4..10 [--jobs N]` and `selfsim sweep`: one `selfsim run` per combination
+// of the --set values (sweep_plan.h), each a child process writing into its own folder, N at a time; then
+// the contact sheets and ParaView series (sweep_collect.cpp). Child processes rather than threads: a run
+// that fails, runs out of memory or is killed takes nothing else down, and a run here is byte for byte the
+// run a job list sends to GNU parallel or Slurm.
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <thread>
+
+#include "interpreter/commands.h"
+#include "interpreter/lua_support.h"
+#include "interpreter/options_reader.h"
+#include "interpreter/sweep.h"
+#include "kernels/io/json_text.h"
+#include "kernels/io/output_file.h"
+
+extern char** environ;
+
+namespace selfsim::interp {
+
+namespace {
+
+extern "C" void on_sweep_signal(int) { interrupted.store(true); }
+
+std::string self_path() {
+  std::error_code ec;
+  const std::filesystem::path p = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) throw Error("cannot find the selfsim executable (/proc/self/exe): " + ec.message());
+  return p.string();
+}
+
+// The first line of a failed run's log: its error.
+std::string first_line(const std::filesystem::path& log) {
+  std::ifstream in(log);
+  std::string line;
+  std::getline(in, line);
+  return shown_text(line, 300);
+}
+
+void write_text(const std::filesystem::path& root, const std::string& name, const std::string& text) {
+  io::OutputFile f(root, name);
+  f.write(text);
+  f.commit();
+}
+
+// sweep.json: what the sweep ran, for people and tools; the sweep itself never reads it back.
+std::string manifest(const SweepConfig& c, const SweepPlan& plan) {
+  std::string s =
+      "{\n  \"recipe\": " + io::json_string(std::filesystem::absolute(c.run.recipe).string()) + ",\n  \"keys\": [";
+  for (std::size_t k = 0; k < plan.keys.size(); ++k) s += (k ? ", " : "") + io::json_string(plan.keys[k]);
+  s += "],\n  \"runs\": [\n";
+  for (std::size_t i = 0; i < plan.runs.size(); ++i) {
+    s += "    {\"folder\": " + io::json_string(plan.runs[i].folder) + ", \"set\": {";
+    bool first = true;
+    for (const auto& [key, value] : plan.runs[i].sets) {
+      s += (first ? "" : ", ") + io::json_string(key) + ": " + io::json_string(value);
+      first = false;
+    }
+    s += std::string("}}") + (i + 1 < plan.runs.size() ? ",\n" : "\n");
+  }
+  return s + "  ]\n}\n";
+}
+
+struct Child {
+  std::size_t index;
+  std::chrono::steady_clock::time_point started;
+};
+
+// Starts one run with its stdout and stderr in FOLDER/selfsim.log; returns its pid.
+pid_t spawn_run(const std::string& exe, const std::vector<std::string>& args, const std::filesystem::path& log) {
+  const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0644);
+  if (fd < 0) throw Error("cannot write '" + log.string() + "'");
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, fd, 1);
+  posix_spawn_file_actions_adddup2(&actions, fd, 2);
+  std::vector<char*> argv;
+  std::string name = "selfsim";
+  argv.push_back(name.data());
+  std::vector<std::string> copy = args;
+  for (std::string& a : copy) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  const int e = posix_spawn(&pid, exe.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  ::close(fd);
+  if (e != 0) throw Error("cannot start '" + exe + "': " + std::strerror(e));
+  return pid;
+}
+
+int exit_code(int status) {
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  return 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+}
+
+// Runs every run of the plan, `jobs` at a time. Returns each run's exit code (-1: not run).
+std::vector<int> run_all(const SweepConfig& c, const SweepPlan& plan, int jobs) {
+  const std::filesystem::path& out = c.run.out_dir;
+  const std::string exe = self_path();
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int threads = c.run.threads > 0 ? c.run.threads : std::max(1, cores / jobs);
+  struct sigaction sa {};
+  sa.sa_handler = on_sweep_signal;  // no SA_RESTART: waitpid returns at Ctrl-C
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaction(sig, &sa, nullptr);
+
+  std::vector<int> codes(plan.runs.size(), -1);
+  std::map<pid_t, Child> live;
+  std::size_t next = 0, done = 0;
+  const std::size_t n = plan.runs.size();
+  while (done < n && !(interrupted.load() && live.empty())) {
+    while (!interrupted.load() && live.size() < static_cast<std::size_t>(jobs) && next < n) {
+      const SweepRun& run = plan.runs[next];
+      std::filesystem::create_directories(out / run.folder);
+      const pid_t pid =
+          spawn_run(exe, run_arguments(c.run, run, out / run.folder, threads), out / run.folder / "selfsim.log");
+      live[pid] = {next++, std::chrono::steady_clock::now()};
+    }
+    if (live.empty()) break;
+    int status = 0;
+    const pid_t pid = ::waitpid(-1, &status, 0);
+    if (pid < 0) {
+      if (errno == EINTR && interrupted.load())
+        for (const auto& [p, child] : live) ::kill(p, SIGINT);  // each stops cleanly, leaving no partial file
+      continue;
+    }
+    const auto it = live.find(pid);
+    if (it == live.end()) continue;
+    const Child child = it->second;
+    live.erase(it);
+    const SweepRun& run = plan.runs[child.index];
+    const int code = exit_code(status);
+    codes[child.index] = code;
+    ++done;
+    write_text(out / run.folder, "selfsim.exit", std::to_string(code) + "\n");
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - child.started).count();
+    if (code == 0) {
+      if (!c.run.quiet) std::printf("[%zu/%zu] %s: ok (%.2f s)\n", done, n, shown_text(run.caption).c_str(), seconds);
+    } else if (!interrupted.load()) {
+      std::fprintf(stderr, "[%zu/%zu] %s: failed (exit %d): %s\n", done, n, shown_text(run.caption).c_str(), code,
+                   first_line(out / run.folder / "selfsim.log").c_str());
+    }
+    std::fflush(stdout);
+  }
+  return codes;
+}
+
+}  // namespace
+
+int sweep_command(const SweepConfig& c) {
+  const SweepPlan plan = plan_sweep(c.run.sets);
+  check_sweep_params(c.run, plan);
+  const std::filesystem::path& out = c.run.out_dir;
+  std::filesystem::create_directories(out);
+  write_text(out, "sweep.json", manifest(c, plan));
+  if (!c.jobs_file.empty() || !c.slurm.empty()) return write_job_lists(c, plan, self_path());
+  if (c.collect_only) return collect_sweep(c, plan, read_exit_codes(out, plan));
+
+  const int jobs = c.run.jobs > 0 ? c.run.jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  if (!c.run.quiet)
+    std::printf("sweep: %zu runs of %s, %d at a time, into %s\n", plan.runs.size(),
+                shown_text(c.run.recipe.string()).c_str(), jobs, shown_text(out.string()).c_str());
+  std::fflush(stdout);
+  const std::vector<int> codes = run_all(c, plan, jobs);
+  if (interrupted.load()) {
+    std::size_t done = 0;
+    for (int code : codes) done += code == 0;
+    std::fprintf(stderr, "selfsim: sweep interrupted: %zu of %zu runs finished\n", done, plan.runs.size());
+    return 130;
+  }
+  return collect_sweep(c, plan, codes);
+}
+
+}  // namespace selfsim::interp

@@ -1,0 +1,109 @@
+// A sweep that outgrows one machine goes to an engine made for it: a job list for GNU parallel (one shell
+// line per run, `parallel < jobs.txt`, `--sshloginfile` for many machines) and a Slurm job array (one array
+// task per run, each running its line of the job list, and a collect job after them). Every path in them
+// is absolute, so they run from any folder of a cluster that shares the output folder and the recipe.
+#include <cstdio>
+
+#include "interpreter/commands.h"
+#include "interpreter/lua_support.h"
+#include "interpreter/param_spec.h"
+#include "interpreter/sweep.h"
+#include "kernels/io/output_file.h"
+
+namespace selfsim::interp {
+
+namespace {
+
+std::string words(const std::vector<std::string>& args) {
+  std::string line;
+  for (const std::string& a : args) line += (line.empty() ? "" : " ") + shell_word(a);
+  return line;
+}
+
+// The command that builds the sheets and series once every run is done.
+std::vector<std::string> collect_arguments(const SweepConfig& c, const std::string& exe,
+                                           const std::filesystem::path& out, const std::filesystem::path& recipe) {
+  std::vector<std::string> a{exe, "sweep", recipe.string(), "-o", out.string()};
+  for (const auto& [key, text] : c.run.sets) a.insert(a.end(), {"--set", key + "=" + text});
+  a.push_back("--collect");
+  if (!c.sheet) a.push_back("--no-sheet");
+  return a;
+}
+
+void write_file(const std::filesystem::path& out, const std::string& name, const std::string& text) {
+  io::OutputFile f(out, name);
+  f.write(text);
+  f.commit();
+}
+
+}  // namespace
+
+std::vector<std::string> run_arguments(const RunConfig& r, const SweepRun& run, const std::filesystem::path& dir,
+                                       int threads) {
+  std::vector<std::string> a{"run", r.recipe.string(), "-o", dir.string()};
+  for (const auto& [key, value] : run.sets) a.insert(a.end(), {"--set", key + "=" + value});
+  if (r.max_points != default_max_points) a.insert(a.end(), {"--max-points", number_text(r.max_points)});
+  if (r.max_memory > 0) a.insert(a.end(), {"--max-memory", number_text(r.max_memory)});
+  if (r.timeout > 0) a.insert(a.end(), {"--timeout", number_text(r.timeout)});
+  if (r.seed != 0) a.insert(a.end(), {"--seed", std::to_string(r.seed)});
+  a.insert(a.end(), {"--threads", std::to_string(threads)});
+  if (!r.view) a.push_back("--no-view");
+  a.push_back("-q");
+  return a;
+}
+
+int write_job_lists(const SweepConfig& c, const SweepPlan& plan, const std::string& exe) {
+  const std::filesystem::path out = std::filesystem::absolute(c.run.out_dir).lexically_normal();
+  const std::filesystem::path recipe = std::filesystem::absolute(c.run.recipe).lexically_normal();
+  const int threads = c.run.threads > 0 ? c.run.threads : 1;
+  SweepConfig absolute = c;
+  absolute.run.recipe = recipe;
+  std::string jobs;
+  for (const SweepRun& run : plan.runs) {
+    const std::string dir = (out / run.folder).string();
+    std::vector<std::string> a = run_arguments(absolute.run, run, dir, threads);
+    a.insert(a.begin(), exe);
+    // The run's messages go to its log and its exit code beside them, which --collect reads.
+    jobs += "mkdir -p " + shell_word(dir) + " && " + words(a) + " >" + shell_word(dir + "/selfsim.log") +
+            " 2>&1; echo $? >" + shell_word(dir + "/selfsim.exit") + "\n";
+  }
+  const std::string list = c.jobs_file.empty() ? "jobs.txt" : c.jobs_file;
+  write_file(out, list, jobs);
+  const std::string collect = words(collect_arguments(c, exe, out, recipe));
+  const std::string list_path = (out / list).string();
+  if (!c.run.quiet) {
+    std::printf("wrote %s (%zu runs)\n", shown_text(list_path).c_str(), plan.runs.size());
+    if (!c.jobs_file.empty())
+      std::printf(
+          "  run it here:           parallel --jobs 2 < %s\n"
+          "  or on many machines:   parallel --sshloginfile nodes.txt --jobs 1 < %s\n"
+          "  (the recipe, the output folder and selfsim at the same paths on every machine)\n"
+          "  then the sheets:       %s\n",
+          shell_word(list_path).c_str(), shell_word(list_path).c_str(), collect.c_str());
+  }
+  if (c.slurm.empty()) return 0;
+  std::filesystem::create_directories(out / "slurm");
+  const std::string logs = (out / "slurm").string();
+  write_file(out, c.slurm,
+             "#!/bin/bash\n"
+             "# One Slurm array task per run of the sweep of " +
+                 recipe.filename().string() + " (" + std::to_string(plan.runs.size()) +
+                 " runs): task i runs line i + 1 of " + list + ".\n" +
+                 "#SBATCH --job-name=selfsim-sweep\n#SBATCH --array=0-" + std::to_string(plan.runs.size() - 1) +
+                 "\n#SBATCH --cpus-per-task=" + std::to_string(threads) + "\n#SBATCH --output=" + logs +
+                 "/run-%a.out\n"
+                 "line=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" " +
+                 shell_word(list_path) + ")\nexec bash -c \"$line\"\n");
+  const std::string collect_script = "collect-" + c.slurm;
+  write_file(out, collect_script,
+             "#!/bin/bash\n# The sheets and ParaView series of the sweep, once its array has ended.\n"
+             "#SBATCH --job-name=selfsim-collect\n#SBATCH --output=" +
+                 logs + "/collect.out\n" + collect + "\n");
+  const std::string array = shell_word((out / c.slurm).string()), after = shell_word((out / collect_script).string());
+  if (!c.run.quiet)
+    std::printf("wrote %s and %s\n  submit: jid=$(sbatch --parsable %s) && sbatch --dependency=afterany:$jid %s\n",
+                array.c_str(), after.c_str(), array.c_str(), after.c_str());
+  return 0;
+}
+
+}  // namespace selfsim::interp

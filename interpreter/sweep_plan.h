@@ -1,0 +1,40 @@
+// A sweep's runs from its --set values: `level=4..10`, `factor=0.3..0.9:0.1` and `mode=clamp,rotate` each
+// give a list of values, several --set make their product, and each run gets a folder named by its values
+// ("factor=0.3,level=4"). Pure: the sweep command (sweep_command.cpp) runs what this plans.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace selfsim::interp {
+
+// At most this many runs in one sweep: a typo like 1..1e9 is refused before anything starts.
+inline constexpr std::size_t max_sweep_runs = 10000;
+
+// The values one --set gives: "4..10" (whole numbers, step 1), "0.3..0.9:0.1" (a range with a step; the
+// end is included when the steps reach it to within rounding), "a,b,c" (a list; "\," is a comma inside a
+// value) or one plain value. Range values are written to 12 significant digits, so 0.1 * 3 reads "0.3".
+// Throws Error naming the key: a range that runs down or has no whole-number ends without a step, a step
+// that is not > 0, an empty or repeated list item, more than max_sweep_runs values.
+std::vector<std::string> sweep_values(const std::string& key, const std::string& text);
+
+// Whether any --set gives more than one value (the run is a sweep).
+bool is_sweep(const std::map<std::string, std::string>& sets);
+
+struct SweepRun {
+  std::map<std::string, std::string> sets;  // every --set key with this run's value
+  std::string folder;                       // "level=4,mode=clamp": only the keys that vary, in key order
+  std::string caption;                      // "level=4, mode=clamp"
+};
+
+struct SweepPlan {
+  std::vector<std::string> keys;  // the keys that vary, in order
+  std::vector<SweepRun> runs;     // the product, the last key varying fastest
+};
+
+// The runs of a sweep. Throws Error for more than max_sweep_runs runs, or two runs whose folder names
+// would be the same (values that differ only in characters a folder name cannot keep: "a b" and "a_b").
+SweepPlan plan_sweep(const std::map<std::string, std::string>& sets);
+
+}  // namespace selfsim::interp

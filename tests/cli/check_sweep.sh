@@ -1,0 +1,123 @@
+#!/usr/bin/env bash
+# Sweeps: one run per combination of --set values, each in its own folder, N at a time; failures reported
+# while the others go on; Ctrl-C stops all; a job list that GNU parallel runs gives the same bytes.
+# usage: check_sweep.sh SELFSIM SOURCE_DIR
+set -uo pipefail
+selfsim=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+cd "$tmp" || exit 1
+
+cat >d.lua <<'LUA'
+local curves = require "selfsim.curves"
+local level = param("level", 6, { min = 1, max = 16 })
+local name = param("name", "dragon", { choices = { "dragon", "terdragon" } })
+local c = curves[name]():curve(level)
+save(c, "c.svg")
+save(c, "c.vtp")
+LUA
+
+# A 4 x 2 sweep, two at a time.
+"$selfsim" run d.lua -o sw --set level=2..5 --set name=dragon,terdragon --jobs 2 >out.txt 2>err.txt
+[ $? = 0 ] || fail "sweep exited non-zero: $(cat err.txt)"
+grep -qF "sweep: 8 runs of d.lua, 2 at a time" out.txt || fail "sweep header: $(head -2 out.txt)"
+grep -qF "sweep: 8 of 8 runs ok" out.txt || fail "sweep summary: $(tail -2 out.txt)"
+for level in 2 3 4 5; do
+  for name in dragon terdragon; do
+    dir="sw/level=$level,name=$name"
+    [ "$(cat "$dir/selfsim.exit" 2>/dev/null)" = 0 ] || fail "$dir/selfsim.exit"
+    # Each run's files are those of the same run made alone.
+    "$selfsim" run d.lua -o "one/$level$name" --set level=$level --set name=$name -q
+    cmp -s "$dir/c.svg" "one/$level$name/c.svg" || fail "$dir/c.svg differs from a single run's"
+    cmp -s "$dir/c.vtp" "one/$level$name/c.vtp" || fail "$dir/c.vtp differs from a single run's"
+  done
+done
+# The sheet: a cell per run with its caption, laid out as levels x names; the series: time = nothing
+# single (two keys vary), so the run index.
+grep -c '<image ' sw/sheet_c.svg | grep -qx 8 || fail "sheet_c.svg should have 8 images"
+grep -qF 'href="level=3,name=terdragon/c.svg"' sw/sheet_c.svg || fail "sheet links a run's SVG"
+grep -qF '>level=3, name=terdragon</text>' sw/sheet_c.svg || fail "sheet captions a run"
+grep -c '<DataSet ' sw/c_sweep.pvd | grep -qx 8 || fail "c_sweep.pvd should list 8 steps"
+/usr/bin/python3 - sw <<'PY' || fail "sweep.json"
+import json, sys
+d = json.load(open(sys.argv[1] + "/sweep.json"))
+assert d["keys"] == ["level", "name"], d["keys"]
+assert [r["folder"] for r in d["runs"]][:3] == ["level=2,name=dragon", "level=2,name=terdragon", "level=3,name=dragon"]
+assert d["runs"][5]["set"] == {"level": "4", "name": "terdragon"}
+PY
+
+# One key varying: the series' times are its values.
+"$selfsim" run d.lua -o sw1 --set level=3..5 -q || fail "one-key sweep"
+grep -qF '<DataSet timestep="5" group="" part="0" file="level=5/c.vtp"/>' sw1/c_sweep.pvd ||
+  fail "series time is the swept value: $(cat sw1/c_sweep.pvd)"
+
+# A failed run is reported and the others go on; the exit code says one failed.
+cat >f.lua <<'LUA'
+local n = param("n", 1)
+if n == 2 then error("two is bad") end
+save(polyline({ { 0, 0 }, { n, 1 } }), "p.svg")
+LUA
+"$selfsim" run f.lua -o fw --set n=1,2,3 >out.txt 2>err.txt
+[ $? = 1 ] || fail "a sweep with a failed run should exit 1"
+grep -qF "n=2: failed (exit 1): f.lua:2: two is bad" err.txt || fail "failed run line: $(cat err.txt)"
+grep -qF "1 of 3 runs failed (n=2;" err.txt || fail "failed summary: $(cat err.txt)"
+[ -f fw/n=1/p.svg ] && [ -f fw/n=3/p.svg ] || fail "the other runs went on"
+grep -qF 'failed (exit 1)</text>' fw/sheet_p.svg || fail "the sheet marks the failed run"
+
+# Values outside a parameter's range are refused before any run starts.
+"$selfsim" run d.lua -o bad --set level=15..17 >out.txt 2>err.txt
+[ $? = 2 ] || fail "out-of-range sweep should exit 2"
+grep -qF "selfsim: --set level=17: 'level' must be in [1, 16]" err.txt || fail "range message: $(cat err.txt)"
+[ -e bad ] && fail "a refused sweep made its output folder"
+
+# The job list, run by GNU parallel, then collected: the same bytes as the local sweep.
+"$selfsim" sweep d.lua -o pw --set level=2..5 --set name=dragon,terdragon --jobs-file jobs.txt >out.txt 2>err.txt ||
+  fail "sweep --jobs-file: $(cat err.txt)"
+[ "$(wc -l <pw/jobs.txt)" = 8 ] || fail "jobs.txt should have 8 lines"
+grep -qF "parallel --jobs 2 <" out.txt || fail "jobs-file says how to run it"
+if command -v parallel >/dev/null; then
+  parallel --will-cite --jobs 2 <pw/jobs.txt || fail "parallel ran the job list with failures"
+  "$selfsim" sweep d.lua -o pw --set level=2..5 --set name=dragon,terdragon --collect -q || fail "sweep --collect"
+  # Each run's view.py names its own folder; every other byte is the same.
+  diff -r -x selfsim.log -x jobs.txt -x sweep.json -x view.py sw pw >diff.txt || fail "parallel's sweep differs: $(head -5 diff.txt)"
+else
+  echo "note: GNU parallel not installed (make deps installs it); job list not run"
+fi
+
+# Ranges with a step end where the steps reach the end, to 12 digits; "\," is a comma inside a value.
+printf 'local f = param("factor", 0.5)\nlocal t = param("title", "x")\n' >r.lua
+"$selfsim" sweep r.lua -o rw --set factor=0.3..0.9:0.1 --set 'title=a\,b,c' --jobs-file j.txt -q || fail "range plan"
+/usr/bin/python3 - rw <<'PY' || fail "range values"
+import json, sys
+runs = json.load(open(sys.argv[1] + "/sweep.json"))["runs"]
+got = [(r["set"]["factor"], r["set"]["title"]) for r in runs]
+want = [("%g" % (f / 10), t) for f in range(3, 10) for t in ("a,b", "c")]
+assert got == want, got
+assert runs[0]["folder"] == "factor=0.3,title=a_b", runs[0]["folder"]
+PY
+
+# Ctrl-C (SIGINT to the sweep) stops every run: exit 130, no run left behind, no partial file.
+cat >slow.lua <<'LUA'
+local n = param("n", 1)
+local curves = require "selfsim.curves"
+local c = curves.dragon():curve(n + 2)
+local t = os.clock()
+while os.clock() - t < 30 do end
+save(polyline({ { 0, 0 }, { n, 1 } }), "p.svg")
+LUA
+"$selfsim" run slow.lua -o cw --set n=1..4 --jobs 2 >out.txt 2>err.txt &
+pid=$!
+sleep 1
+kill -INT $pid
+code=0
+wait $pid || code=$?
+[ "$code" = 130 ] || fail "interrupted sweep exit $code, expected 130"
+sleep 0.2
+pgrep -f "slow.lua -o $tmp/cw" >/dev/null && fail "runs still alive after Ctrl-C"
+grep -qF "sweep interrupted" err.txt || fail "interrupt message: $(cat err.txt)"
+[ -n "$(find cw -name '*.svg')" ] && fail "an interrupted run left a file"
+
+echo "$failures failures"
+[ "$failures" = 0 ]

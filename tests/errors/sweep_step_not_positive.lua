@@ -1,0 +1,5 @@
+-- args: --set factor=0.3..0.9:-0.1
+-- exit: 2
+local level = param("level", 3)
+local f = param("factor", 0.5)
+local m = param("mode", "a")
