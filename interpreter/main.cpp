@@ -65,6 +65,16 @@ usage:
 exit codes: 0 success, 1 recipe error, 2 usage error, 130 interrupted
 )";
 
+// `selfsim run ... --help`: prints the help when any argument asks for it.
+bool asks_help(const std::vector<std::string>& args) {
+  for (const std::string& a : args)
+    if (a == "--help" || a == "-h") {
+      std::fputs(help, stdout);
+      return true;
+    }
+  return false;
+}
+
 int usage_error(const std::string& message) {
   std::fprintf(stderr, "selfsim: %s (see selfsim --help)\n", message.c_str());
   return 2;
@@ -88,19 +98,11 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (command == "run") {
-      for (const std::string& a : rest)
-        if (a == "--help" || a == "-h") {
-          std::fputs(help, stdout);
-          return 0;
-        }
+      if (asks_help(rest)) return 0;
       return run_command(parse_run_arguments(rest));
     }
     if (command == "sweep") {
-      for (const std::string& a : rest)
-        if (a == "--help" || a == "-h") {
-          std::fputs(help, stdout);
-          return 0;
-        }
+      if (asks_help(rest)) return 0;
       return sweep_command(parse_sweep_arguments(rest));
     }
     if (command == "params") {
@@ -141,11 +143,7 @@ int main(int argc, char** argv) {
       return info_command(file);
     }
     if (command == "preview") {
-      for (const std::string& a : rest)
-        if (a == "--help" || a == "-h") {
-          std::fputs(help, stdout);
-          return 0;
-        }
+      if (asks_help(rest)) return 0;
       return preview_command(parse_preview_arguments(rest));
     }
     if (command == "diff") {

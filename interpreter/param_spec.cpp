@@ -1,10 +1,10 @@
 #include "interpreter/param_spec.h"
 
-#include <charconv>
 #include <cmath>
 
 #include "interpreter/options_reader.h"
 #include "interpreter/parse_text.h"
+#include "kernels/geom/check.h"
 #include "kernels/io/json_text.h"
 
 namespace selfsim::interp {
@@ -21,12 +21,6 @@ const char* type_name(ParamSpec::Type type) {
       return "boolean";
   }
   return "?";
-}
-
-std::string number_text(double v) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
 }
 
 namespace {

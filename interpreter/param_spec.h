@@ -39,7 +39,4 @@ void check_param_value(const ParamSpec& spec, const std::string& text);
 // The parameters as `selfsim params` prints them: a JSON array of objects, one per line.
 std::string params_json(const std::vector<ParamSpec>& specs);
 
-// A number as the shortest text that reads back to the same double ("0.3", "11", "1e-07").
-std::string number_text(double v);
-
 }  // namespace selfsim::interp

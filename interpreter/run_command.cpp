@@ -135,6 +135,21 @@ class QuietStdout {
   int saved_ = -1;
 };
 
+// Loads and runs the recipe in L (the sandbox of `run`) and returns the status of its pcall; the run has
+// ended when it returns (finalizers still to run at lua_close can no longer write).
+int run_recipe(lua_State* L, RunContext& run) {
+  open_all(L);
+  lua_pushcfunction(L, message_handler);
+  int status = LUA_OK;
+  {
+    const QuietStdout quiet(run.config.params_only);
+    status = luaL_loadfilex(L, run.config.recipe.c_str(), "t");
+    if (status == LUA_OK) status = lua_pcall(L, 0, 0, 1);
+  }
+  run.ended = true;
+  return status;
+}
+
 // `selfsim params`: the parameters as JSON, and whether the recipe ran to its end or stopped at its first
 // heavy step (a param() after that step is not listed).
 int print_params(const RunContext& run, const std::string& stopped_at) {
@@ -158,15 +173,7 @@ void check_sweep_params(const RunConfig& sweep, const SweepPlan& plan) {
   run.scripts_dir = find_scripts_dir();
   lua_State* L = new_sandbox(run);
   if (L == nullptr) throw Error("cannot create a Lua state (out of memory)");
-  open_all(L);
-  lua_pushcfunction(L, message_handler);
-  int status = LUA_OK;
-  {
-    const QuietStdout quiet(true);
-    status = luaL_loadfilex(L, config.recipe.c_str(), "t");
-    if (status == LUA_OK) status = lua_pcall(L, 0, 0, 1);
-  }
-  run.ended = true;
+  const int status = run_recipe(L, run);
   const std::string message = status == LUA_OK ? std::string() : failure_message(L, run, status);
   const bool timed_out = !run.stop_reason().empty();
   lua_close(L);
@@ -219,15 +226,7 @@ int run_command(const RunConfig& config) {
     std::fprintf(stderr, "selfsim: cannot create a Lua state (out of memory)\n");
     return 1;
   }
-  open_all(L);
-  lua_pushcfunction(L, message_handler);
-  int status = LUA_OK;
-  {
-    const QuietStdout quiet(config.params_only);
-    status = luaL_loadfilex(L, config.recipe.c_str(), "t");
-    if (status == LUA_OK) status = lua_pcall(L, 0, 0, 1);
-  }
-  run.ended = true;  // finalizers still to run (at lua_close) can no longer write
+  const int status = run_recipe(L, run);
   run.finish_bar();
   int code = 0;
   std::string message = status == LUA_OK ? std::string() : failure_message(L, run, status);

@@ -8,6 +8,7 @@
 #include "interpreter/lua_support.h"
 #include "interpreter/param_spec.h"
 #include "interpreter/sweep.h"
+#include "kernels/geom/check.h"
 #include "kernels/io/output_file.h"
 
 namespace selfsim::interp {
