@@ -16,6 +16,10 @@ struct UsageError : std::runtime_error {
 };
 
 int run_command(const RunConfig& config);
+// `selfsim run --watch` (watch_command.cpp).
+int watch_command(const RunConfig& config);
+// The running selfsim's own path (/proc/self/exe), for the runs a sweep or --watch starts.
+std::string selfsim_executable();
 int diff_command(const std::string& a, const std::string& b, double tol);
 int info_command(const std::string& file);
 // `selfsim info --print FILE [--profile fdm|sla]`: the print check of a solid in millimetres; exit 0 when it

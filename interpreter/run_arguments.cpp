@@ -107,7 +107,12 @@ RunConfig parse_run_arguments(const std::vector<std::string>& args) {
       c.quiet = true;
     else if (a == "--no-view")
       c.view = false;
-    else if (!a.empty() && a[0] == '-') {
+    else if (a == "--watch")
+      c.watch = true;
+    else if (a == "--view-folder") {
+      c.view_folder = value();
+      if (c.view_folder.empty()) throw UsageError("--view-folder expects a folder name, got ''");
+    } else if (!a.empty() && a[0] == '-') {
       const std::string near = suggestion(a, run_flags());
       throw UsageError("unknown option '" + a + "' for run" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
     } else if (have_recipe)
@@ -119,6 +124,8 @@ RunConfig parse_run_arguments(const std::vector<std::string>& args) {
     }
   }
   if (!have_recipe) throw UsageError("run expects a recipe file");
+  if (c.watch && is_sweep(c.sets))
+    throw UsageError("--watch re-runs one recipe; a --set with several values (a sweep) cannot be watched");
   // `selfsim run dragon` for dragon.lua: say the command meant.
   std::error_code ec;
   if (c.recipe.extension() != ".lua" && !std::filesystem::exists(std::filesystem::symlink_status(c.recipe, ec))) {
@@ -154,6 +161,7 @@ SweepConfig parse_sweep_arguments(const std::vector<std::string>& args) {
     }
   }
   s.run = parse_run_arguments(rest);
+  if (s.run.watch) throw UsageError("--watch is for run; a sweep runs once");
   if (!is_sweep(s.run.sets))
     throw UsageError("sweep expects a --set with several values: key=4..10, key=0.3..0.9:0.1 or key=a,b");
   if (s.collect_only && (!s.jobs_file.empty() || !s.slurm.empty()))

@@ -101,7 +101,8 @@ std::string failure_message(lua_State* L, RunContext& run, int status) {
 void write_view(const RunContext& run) {
   if (!run.config.view || run.view_datasets.empty()) return;
   try {
-    const std::string written = io::write_paraview_view(run.view_datasets, run.config.out_dir, "view.py");
+    const std::string written =
+        io::write_paraview_view(run.view_datasets, run.config.out_dir, "view.py", run.config.view_folder);
     if (!run.config.quiet)
       std::printf("wrote %s (open in ParaView: paraview --script=%s)\n", shown_text(written, 4096).c_str(),
                   shell_word(written).c_str());
@@ -204,6 +205,7 @@ void check_sweep_params(const RunConfig& sweep, const SweepPlan& plan) {
 }
 
 int run_command(const RunConfig& config) {
+  if (config.watch) return watch_command(config);
   if (is_sweep(config.sets)) {
     SweepConfig sweep;
     sweep.run = config;

@@ -34,7 +34,9 @@ struct RunConfig {
   int threads = 0;                          // worker threads for parallel kernels, 0 = all cores
   int jobs = 0;                             // a sweep's runs at a time, 0 = one per core
   bool quiet = false;
-  bool view = true;  // write view.py, a ParaView view of the run's VTK outputs
+  bool view = true;                   // write view.py, a ParaView view of the run's VTK outputs
+  std::filesystem::path view_folder;  // the folder view.py names, when not out_dir (--view-folder, for --watch)
+  bool watch = false;                 // --watch: run again whenever the recipe or a module changes
   // `selfsim params`: the recipe runs only to collect its param() declarations. Kernels are cancelled at
   // their first check and save() writes nothing, so the heavy part never runs.
   bool params_only = false;

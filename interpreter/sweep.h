@@ -30,7 +30,8 @@ int sweep_command(const SweepConfig& config);
 // ranges and choices before any run starts. Throws Error naming the --set and what was expected.
 void check_sweep_params(const RunConfig& run, const SweepPlan& plan);
 
-// The arguments of one run's `selfsim run` (after the program's name), writing into `dir`.
+// The arguments of one run's `selfsim run` (after the program's name), writing into `dir`, with `threads`
+// (0: the run's default) and every other limit of `run`.
 std::vector<std::string> run_arguments(const RunConfig& run, const SweepRun& one, const std::filesystem::path& dir,
                                        int threads);
 

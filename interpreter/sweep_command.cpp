@@ -5,7 +5,6 @@
 // run a job list sends to GNU parallel or Slurm.
 #include <fcntl.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -20,24 +19,16 @@
 #include "interpreter/commands.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
+#include "interpreter/spawn_selfsim.h"
 #include "interpreter/sweep.h"
 #include "kernels/io/json_text.h"
 #include "kernels/io/output_file.h"
-
-extern char** environ;
 
 namespace selfsim::interp {
 
 namespace {
 
 extern "C" void on_sweep_signal(int) { interrupted.store(true); }
-
-std::string self_path() {
-  std::error_code ec;
-  const std::filesystem::path p = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (ec) throw Error("cannot find the selfsim executable (/proc/self/exe): " + ec.message());
-  return p.string();
-}
 
 // The first line of a failed run's log: its error.
 std::string first_line(const std::filesystem::path& log) {
@@ -76,37 +67,10 @@ struct Child {
   std::chrono::steady_clock::time_point started;
 };
 
-// Starts one run with its stdout and stderr in FOLDER/selfsim.log; returns its pid.
-pid_t spawn_run(const std::string& exe, const std::vector<std::string>& args, const std::filesystem::path& log) {
-  const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0644);
-  if (fd < 0) throw Error("cannot write '" + log.string() + "'");
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, fd, 1);
-  posix_spawn_file_actions_adddup2(&actions, fd, 2);
-  std::vector<char*> argv;
-  std::string name = "selfsim";
-  argv.push_back(name.data());
-  std::vector<std::string> copy = args;
-  for (std::string& a : copy) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  const int e = posix_spawn(&pid, exe.c_str(), &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  ::close(fd);
-  if (e != 0) throw Error("cannot start '" + exe + "': " + std::strerror(e));
-  return pid;
-}
-
-int exit_code(int status) {
-  if (WIFEXITED(status)) return WEXITSTATUS(status);
-  return 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
-}
-
 // Runs every run of the plan, `jobs` at a time. Returns each run's exit code (-1: not run).
 std::vector<int> run_all(const SweepConfig& c, const SweepPlan& plan, int jobs) {
   const std::filesystem::path& out = c.run.out_dir;
-  const std::string exe = self_path();
+  const std::string exe = selfsim_executable();
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   const int threads = c.run.threads > 0 ? c.run.threads : std::max(1, cores / jobs);
   struct sigaction sa {};
@@ -122,7 +86,7 @@ std::vector<int> run_all(const SweepConfig& c, const SweepPlan& plan, int jobs) 
       const SweepRun& run = plan.runs[next];
       std::filesystem::create_directories(out / run.folder);
       const pid_t pid =
-          spawn_run(exe, run_arguments(c.run, run, out / run.folder, threads), out / run.folder / "selfsim.log");
+          spawn_selfsim(exe, run_arguments(c.run, run, out / run.folder, threads), out / run.folder / "selfsim.log");
       live[pid] = {next++, std::chrono::steady_clock::now()};
     }
     if (live.empty()) break;
@@ -156,13 +120,20 @@ std::vector<int> run_all(const SweepConfig& c, const SweepPlan& plan, int jobs) 
 
 }  // namespace
 
+std::string selfsim_executable() {
+  std::error_code ec;
+  const std::filesystem::path p = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) throw Error("cannot find the selfsim executable (/proc/self/exe): " + ec.message());
+  return p.string();
+}
+
 int sweep_command(const SweepConfig& c) {
   const SweepPlan plan = plan_sweep(c.run.sets);
   check_sweep_params(c.run, plan);
   const std::filesystem::path& out = c.run.out_dir;
   std::filesystem::create_directories(out);
   write_text(out, "sweep.json", manifest(c, plan));
-  if (!c.jobs_file.empty() || !c.slurm.empty()) return write_job_lists(c, plan, self_path());
+  if (!c.jobs_file.empty() || !c.slurm.empty()) return write_job_lists(c, plan, selfsim_executable());
   if (c.collect_only) return collect_sweep(c, plan, read_exit_codes(out, plan));
 
   const int jobs = c.run.jobs > 0 ? c.run.jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));

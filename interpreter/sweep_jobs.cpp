@@ -47,7 +47,7 @@ std::vector<std::string> run_arguments(const RunConfig& r, const SweepRun& run, 
   if (r.max_memory > 0) a.insert(a.end(), {"--max-memory", number_text(r.max_memory)});
   if (r.timeout > 0) a.insert(a.end(), {"--timeout", number_text(r.timeout)});
   if (r.seed != 0) a.insert(a.end(), {"--seed", std::to_string(r.seed)});
-  a.insert(a.end(), {"--threads", std::to_string(threads)});
+  if (threads > 0) a.insert(a.end(), {"--threads", std::to_string(threads)});
   if (!r.view) a.push_back("--no-view");
   a.push_back("-q");
   return a;

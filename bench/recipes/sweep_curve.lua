@@ -2,6 +2,6 @@
 -- `k` only names the run; `level` sets its size.
 local curves = require "selfsim.curves"
 local k = param("k", 1, { min = 1 })
-local c = curves.dragon():curve(param("level", 15, { min = 1, max = 22 }))
+local c = curves.dragon():curve(param("level", 18, { min = 1, max = 22 }))
 save(c, "c.svg")
 save(c, "c.vtp")

@@ -74,11 +74,12 @@ std::string paraview_view_text(std::span<const ViewDataset> datasets, const std:
 }
 
 std::string write_paraview_view(std::span<const ViewDataset> datasets, const std::filesystem::path& root,
-                                const std::string& name) {
+                                const std::string& name, const std::filesystem::path& named) {
   std::error_code ec;
-  const std::filesystem::path folder = std::filesystem::absolute(root, ec);
+  const std::filesystem::path& shown = named.empty() ? root : named;
+  const std::filesystem::path folder = std::filesystem::absolute(shown, ec);
   OutputFile out(root, name);
-  out.write(paraview_view_text(datasets, ec ? root : folder.lexically_normal()));
+  out.write(paraview_view_text(datasets, ec ? shown : folder.lexically_normal()));
   out.commit();
   return out.path();
 }

@@ -30,7 +30,9 @@ struct ViewDataset {
 std::string paraview_view_text(std::span<const ViewDataset> datasets, const std::filesystem::path& folder);
 
 // Writes it to root/name atomically and returns the path written.
+// `named`, when given, is the folder the script names instead of root: `run --watch` writes into a staging
+// folder whose files it then moves into the output folder.
 std::string write_paraview_view(std::span<const ViewDataset> datasets, const std::filesystem::path& root,
-                                const std::string& name);
+                                const std::string& name, const std::filesystem::path& named = {});
 
 }  // namespace selfsim::io

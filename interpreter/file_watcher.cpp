@@ -1,0 +1,95 @@
+#include "interpreter/file_watcher.h"
+
+#include <poll.h>
+#include <sys/inotify.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
+#include "kernels/geom/error.h"
+
+namespace selfsim::interp {
+
+namespace {
+
+constexpr std::uint32_t events = IN_CLOSE_WRITE | IN_MOVED_TO | IN_MOVED_FROM | IN_DELETE | IN_CREATE;
+
+bool same_folder(const std::filesystem::path& a, const std::filesystem::path& b) {
+  std::error_code ec;
+  return std::filesystem::equivalent(a, b, ec);
+}
+
+}  // namespace
+
+bool side_file(const std::string& name) {
+  if (name.empty() || name[0] == '.' || name.back() == '~' || name[0] == '#') return true;
+  for (const char* end : {".swp", ".swx", ".tmp"})
+    if (name.size() > std::strlen(end) && name.ends_with(end)) return true;
+  return name.find_first_not_of("0123456789") == std::string::npos;  // vim's "4913"
+}
+
+FileWatcher::FileWatcher(const std::vector<std::filesystem::path>& folders, const std::filesystem::path& skip)
+    : skip_(skip) {
+  fd_ = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
+  if (fd_ < 0) throw Error(std::string("cannot watch files (inotify): ") + std::strerror(errno));
+  for (const std::filesystem::path& f : folders) add(f, 0);
+}
+
+FileWatcher::~FileWatcher() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void FileWatcher::add(const std::filesystem::path& folder, int depth) {
+  if (!skip_.empty() && same_folder(folder, skip_)) return;
+  if (::inotify_add_watch(fd_, folder.c_str(), events | IN_ONLYDIR) < 0)
+    throw Error("cannot watch '" + folder.string() + "': " + std::strerror(errno));
+  if (depth >= 3) return;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name[0] != '.' && entry.is_directory(ec) && !entry.is_symlink(ec)) add(entry.path(), depth + 1);
+  }
+}
+
+std::string FileWatcher::drain() {
+  // The name to report: the last file written or moved in (sed and many editors write a temporary and
+  // rename it over the source: the source's name comes last), else the last one moved away or deleted.
+  std::string written, gone;
+  alignas(inotify_event) char buffer[16384];
+  for (;;) {
+    const ssize_t n = ::read(fd_, buffer, sizeof buffer);
+    if (n <= 0) break;
+    for (ssize_t at = 0; at < n;) {
+      const auto* e = reinterpret_cast<const inotify_event*>(buffer + at);
+      at += static_cast<ssize_t>(sizeof(inotify_event) + e->len);
+      if (e->len == 0 || (e->mask & IN_ISDIR) || side_file(e->name)) continue;
+      ((e->mask & (IN_MOVED_FROM | IN_DELETE)) ? gone : written) = e->name;
+    }
+  }
+  return written.empty() ? gone : written;
+}
+
+std::string FileWatcher::take(std::chrono::milliseconds settle) {
+  std::string changed = drain();
+  if (changed.empty()) return {};
+  // An editor's save is often several events (write, rename, attributes): gather them into one change.
+  pollfd more{fd_, POLLIN, 0};
+  while (::poll(&more, 1, static_cast<int>(settle.count())) > 0)
+    if (std::string later = drain(); !later.empty()) changed = later;
+  return changed;
+}
+
+std::string FileWatcher::wait(std::chrono::milliseconds timeout, std::chrono::milliseconds settle) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  for (;;) {
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) return {};
+    pollfd p{fd_, POLLIN, 0};
+    if (::poll(&p, 1, static_cast<int>(left.count())) <= 0) return {};  // timeout, or a signal: the caller asks why
+    if (std::string changed = take(settle); !changed.empty()) return changed;
+  }
+}
+
+}  // namespace selfsim::interp

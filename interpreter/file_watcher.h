@@ -1,0 +1,47 @@
+// Waiting for a recipe's sources to change, for `run --watch` and the studio: inotify on the recipe's
+// folder (and its subfolders, where `require "lib.x"` finds lib/x.lua, and where load() reads data), and on
+// the DSL's own scripts folder. The kernel says when a file is written; nothing is polled.
+//
+// Editors save in many ways (write in place, write a temporary and rename it over, vim's "4913" probe), so
+// any file written, moved in or deleted counts, except hidden files, backups ("x~", ".swp") and the output
+// folder (a run's own writes must not start the next run).
+#pragma once
+
+#include <chrono>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace selfsim::interp {
+
+class FileWatcher {
+ public:
+  // Watches `folders` and their subfolders (to a depth of 3), never `skip` (the output folder) or a hidden
+  // folder. Throws Error when inotify is unavailable or a folder cannot be watched.
+  FileWatcher(const std::vector<std::filesystem::path>& folders, const std::filesystem::path& skip);
+  ~FileWatcher();
+  FileWatcher(const FileWatcher&) = delete;
+  FileWatcher& operator=(const FileWatcher&) = delete;
+
+  // Waits up to `timeout` for a change; returns the changed file's name (relative to its folder), or empty
+  // on timeout or when a signal interrupted the wait. Changes that come together (an editor's save is often
+  // several events) are gathered for `settle` after the first and reported as one.
+  std::string wait(std::chrono::milliseconds timeout, std::chrono::milliseconds settle = std::chrono::milliseconds(30));
+
+  // The descriptor to poll beside others (a run's pidfd, the studio's socket); readable when events are
+  // pending. Then take() reads them: the changed file's name, or empty when they were only side files.
+  int fd() const { return fd_; }
+  std::string take(std::chrono::milliseconds settle = std::chrono::milliseconds(30));
+
+ private:
+  void add(const std::filesystem::path& folder, int depth);
+  std::string drain();  // the first counted change among the pending events, or empty
+
+  int fd_ = -1;
+  std::filesystem::path skip_;
+};
+
+// Whether an editor's side file (hidden, backup, swap, vim's "4913" probe) rather than a source.
+bool side_file(const std::string& name);
+
+}  // namespace selfsim::interp

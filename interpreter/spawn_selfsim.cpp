@@ -1,0 +1,47 @@
+#include "interpreter/spawn_selfsim.h"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstring>
+
+#include "kernels/geom/error.h"
+
+extern char** environ;
+
+namespace selfsim::interp {
+
+pid_t spawn_selfsim(const std::string& exe, const std::vector<std::string>& args, const std::filesystem::path& log) {
+  int fd = -1;
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  if (!log.empty()) {
+    fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0644);
+    if (fd < 0) {
+      posix_spawn_file_actions_destroy(&actions);
+      throw Error("cannot write '" + log.string() + "': " + std::strerror(errno));
+    }
+    posix_spawn_file_actions_adddup2(&actions, fd, 1);
+    posix_spawn_file_actions_adddup2(&actions, fd, 2);
+  }
+  std::vector<std::string> words{"selfsim"};
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  const int e = posix_spawn(&pid, exe.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (fd >= 0) ::close(fd);
+  if (e != 0) throw Error("cannot start '" + exe + "': " + std::strerror(e));
+  return pid;
+}
+
+int exit_code(int status) {
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  return 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+}
+
+}  // namespace selfsim::interp

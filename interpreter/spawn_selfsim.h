@@ -1,0 +1,20 @@
+// Starting a `selfsim run` as a child process: a sweep's runs and --watch's re-runs. A child rather than a
+// thread: a run that fails, runs out of memory or is stopped takes nothing else down.
+#pragma once
+
+#include <sys/types.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace selfsim::interp {
+
+// Starts `exe` with `args` (after the program name); its stdout and stderr go to `log` (created or
+// truncated, never through a link) or, when `log` is empty, where ours go. Returns its pid; throws Error.
+pid_t spawn_selfsim(const std::string& exe, const std::vector<std::string>& args, const std::filesystem::path& log);
+
+// A child's exit code as a shell reports it: its exit status, or 128 + the signal that ended it.
+int exit_code(int wait_status);
+
+}  // namespace selfsim::interp
