@@ -4,7 +4,10 @@ SANITIZE_BUILD ?= build-sanitize
 JOBS       ?= $(shell nproc)
 PACKAGES   := cmake g++ make libopenvdb-dev libboost-iostreams-dev liblua5.4-dev libopenmesh-dev libvtk9-dev \
               libtbb-dev lib3mf-dev libgtest-dev libgmock-dev libbenchmark-dev python3-vtk9 xvfb xauth libgl1-mesa-dri \
-              libglx-mesa0 librsvg2-bin clang-format ghostscript python3-openvdb paraview parallel
+              libglx-mesa0 librsvg2-bin clang-format ghostscript python3-openvdb paraview
+# Only `make test` installs these: GNU parallel and a Slurm with munge, which the sweep tests start on
+# localhost in a temporary folder (tests/cli/check_slurm.sh). selfsim itself never needs them.
+TEST_PACKAGES := parallel slurmctld slurmd slurm-client munge
 # ParaView's Python modules, unpacked from Debian's python3-paraview (never installed: it conflicts with
 # python3-vtk9, which libvtk9-dev needs) for scripts/pvbatch-selfsim. README: "ParaView and selfsim on one machine".
 PARAVIEW_PYTHON ?= /opt/selfsim/paraview-python
@@ -64,7 +67,8 @@ demo: deps build
 	@echo ".pvd time series for ParaView, .stl for a slicer. Open the whole gallery in ParaView, as designed:"
 	@echo "    scripts/pvbatch-selfsim --gui out/view.py     (or: paraview --script=out/view.py)"
 
-test: deps build
+test: build
+	@$(MAKE) --no-print-directory deps PACKAGES="$(PACKAGES) $(TEST_PACKAGES)"
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 sanitize: deps

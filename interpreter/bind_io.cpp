@@ -119,6 +119,7 @@ int save_volume(lua_State* L, const Volume& vol) {
   if (opt.voxel == 0) opt.voxel = vol.default_voxel();
   const Mesh boundary = with_budget(L, [&](const PointBudget& b) { return volume_boundary(vol, opt.voxel, b, run); });
   opt.budget = run_budget(L);
+  opt.provenance = run_provenance(L, name);
   const std::string written = io::save(&boundary, run.config.out_dir, name, opt, run);
   record_saved(L, name);
   if (is_vtk(*format)) {
@@ -164,6 +165,7 @@ int save(lua_State* L) {
     io::SaveOptions opt = read_save_options(L, 3, format);
     check_not_saved(L, name);
     opt.budget = run_budget(L);
+    opt.provenance = run_provenance(L, name);
     if (format.extension == ".svg") warn_if_far(L, *std::get<const Polyline*>(v->ref()));
     if (format.extension == ".stl") warn_if_coinciding(L, *std::get<const Mesh*>(v->ref()));
     const std::string written = io::save(v->ref(), run.config.out_dir, name, opt, run);

@@ -84,6 +84,7 @@ int save_series(lua_State* L) {
     }
   }
   opt.budget = run_budget(L);
+  opt.provenance = run_provenance(L, name);
   const io::SeriesFiles written = io::save_series(steps, run.config.out_dir, name, opt, run);
   for (const std::string& step : step_names) record_saved(L, step);
   record_saved(L, name);

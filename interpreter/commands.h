@@ -22,6 +22,9 @@ int watch_command(const RunConfig& config);
 std::string selfsim_executable();
 int diff_command(const std::string& a, const std::string& b, double tol);
 int info_command(const std::string& file);
+// `selfsim rerun FILE [-o DIR]`: the run FILE records, again, into DIR (default: a new ./rerun folder); exit 0
+// when FILE comes out byte for byte the same, 1 when it differs or the run fails. Throws UsageError.
+int rerun_command(const std::string& file, const std::string& out);
 // `selfsim info --print FILE [--profile fdm|sla]`: the print check of a solid in millimetres; exit 0 when it
 // passes, 1 with its findings, 2 when the file cannot be read or is not a closed solid.
 int print_info_command(const std::string& file, const std::string& profile);

@@ -14,6 +14,7 @@
 #include "kernels/geom/mesh_check.h"
 #include "kernels/geom/mesh_intersections.h"
 #include "kernels/io/dataset_values.h"
+#include "kernels/io/provenance.h"
 #include "kernels/io/read.h"
 #include "kernels/io/series_file.h"
 #include "kernels/io/vdb_read.h"
@@ -104,10 +105,26 @@ int diff_command(const std::string& a, const std::string& b, double tol) {
   }
 }
 
+namespace {
+
+// "made by: selfsim 0.1.0 from /r.lua (sha256 a03e42a0e1c1...), --set level=5, seed 0", when recorded.
+void print_provenance(const std::filesystem::path& file) {
+  const std::optional<io::Provenance> p = io::read_provenance(file);
+  if (!p) return;
+  std::string sets;
+  for (const auto& [k, v] : p->sets) sets += ", --set " + shell_word(k + "=" + v);
+  std::printf("made by: selfsim %s from %s (sha256 %s)%s, seed %lld; `selfsim rerun` repeats it\n",
+              shown_text(p->version, 40).c_str(), shown_text(p->recipe, 4096).c_str(),
+              shown_text(p->sha256.substr(0, 12), 20).c_str(), shown_text(sets, 4096).c_str(), p->seed);
+}
+
+}  // namespace
+
 int info_command(const std::string& given) {
   try {
     if (lower_case(std::filesystem::path(given).extension().string()) == ".vdb") {
       print_vdb(given);
+      print_provenance(given);
       return 0;
     }
     // A time series: its steps, then the last step (the grown result) as any file.
@@ -140,6 +157,7 @@ int info_command(const std::string& given) {
     for (const auto& [name, f] : d.cell_fields)
       std::printf("cell field: %s (%d component%s)\n", shown_text(name, 200).c_str(), f.components,
                   f.components == 1 ? "" : "s");
+    print_provenance(file);
     return 0;
   } catch (...) {
     return report("info");

@@ -43,6 +43,10 @@ usage:
                              the recipe's parameters as JSON: name, type, default, min, max, step,
                              choices, doc. The recipe runs only up to its first heavy step (nothing
                              is built or written); "complete" says whether it reached its end
+  selfsim rerun FILE [-o DIR] run again the recipe FILE records it was made by (every file a run saves
+                             records its recipe, --set values and seed), into DIR (default: a new
+                             folder ./rerun), and say whether FILE comes out the same byte for byte.
+                             Exit 0 same, 1 different or failed, 2 error
   selfsim diff A B [--tol T] compare two geometry files (.vtp .vtu .svg .stl .3mf .obj .ply) point by point,
                              cell by cell and field by field; T is relative (default 1e-9).
                              Exit 0 same, 1 different, 2 error
@@ -86,7 +90,7 @@ int main(int argc, char** argv) {
   using namespace selfsim::interp;
   std::vector<std::string> args(argv + 1, argv + argc);
   try {
-    if (args.empty()) throw UsageError("expected a command: run, sweep, params, diff, info or preview");
+    if (args.empty()) throw UsageError("expected a command: run, sweep, params, rerun, diff, info or preview");
     const std::string command = args[0];
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     if (command == "--help" || command == "-h" || command == "help") {
@@ -104,6 +108,21 @@ int main(int argc, char** argv) {
     if (command == "sweep") {
       if (asks_help(rest)) return 0;
       return sweep_command(parse_sweep_arguments(rest));
+    }
+    if (command == "rerun") {
+      std::string file, out;
+      for (std::size_t i = 0; i < rest.size(); ++i) {
+        if (rest[i] == "-o" || rest[i] == "--output") {
+          if (i + 1 >= rest.size() || rest[i + 1].empty()) throw UsageError(rest[i] + " expects a folder");
+          out = rest[++i];
+        } else if (!file.empty()) {
+          throw UsageError("rerun expects one file, got '" + file + "' and '" + rest[i] + "'");
+        } else {
+          file = rest[i];
+        }
+      }
+      if (file.empty()) throw UsageError("rerun expects a file that selfsim wrote");
+      return rerun_command(file, out);
     }
     if (command == "params") {
       RunConfig config = parse_run_arguments(rest);
@@ -169,7 +188,7 @@ int main(int argc, char** argv) {
       throw UsageError("unknown command '" + command + "'; to run a recipe: " + shell_command(line));
     }
     const std::string near =
-        suggestion(command, {"run", "sweep", "params", "diff", "info", "preview", "--help", "--version"});
+        suggestion(command, {"run", "sweep", "params", "rerun", "diff", "info", "preview", "--help", "--version"});
     throw UsageError("unknown command '" + command + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
   } catch (const UsageError& e) {
     return usage_error(e.what());

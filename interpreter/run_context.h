@@ -56,6 +56,7 @@ class RunContext : public Progress {
   std::filesystem::path scripts_dir;  // the DSL's own library (require "selfsim.curves")
   std::set<std::string> used_params;  // --set keys that param() read
   std::vector<ParamSpec> params;      // the parameters declared, in order (param_spec.h)
+  std::string recipe_sha256;          // of the recipe's bytes, read at the first save (save_support.cpp)
   double held_points = 0;             // points held by live values (curves), against --max-points
   bool ended = false;                 // the recipe has returned or failed: nothing more may be written
   std::atomic<bool> reported{false};  // the run's error line is printed: the watchdog adds none

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <optional>
 
 #include "interpreter/lua_support.h"
@@ -15,11 +17,31 @@
 #include "kernels/geom/check.h"
 #include "kernels/geom/lower_case.h"
 #include "kernels/io/natural_field.h"
+#include "kernels/io/provenance.h"
+#include "kernels/io/sha256.h"
 
 namespace selfsim::interp {
 
 // The save() options of format f, read by type; an option of another format is named as such, and any
 // other unknown key gets Options' "did you mean" among f's own options.
+std::string run_provenance(lua_State* L, const std::string& name) {
+  RunContext& run = RunContext::of(L);
+  if (run.recipe_sha256.empty()) {
+    std::ifstream in(run.config.recipe, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    run.recipe_sha256 = io::sha256_hex(bytes);
+  }
+  io::Provenance p;
+  p.version = SELFSIM_VERSION;
+  std::error_code ec;
+  p.recipe = std::filesystem::absolute(run.config.recipe, ec).lexically_normal().string();
+  p.sha256 = run.recipe_sha256;
+  p.sets = run.config.sets;
+  p.seed = run.config.seed;
+  p.name = std::filesystem::path(name).lexically_normal().generic_string();
+  return io::provenance_json(p);
+}
+
 io::SaveOptions read_save_options(lua_State* L, int index, const io::Format& f) {
   Options o(L, index);
   io::SaveOptions s;

@@ -13,6 +13,10 @@
 namespace selfsim::interp {
 
 // The save() options of format f from the table at index (none there: the defaults).
+// How the file `name` is being made, for the file to record (kernels/io/provenance.h): this selfsim, the
+// recipe's absolute path and SHA-256, the run's --set values and seed.
+std::string run_provenance(lua_State* L, const std::string& name);
+
 io::SaveOptions read_save_options(lua_State* L, int index, const io::Format& f);
 
 // `name` (relative to the output folder) lexically normal: the key saves are recorded under.

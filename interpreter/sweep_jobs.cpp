@@ -84,22 +84,27 @@ int write_job_lists(const SweepConfig& c, const SweepPlan& plan, const std::stri
   }
   if (c.slurm.empty()) return 0;
   std::filesystem::create_directories(out / "slurm");
-  const std::string logs = (out / "slurm").string();
-  write_file(out, c.slurm,
-             "#!/bin/bash\n"
-             "# One Slurm array task per run of the sweep of " +
-                 recipe.filename().string() + " (" + std::to_string(plan.runs.size()) +
-                 " runs): task i runs line i + 1 of " + list + ".\n" +
-                 "#SBATCH --job-name=selfsim-sweep\n#SBATCH --array=0-" + std::to_string(plan.runs.size() - 1) +
-                 "\n#SBATCH --cpus-per-task=" + std::to_string(threads) + "\n#SBATCH --output=" + logs +
-                 "/run-%a.out\n"
-                 "line=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" " +
-                 shell_word(list_path) + ")\nexec bash -c \"$line\"\n");
+  // sbatch reads #SBATCH lines itself, not through a shell: a path is double-quoted (a space would end
+  // it) and its '%' doubled (sbatch expands %j, %a, ... there).
+  const std::string folder = (out / "slurm").string();
+  if (folder.find_first_of("\"\n") != std::string::npos)
+    throw UsageError("--slurm: the output folder's path holds a '\"' or a line break, which an #SBATCH line cannot");
+  std::string logs;
+  for (char ch : folder) logs += ch == '%' ? std::string("%%") : std::string(1, ch);
+  auto output = [&](const std::string& leaf) { return "#SBATCH --output=\"" + logs + "/" + leaf + "\"\n"; };
+  write_file(
+      out, c.slurm,
+      "#!/bin/bash\n"
+      "# One Slurm array task per run of the sweep of " +
+          recipe.filename().string() + " (" + std::to_string(plan.runs.size()) + " runs): task i runs line i + 1 of " +
+          list + ".\n" + "#SBATCH --job-name=selfsim-sweep\n#SBATCH --array=0-" + std::to_string(plan.runs.size() - 1) +
+          "\n#SBATCH --cpus-per-task=" + std::to_string(threads) + "\n" + output("run-%a.out") +
+          "line=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" " + shell_word(list_path) + ")\nexec bash -c \"$line\"\n");
   const std::string collect_script = "collect-" + c.slurm;
   write_file(out, collect_script,
              "#!/bin/bash\n# The sheets and ParaView series of the sweep, once its array has ended.\n"
-             "#SBATCH --job-name=selfsim-collect\n#SBATCH --output=" +
-                 logs + "/collect.out\n" + collect + "\n");
+             "#SBATCH --job-name=selfsim-collect\n" +
+                 output("collect.out") + collect + "\n");
   const std::string array = shell_word((out / c.slurm).string()), after = shell_word((out / collect_script).string());
   if (!c.run.quiet)
     std::printf("wrote %s and %s\n  submit: jid=$(sbatch --parsable %s) && sbatch --dependency=afterany:$jid %s\n",

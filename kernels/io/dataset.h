@@ -32,6 +32,9 @@ struct Dataset {
   std::vector<std::size_t> cell_points;
   std::map<std::string, FieldValues> point_fields;
   std::map<std::string, FieldValues> cell_fields;
+  // How it was made (provenance.h), as the format holds it: a VTK file's FieldData string, a 3MF file's
+  // Description; empty for other readers.
+  std::string provenance;
 };
 
 }  // namespace selfsim::io

@@ -63,6 +63,8 @@ Dataset receive_dataset(PipeIn& in, std::uint64_t max_values) {
   get_values(in, d.cell_points, max_values);
   get_fields(in, d.point_fields, max_values);
   get_fields(in, d.cell_fields, max_values);
+  d.provenance.resize(static_cast<std::size_t>(get_count(in, 1u << 16)));
+  in.read(d.provenance.data(), d.provenance.size());
   return d;
 }
 
@@ -94,6 +96,7 @@ void send_dataset(PipeOut& out, const Dataset& d) {
   put_values(out, ids);
   put_fields(out, d.point_fields);
   put_fields(out, d.cell_fields);
+  put_name(out, d.provenance.substr(0, 1u << 16));
 }
 
 }  // namespace selfsim::io

@@ -6,6 +6,7 @@
 //   cell points:  count, then count uint64
 //   point fields, then cell fields: count, then per field: name length, name bytes, components,
 //                 value count, then the values as doubles
+//   provenance:   length, then its bytes (provenance.h; empty where the format holds none)
 // where every count is a uint64. The child writes it straight from its reader's arrays, without building
 // a Dataset of its own; the parent rebuilds the Dataset.
 #pragma once

@@ -12,10 +12,12 @@
 #include <ostream>
 #include <streambuf>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "kernels/geom/check.h"
 #include "kernels/geom/error.h"
+#include "kernels/io/provenance.h"
 #include "kernels/io/writers.h"
 
 namespace selfsim::io {
@@ -61,9 +63,12 @@ OMesh to_openmesh(const Mesh& m) {
 
 // An ostream's buffer that passes its bytes on to an OutputFile and checks cancellation every megabyte,
 // so OpenMesh's writers stream into our atomic, confined file and a long write can still be stopped.
+// `header_line`, when given, goes in after the writer's second line: a PLY header's comment, which must
+// follow "ply" and "format ...".
 class FileBuffer : public std::streambuf {
  public:
-  FileBuffer(OutputFile& out, Progress& progress) : out_(out), progress_(progress), buffer_(1 << 20) {
+  FileBuffer(OutputFile& out, Progress& progress, std::string header_line)
+      : out_(out), progress_(progress), buffer_(1 << 20), header_line_(std::move(header_line)) {
     setp(buffer_.data(), buffer_.data() + buffer_.size());
   }
 
@@ -83,7 +88,15 @@ class FileBuffer : public std::streambuf {
 
  private:
   void flush_buffer() {
-    out_.write(pbase(), static_cast<std::size_t>(pptr() - pbase()));
+    std::string_view bytes(pbase(), static_cast<std::size_t>(pptr() - pbase()));
+    for (std::size_t i = 0; lines_ < 2 && i < bytes.size(); ++i)
+      if (bytes[i] == '\n' && ++lines_ == 2 && !header_line_.empty()) {
+        out_.write(bytes.substr(0, i + 1));
+        out_.write(header_line_);
+        bytes.remove_prefix(i + 1);
+        break;
+      }
+    out_.write(bytes);
     setp(buffer_.data(), buffer_.data() + buffer_.size());
     if (progress_.cancelled()) throw Cancelled();
   }
@@ -91,6 +104,8 @@ class FileBuffer : public std::streambuf {
   OutputFile& out_;
   Progress& progress_;
   std::vector<char> buffer_;
+  std::string header_line_;
+  int lines_ = 0;
 };
 
 // These formats hold floats: a coordinate beyond float's range would be written as inf, and a non-zero one
@@ -105,7 +120,7 @@ void check_single_precision(const Mesh& m, const char* ext) {
 }
 
 void write_with_openmesh(const ValueRef& v, OutputFile& out, Progress& progress, const char* ext,
-                         OpenMesh::IO::Options opt, std::streamsize precision) {
+                         OpenMesh::IO::Options opt, std::streamsize precision, std::string header_line = {}) {
   const Mesh& m = *std::get<const Mesh*>(v);  // the registry sends only meshes here
   check_single_precision(m, ext);
   OMesh om = to_openmesh(m);
@@ -114,7 +129,7 @@ void write_with_openmesh(const ValueRef& v, OutputFile& out, Progress& progress,
     om.request_face_normals();
     om.update_face_normals();
   }
-  FileBuffer buffer(out, progress);
+  FileBuffer buffer(out, progress, std::move(header_line));
   std::ostream os(&buffer);
   os.exceptions(std::ios::badbit);  // an exception from the buffer (cancelled, disk full) reaches us
   if (!OpenMesh::IO::write_mesh(om, os, ext, opt, precision) || !os.flush())
@@ -128,12 +143,15 @@ void write_stl(const ValueRef& v, OutputFile& out, const SaveOptions&, Progress&
                       OpenMesh::IO::Options(OpenMesh::IO::Options::Binary | OpenMesh::IO::Options::FaceNormal), 9);
 }
 
-void write_obj(const ValueRef& v, OutputFile& out, const SaveOptions&, Progress& progress) {
+void write_obj(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress) {
+  if (!opt.provenance.empty()) out.write("# " + std::string(provenance_key) + " " + opt.provenance + "\n");
   write_with_openmesh(v, out, progress, ".obj", OpenMesh::IO::Options::Default, 9);  // a float32 in full
 }
 
-void write_ply(const ValueRef& v, OutputFile& out, const SaveOptions&, Progress& progress) {
-  write_with_openmesh(v, out, progress, ".ply", OpenMesh::IO::Options(OpenMesh::IO::Options::Binary), 9);
+void write_ply(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress) {
+  write_with_openmesh(
+      v, out, progress, ".ply", OpenMesh::IO::Options(OpenMesh::IO::Options::Binary), 9,
+      opt.provenance.empty() ? "" : "comment " + std::string(provenance_key) + " " + opt.provenance + "\n");
 }
 
 }  // namespace selfsim::io

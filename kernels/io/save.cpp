@@ -5,6 +5,7 @@
 #include "kernels/geom/check.h"
 #include "kernels/geom/error.h"
 #include "kernels/io/colour.h"
+#include "kernels/io/provenance.h"
 #include "kernels/io/read_error.h"
 
 namespace selfsim::io {
@@ -77,6 +78,12 @@ std::string save(const ValueRef& v, const std::filesystem::path& root, const std
   format.write(v, out, opt, progress);
   if (progress.cancelled()) throw Cancelled();
   out.commit();
+  // Formats with no place for text carry how they were made beside them: dragon.stl.json.
+  if (!opt.provenance.empty() && provenance_beside(format.extension)) {
+    OutputFile beside(root, name + ".json");
+    beside.write(opt.provenance + "\n");
+    beside.commit();
+  }
   return out.path();
 }
 

@@ -28,6 +28,7 @@ struct SaveOptions {
   std::string application = "selfsim";         // .3mf: the program that wrote it (the caller adds its version)
   PointBudget budget;                          // the run's, for what a writer builds on the way (a .vdb's grid)
   std::vector<std::string> given;              // the options the caller set, checked against the format's options
+  std::string provenance;  // how the value was made, one line of JSON (provenance.h); empty: none recorded
 
   // Throws Error naming the first bad field.
   void validate() const;

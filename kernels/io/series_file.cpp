@@ -132,12 +132,7 @@ std::vector<std::string> quoted_values(const std::string& text, const std::strin
       value += text[i];
     }
     if (i >= text.size()) break;
-    for (const auto& [from, to] :
-         {std::pair<std::string, std::string>{"&quot;", "\""}, {"&lt;", "<"}, {"&gt;", ">"}, {"&amp;", "&"}})
-      for (std::size_t e = json ? std::string::npos : value.find(from); e != std::string::npos;
-           e = value.find(from, e + to.size()))
-        value.replace(e, from.size(), to);
-    out.push_back(std::move(value));
+    out.push_back(json ? std::move(value) : xml_unescaped(std::move(value)));
   }
   return out;
 }

@@ -8,6 +8,7 @@
 
 #include "kernels/geom/error.h"
 #include "kernels/io/curve_style.h"
+#include "kernels/io/provenance.h"
 #include "kernels/io/put_number.h"
 #include "kernels/io/writers.h"
 
@@ -37,7 +38,9 @@ void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
     s += ' ';
   }
   s.back() = '"';
-  s += ">\n<g transform=\"scale(1,-1)\" fill-rule=\"evenodd\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
+  s += ">\n";
+  if (!opt.provenance.empty()) s += "<!-- " + std::string(provenance_key) + " " + opt.provenance + " -->\n";
+  s += "<g transform=\"scale(1,-1)\" fill-rule=\"evenodd\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
   const double noise = 1e-12 * big;
   std::size_t written = 0;
   PathStyle style;

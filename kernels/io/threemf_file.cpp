@@ -15,6 +15,7 @@
 #include "kernels/geom/error.h"
 #include "kernels/geom/mesh_check.h"
 #include "kernels/io/lib3mf_call.h"
+#include "kernels/io/provenance.h"
 #include "kernels/io/writers.h"
 #include "kernels/io/xml_text.h"
 
@@ -100,6 +101,11 @@ void write_3mf(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
                "write the title");
   lib3mf_check(NMR::lib3mf_model_addmetadatautf8(model.p, "Application", xml_escaped(opt.application).c_str()), model.p,
                "write the application");
+  if (!opt.provenance.empty())
+    // In the well-known Description (slicers show it): lib3mf writes no namespace for a name of our own.
+    lib3mf_check(NMR::lib3mf_model_addmetadatautf8(
+                     model.p, "Description", xml_escaped(std::string(provenance_key) + " " + opt.provenance).c_str()),
+                 model.p, "write how it was made");
   lib3mf_check(NMR::lib3mf_model_addmeshobject(model.p, &mesh.p), model.p, "add the mesh");
   lib3mf_check(NMR::lib3mf_object_setnameutf8(mesh.p, name.c_str()), mesh.p, "name the mesh");
   lib3mf_check(NMR::lib3mf_meshobject_setgeometry(mesh.p, points.data(), static_cast<DWORD>(points.size()),

@@ -4,6 +4,7 @@
 // objects are compared as they are defined. Like threemf_file.cpp, lib3mf's C interface stays in this file.
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -11,7 +12,9 @@
 #include "kernels/io/dataset_pipe.h"
 #include "kernels/io/lib3mf_call.h"
 #include "kernels/io/mesh_readers.h"
+#include "kernels/io/provenance.h"
 #include "kernels/io/read.h"
+#include "kernels/io/xml_text.h"
 
 namespace selfsim::io {
 
@@ -35,6 +38,26 @@ double millimetres(DWORD unit) {
   }
 }
 
+// The model's metadata value under `key`, or empty.
+std::string metadata_value(NMR::PLib3MFModel* model, const std::string& key) {
+  DWORD count = 0;
+  if (NMR::lib3mf_model_getmetadatacount(model, &count) != LIB3MF_OK) return {};
+  for (DWORD i = 0; i < count; ++i) {
+    ULONG n = 0;
+    if (NMR::lib3mf_model_getmetadatakeyutf8(model, i, nullptr, 0, &n) != LIB3MF_OK) continue;
+    std::string name(n + 1, '\0');
+    if (NMR::lib3mf_model_getmetadatakeyutf8(model, i, name.data(), n + 1, &n) != LIB3MF_OK) continue;
+    name.resize(std::min<std::size_t>(n, std::strlen(name.c_str())));  // n may count the terminating NUL
+    if (name != key) continue;
+    if (NMR::lib3mf_model_getmetadatavalueutf8(model, i, nullptr, 0, &n) != LIB3MF_OK || n > (1u << 16)) return {};
+    std::string value(n + 1, '\0');
+    if (NMR::lib3mf_model_getmetadatavalueutf8(model, i, value.data(), n + 1, &n) != LIB3MF_OK) return {};
+    value.resize(std::min<std::size_t>(n, std::strlen(value.c_str())));
+    return xml_unescaped(value);  // lib3mf hands back the XML text as it is in the file
+  }
+  return {};
+}
+
 // The file parsed by lib3mf, in this process.
 Dataset parse_3mf(const RegularFile& f) {
   std::vector<BYTE> bytes(f.size());
@@ -49,6 +72,7 @@ Dataset parse_3mf(const RegularFile& f) {
   lib3mf_check(NMR::lib3mf_model_getmeshobjects(model.p, &meshes.p), model.p, "list its meshes");
   Dataset d;
   d.shapes = CellShapes::polygons;
+  d.provenance = metadata_value(model.p, "Description");
   FieldValues object;
   BOOL next = 0;
   for (int k = 0; NMR::lib3mf_resourceiterator_movenext(meshes.p, &next) == LIB3MF_OK && next; ++k) {

@@ -1,5 +1,6 @@
 // .vtp and .vtu: what ParaView opens. Both come from one piece per value (vtk_pieces.cpp) written by the
 // one VTK XML writer; they differ only in the dataset type.
+#include "kernels/io/provenance.h"
 #include "kernels/io/vtk_pieces.h"
 #include "kernels/io/writers.h"
 
@@ -21,14 +22,19 @@ VtkPiece piece(const ValueRef& v, bool unstructured) {
       v);
 }
 
-}  // namespace
-
-void write_vtp(const ValueRef& v, OutputFile& out, const SaveOptions&, Progress& progress) {
-  write_vtk_xml(piece(v, false), out, progress);
+VtkPiece with_provenance(VtkPiece p, const SaveOptions& opt) {
+  if (!opt.provenance.empty()) p.field_strings.emplace_back(provenance_key, opt.provenance);
+  return p;
 }
 
-void write_vtu(const ValueRef& v, OutputFile& out, const SaveOptions&, Progress& progress) {
-  write_vtk_xml(piece(v, true), out, progress);
+}  // namespace
+
+void write_vtp(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress) {
+  write_vtk_xml(with_provenance(piece(v, false), opt), out, progress);
+}
+
+void write_vtu(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress) {
+  write_vtk_xml(with_provenance(piece(v, true), opt), out, progress);
 }
 
 }  // namespace selfsim::io

@@ -71,8 +71,19 @@ void write_vtk_xml(const VtkPiece& piece, OutputFile& out, Progress& progress) {
   };
   const std::string dataset = dataset_name(piece.dataset);
   h += "<?xml version=\"1.0\"?>\n<VTKFile type=\"" + dataset +
-       "\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <" + dataset +
-       ">\n    <Piece NumberOfPoints=\"" + to_string(piece.points) + "\"";
+       "\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <" + dataset + ">\n";
+  // Strings in FieldData (ParaView's Information panel shows them): VTK's ASCII form, character codes
+  // ending in 0.
+  if (!piece.field_strings.empty()) {
+    h += "    <FieldData>\n";
+    for (const auto& [name, text] : piece.field_strings) {
+      h += "      <Array type=\"String\" Name=\"" + name + "\" NumberOfTuples=\"1\" format=\"ascii\">\n        ";
+      for (unsigned char c : text) h += to_string(static_cast<unsigned>(c)) + " ";
+      h += "0\n      </Array>\n";
+    }
+    h += "    </FieldData>\n";
+  }
+  h += "    <Piece NumberOfPoints=\"" + to_string(piece.points) + "\"";
   const std::string cells = to_string(piece.cells);
   switch (piece.dataset) {
     case VtkDataset::PolyDataLines:

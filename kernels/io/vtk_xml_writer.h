@@ -46,6 +46,7 @@ struct VtkPiece {
   std::vector<VtkArray> point_data;  // written under their names
   std::vector<VtkArray> cell_data;
   std::string active_scalars;  // the point array ParaView colours by first; empty for none
+  std::vector<std::pair<std::string, std::string>> field_strings;  // FieldData string arrays: name, text
 };
 
 // Writes VTK XML, version 1.0, appended raw little-endian data with UInt64 block headers.

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace selfsim::io {
 
@@ -21,6 +22,16 @@ inline std::size_t advance_match(std::string_view end, std::size_t matched, char
   for (std::size_t k = std::min(s.size(), end.size()); k > 0; --k)
     if (s.substr(s.size() - k) == end.substr(0, k)) return k;
   return 0;
+}
+
+// The text of an attribute value or element with xml_escaped's entities undone (&amp; last, so "&amp;lt;"
+// stays "&lt;").
+inline std::string xml_unescaped(std::string value) {
+  for (const auto& [from, to] :
+       {std::pair<std::string_view, std::string_view>{"&quot;", "\""}, {"&lt;", "<"}, {"&gt;", ">"}, {"&amp;", "&"}})
+    for (std::size_t e = value.find(from); e != std::string::npos; e = value.find(from, e + to.size()))
+      value.replace(e, from.size(), to);
+  return value;
 }
 
 // Text for an XML attribute value in double quotes.

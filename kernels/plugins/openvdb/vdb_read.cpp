@@ -233,6 +233,7 @@ void send_surface(PipeOut& out, openvdb::io::File& file, const std::string& want
     for (int k = 0; k < 4; ++k) put_count(out, q[k]);
   put_count(out, 0);
   put_count(out, 0);
+  put_name(out, "");  // no provenance inside: a .vdb carries it beside it (provenance.h)
   // A level set's own voxels (GridSamples), or none: a count, then the voxel, origin and background, then
   // each voxel's index and value.
   const auto map = grid->transform().mapType();

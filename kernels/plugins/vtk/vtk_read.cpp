@@ -20,6 +20,7 @@
 #include <vtkCellType.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkLogger.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
@@ -28,6 +29,7 @@
 #include <vtkPointSet.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLReader.h>
@@ -39,6 +41,7 @@
 #include "kernels/io/child_process.h"
 #include "kernels/io/dataset_check.h"
 #include "kernels/io/dataset_pipe.h"
+#include "kernels/io/provenance.h"
 #include "kernels/io/read.h"
 #include "kernels/io/read_error.h"
 #include "kernels/io/regular_file.h"
@@ -153,6 +156,10 @@ void send_dataset(PipeOut& out, vtkPointSet* data, const std::vector<vtkCellArra
   }
   send_fields(out, data->GetPointData());
   send_fields(out, data->GetCellData());
+  // How the file was made (provenance.h), a FieldData string, or nothing.
+  vtkAbstractArray* made = data->GetFieldData() ? data->GetFieldData()->GetAbstractArray(provenance_key) : nullptr;
+  auto* text = vtkStringArray::SafeDownCast(made);
+  put_name(out, text && text->GetNumberOfValues() > 0 ? text->GetValue(0).substr(0, 1u << 16) : std::string());
 }
 
 // Polylines, polygons or both, from a grid's cell types.

@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# Every output records how it was made (recipe path and SHA-256, --set values, seed, version); info shows
+# it, rerun repeats the run into a new folder and says whether the bytes match.
+# usage: check_provenance.sh SELFSIM SOURCE_DIR
+set -uo pipefail
+selfsim=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+# A folder whose name holds "--", which an XML comment may not: the SVG must still parse.
+dir="$tmp/a--b"
+mkdir -p "$dir" && cd "$dir" || exit 1
+cat >r.lua <<'LUA'
+local curves = require "selfsim.curves"
+local level = param("level", 3)
+local c = curves.dragon():curve(level)
+save(c, "c.svg"); save(c, "c.vtp"); save(c, "c.vtu"); save(c:levels(), "g.pvd")
+local s = develop(curves.dragon(), { levels = 3, thickness = 0.05 })
+save(s, "s.stl"); save(s, "s.ply"); save(s, "s.obj"); save(s, "s.3mf"); save(s, "s.vdb")
+LUA
+"$selfsim" run r.lua -o out --set level=5 --seed 3 -q || fail "the run failed"
+sha=$(sha256sum r.lua | cut -d' ' -f1)
+for f in c.svg c.vtp c.vtu g.pvd s.stl s.ply s.obj s.3mf s.vdb; do
+  "$selfsim" info "out/$f" >info.txt 2>&1 || fail "info $f: $(cat info.txt)"
+  grep -qF "made by: selfsim " info.txt || fail "info $f shows no provenance: $(tail -2 info.txt)"
+  grep -qF "from $dir/r.lua (sha256 ${sha:0:12}), --set level=5, seed 3" info.txt ||
+    fail "info $f provenance: $(grep 'made by' info.txt)"
+done
+# Read by other tools: VTK's own reader, Python's XML parser, and the JSON beside the STL.
+/usr/bin/python3 - "$dir" "$sha" <<'PY' || fail "provenance as other tools read it"
+import json, sys, vtk, xml.dom.minidom
+d, sha = sys.argv[1], sys.argv[2]
+want = {"recipe": d + "/r.lua", "sha256": sha, "set": {"level": "5"}, "seed": 3}
+def check(p, name):
+    for k, v in want.items():
+        assert p[k] == v, (name, k, p[k], v)
+    assert p["name"] == name, (p["name"], name)
+r = vtk.vtkXMLPolyDataReader(); r.SetFileName(d + "/out/c.vtp"); r.Update()
+check(json.loads(r.GetOutput().GetFieldData().GetAbstractArray("selfsim_provenance").GetValue(0)), "c.vtp")
+svg = xml.dom.minidom.parse(d + "/out/c.svg")
+comments = [n for n in svg.documentElement.childNodes if n.nodeType == n.COMMENT_NODE]
+check(json.loads(comments[0].data.strip().split(" ", 1)[1]), "c.svg")
+check(json.load(open(d + "/out/s.stl.json")), "s.stl")
+PY
+
+# rerun: the same bytes, in a new folder.
+"$selfsim" rerun out/c.svg >out.txt 2>err.txt || fail "rerun c.svg: $(cat out.txt err.txt)"
+grep -qF "same bytes: rerun/c.svg is out/c.svg byte for byte" out.txt || fail "rerun message: $(cat out.txt)"
+"$selfsim" rerun out/s.3mf -o again >out.txt 2>err.txt || fail "rerun s.3mf: $(cat out.txt err.txt)"
+cmp -s again/s.3mf out/s.3mf || fail "rerun's s.3mf differs"
+"$selfsim" rerun out/s.stl >out.txt 2>err.txt || fail "rerun s.stl: $(cat out.txt err.txt)"
+grep -qF "rerun-2/s.stl" out.txt || fail "a second rerun takes a new folder: $(cat out.txt)"
+"$selfsim" rerun out/c.vtp -o again >out.txt 2>err.txt
+[ $? = 2 ] || fail "rerun into a folder that is not empty should exit 2"
+grep -qF "is not empty" err.txt || fail "non-empty folder message: $(cat err.txt)"
+# A changed recipe: a warning, and different bytes (its fingerprint is in the file).
+echo "-- changed" >>r.lua
+"$selfsim" rerun out/c.svg -o changed >out.txt 2>err.txt
+[ $? = 1 ] || fail "rerun of a changed recipe should exit 1"
+grep -qF "has changed since 'out/c.svg' was made" err.txt || fail "changed recipe warning: $(cat err.txt)"
+grep -qF "different: changed/c.svg differs from out/c.svg" out.txt || fail "changed recipe result: $(cat out.txt)"
+# A file with no record, and one whose recipe is gone.
+printf '<svg xmlns="http://www.w3.org/2000/svg"><path d="M0 0L1 1"/></svg>\n' >plain.svg
+"$selfsim" rerun plain.svg >/dev/null 2>err.txt
+[ $? = 2 ] || fail "rerun of a file with no record should exit 2"
+grep -qF "records no recipe" err.txt || fail "no record message: $(cat err.txt)"
+mv r.lua gone.lua
+"$selfsim" rerun out/c.svg -o g2 >/dev/null 2>err.txt
+[ $? = 2 ] || fail "rerun with the recipe gone should exit 2"
+grep -qF "which is not there any more" err.txt || fail "recipe gone message: $(cat err.txt)"
+
+echo "$failures failures"
+[ "$failures" = 0 ]

@@ -1,0 +1,32 @@
+#include "kernels/io/sha256.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+namespace selfsim::io {
+namespace {
+
+// FIPS 180-4's examples (NIST's "SHA256.pdf") and the empty string's well-known digest.
+TEST(Sha256, StandardExamples) {
+  EXPECT_EQ(sha256_hex(""), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  EXPECT_EQ(sha256_hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  EXPECT_EQ(sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
+            "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
+}
+
+// A million 'a's: many blocks, the length spilling into a second padding block at no boundary.
+TEST(Sha256, MillionA) {
+  EXPECT_EQ(sha256_hex(std::string(1000000, 'a')), "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+}
+
+// Lengths around the 55/56/64-byte padding edges give different digests (no two alike).
+TEST(Sha256, PaddingEdges) {
+  std::set<std::string> seen;
+  for (std::size_t n : {54, 55, 56, 57, 63, 64, 65, 119, 120})
+    EXPECT_TRUE(seen.insert(sha256_hex(std::string(n, 'x'))).second) << n;
+}
+
+}  // namespace
+}  // namespace selfsim::io
