@@ -192,13 +192,12 @@ int param(lua_State* L) {
     const std::string name = text_value(L, 1, "argument 1 (the parameter name)");
     ParamSpec spec = read_param_spec(L, name, 2, 3);
     spec.where = recipe_where(L);
-    const auto same =
-        std::find_if(run.params.begin(), run.params.end(), [&](const ParamSpec& p) { return p.name == name; });
-    if (same == run.params.end())
+    const auto [at, first] = run.param_index.try_emplace(name, run.params.size());
+    if (first)
       run.params.push_back(spec);
-    else if (!(*same == spec))
+    else if (const ParamSpec& same = run.params[at->second]; !(same == spec))
       throw Error("'" + name + "' is declared again with another default or annotation (first at " +
-                  same->where.substr(0, same->where.size() - 2) + ")");
+                  same.where.substr(0, same.where.size() - 2) + ")");
     run.used_params.insert(name);
     const auto it = run.config.sets.find(name);
     if (it == run.config.sets.end()) {

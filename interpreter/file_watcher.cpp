@@ -4,6 +4,7 @@
 #include <sys/inotify.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -42,8 +43,9 @@ FileWatcher::~FileWatcher() {
 
 void FileWatcher::add(const std::filesystem::path& folder, int depth) {
   if (!skip_.empty() && same_folder(folder, skip_)) return;
-  if (::inotify_add_watch(fd_, folder.c_str(), events | IN_ONLYDIR) < 0)
-    throw Error("cannot watch '" + folder.string() + "': " + std::strerror(errno));
+  const int wd = ::inotify_add_watch(fd_, folder.c_str(), events | IN_ONLYDIR);
+  if (wd < 0) throw Error("cannot watch '" + folder.string() + "': " + std::strerror(errno));
+  watched_[wd] = folder;
   if (depth >= 3) return;
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
@@ -63,6 +65,13 @@ std::string FileWatcher::drain() {
     for (ssize_t at = 0; at < n;) {
       const auto* e = reinterpret_cast<const inotify_event*>(buffer + at);
       at += static_cast<ssize_t>(sizeof(inotify_event) + e->len);
+      if (e->mask & IN_IGNORED) {  // the folder itself was deleted or moved away
+        if (const auto w = watched_.find(e->wd); w != watched_.end()) {
+          lost_.push_back(w->second);
+          watched_.erase(w);
+        }
+        continue;
+      }
       if (e->len == 0 || (e->mask & IN_ISDIR) || side_file(e->name)) continue;
       ((e->mask & (IN_MOVED_FROM | IN_DELETE)) ? gone : written) = e->name;
     }
@@ -80,14 +89,34 @@ std::string FileWatcher::take(std::chrono::milliseconds settle) {
   return changed;
 }
 
+bool FileWatcher::restore() {
+  bool back = false;
+  for (auto it = lost_.begin(); it != lost_.end();) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(*it, ec)) {
+      add(*it, 3);  // the folder alone: its subfolders come back with events of their own
+      it = lost_.erase(it);
+      back = true;
+    } else {
+      ++it;
+    }
+  }
+  return back;
+}
+
 std::string FileWatcher::wait(std::chrono::milliseconds timeout, std::chrono::milliseconds settle) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   for (;;) {
     const auto left =
         std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0) return {};
+    // A deleted folder cannot be watched until it is back (git checkout): look for it twice a second.
+    if (!lost_.empty() && restore()) return "(a watched folder, back)";
+    const long long wait_ms = lost_.empty() ? left.count() : std::min<long long>(left.count(), 500);
     pollfd p{fd_, POLLIN, 0};
-    if (::poll(&p, 1, static_cast<int>(left.count())) <= 0) return {};  // timeout, or a signal: the caller asks why
+    const int r = ::poll(&p, 1, static_cast<int>(wait_ms));
+    if (r < 0) return {};  // a signal: the caller asks why
+    if (r == 0) continue;
     if (std::string changed = take(settle); !changed.empty()) return changed;
   }
 }

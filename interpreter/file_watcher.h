@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -37,8 +38,12 @@ class FileWatcher {
   void add(const std::filesystem::path& folder, int depth);
   std::string drain();  // the first counted change among the pending events, or empty
 
+  bool restore();  // watches again the folders that were deleted, where they exist again
+
   int fd_ = -1;
   std::filesystem::path skip_;
+  std::map<int, std::filesystem::path> watched_;  // by watch descriptor
+  std::vector<std::filesystem::path> lost_;       // deleted or moved away (git checkout may bring them back)
 };
 
 // Whether an editor's side file (hidden, backup, swap, vim's "4913" probe) rather than a source.

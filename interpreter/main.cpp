@@ -125,6 +125,9 @@ int main(int argc, char** argv) {
       return rerun_command(file, out);
     }
     if (command == "params") {
+      for (const std::string& a : rest)
+        if (a == "-o" || a == "--output" || a == "--jobs" || a == "--watch" || a == "--view-folder")
+          throw UsageError("params builds and writes nothing: " + a + " is for run");
       RunConfig config = parse_run_arguments(rest);
       config.params_only = true;
       config.quiet = true;

@@ -1,6 +1,7 @@
 #include "interpreter/param_spec.h"
 
 #include <cmath>
+#include <set>
 
 #include "interpreter/options_reader.h"
 #include "interpreter/parse_text.h"
@@ -42,6 +43,7 @@ std::string choices_text(const std::vector<std::string>& choices) {
 
 std::vector<std::string> read_choices(lua_State* L, Options& o, const std::string& name) {
   std::vector<std::string> choices;
+  std::set<std::string> seen;
   if (o.push("choices") != LUA_TTABLE) {
     lua_pop(L, 1);
     throw Error("choices of '" + name + "' must be a list of strings, got " + describe(L, -1));
@@ -53,8 +55,7 @@ std::vector<std::string> read_choices(lua_State* L, Options& o, const std::strin
       throw Error("choices of '" + name + "': entry " + std::to_string(i) + " must be a string, got " +
                   describe(L, -1));
     std::string c = text_value(L, -1, "choice " + std::to_string(i) + " of '" + name + "'");
-    for (const std::string& earlier : choices)
-      if (earlier == c) throw Error("choices of '" + name + "' name '" + c + "' twice");
+    if (!seen.insert(c).second) throw Error("choices of '" + name + "' name '" + c + "' twice");
     choices.push_back(std::move(c));
     lua_pop(L, 1);
   }
@@ -75,7 +76,7 @@ ParamSpec read_param_spec(lua_State* L, const std::string& name, int def, int op
         s.default_text = std::to_string(lua_tointeger(L, def));
       } else {
         s.type = ParamSpec::Type::number;
-        s.default_text = number_text(finite_number(L, def, "the default of '" + name + "'"));
+        s.default_text = io::json_number(finite_number(L, def, "the default of '" + name + "'"));
       }
       break;
     case LUA_TSTRING:
@@ -161,9 +162,9 @@ std::string params_json(const std::vector<ParamSpec>& specs) {
     s += i == 0 ? "\n" : ",\n";
     s += "  {\"name\": " + json_string(p.name) + ", \"type\": \"" + type_name(p.type) + "\", \"default\": ";
     s += p.type == ParamSpec::Type::string ? json_string(p.default_text) : p.default_text;
-    if (p.min) s += ", \"min\": " + number_text(*p.min);
-    if (p.max) s += ", \"max\": " + number_text(*p.max);
-    if (p.step) s += ", \"step\": " + number_text(*p.step);
+    if (p.min) s += ", \"min\": " + io::json_number(*p.min);
+    if (p.max) s += ", \"max\": " + io::json_number(*p.max);
+    if (p.step) s += ", \"step\": " + io::json_number(*p.step);
     if (!p.choices.empty()) {
       s += ", \"choices\": [";
       for (std::size_t c = 0; c < p.choices.size(); ++c) s += (c ? ", " : "") + json_string(p.choices[c]);

@@ -10,6 +10,7 @@
 #include "interpreter/commands.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/spawn_selfsim.h"
+#include "interpreter/sweep_plan.h"
 #include "kernels/geom/error.h"
 #include "kernels/io/provenance.h"
 #include "kernels/io/sha256.h"
@@ -56,7 +57,7 @@ int rerun_command(const std::string& file, const std::string& out) {
     std::fprintf(stderr, "selfsim: note: '%s' was made by selfsim %s; this is %s\n", shown_text(file).c_str(),
                  shown_text(p->version, 40).c_str(), SELFSIM_VERSION);
   std::vector<std::string> args{"run", p->recipe, "-o", folder.string()};
-  for (const auto& [k, v] : p->sets) args.insert(args.end(), {"--set", k + "=" + v});
+  for (const auto& [k, v] : p->sets) args.insert(args.end(), {"--set", k + "=" + escaped_value(v)});
   args.insert(args.end(), {"--seed", std::to_string(p->seed), "-q"});
   std::printf("%s\n", shell_command(args).c_str());
   std::fflush(stdout);

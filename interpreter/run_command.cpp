@@ -15,6 +15,7 @@
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
 #include "interpreter/sandbox.h"
+#include "interpreter/spawn_selfsim.h"
 #include "interpreter/sweep.h"
 #include "interpreter/watchdog.h"
 #include "kernels/io/json_text.h"
@@ -161,6 +162,12 @@ int print_params(const RunContext& run, const std::string& stopped_at) {
   return 0;
 }
 
+// The run's --set values with their escapes undone ("a\\,b" is the one value "a,b"; sweep_plan.h).
+RunConfig with_plain_values(RunConfig c) {
+  for (auto& [key, value] : c.sets) value = sweep_values(key, value).front();
+  return c;
+}
+
 }  // namespace
 
 void check_sweep_params(const RunConfig& sweep, const SweepPlan& plan) {
@@ -172,17 +179,15 @@ void check_sweep_params(const RunConfig& sweep, const SweepPlan& plan) {
   if (config.timeout == 0) config.timeout = 30;
   RunContext run(config);
   run.scripts_dir = find_scripts_dir();
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, on_interrupt);
+  // A finalizer that loops runs with hooks off, where only the watchdog can stop it.
+  const Watchdog watchdog(run, config.recipe.string());
   lua_State* L = new_sandbox(run);
   if (L == nullptr) throw Error("cannot create a Lua state (out of memory)");
   const int status = run_recipe(L, run);
   const std::string message = status == LUA_OK ? std::string() : failure_message(L, run, status);
-  const bool timed_out = !run.stop_reason().empty();
   lua_close(L);
   const bool complete = status == LUA_OK;
-  if (timed_out && sweep.timeout == 0)
-    throw Error(message.substr(0, message.find(": ") + 2) +
-                "reading the recipe's parameters took over 30 s (a long Lua loop before its first heavy step?); "
-                "declare the parameters first");
   if (!complete && !message.ends_with(params_stop)) throw Error(message);
   std::vector<std::string> names;
   for (const ParamSpec& p : run.params) names.push_back(p.name);
@@ -204,13 +209,15 @@ void check_sweep_params(const RunConfig& sweep, const SweepPlan& plan) {
   }
 }
 
-int run_command(const RunConfig& config) {
-  if (config.watch) return watch_command(config);
-  if (is_sweep(config.sets)) {
+int run_command(const RunConfig& given) {
+  if (is_sweep(given.sets)) {
+    if (given.params_only) throw UsageError("params reads one run's parameters: give each --set one value");
     SweepConfig sweep;
-    sweep.run = config;
+    sweep.run = given;
     return sweep_command(sweep);
   }
+  const RunConfig config = with_plain_values(given);
+  if (config.watch) return watch_command(config);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(config.recipe, ec))
     throw UsageError("cannot open recipe '" + config.recipe.string() + "'" +
@@ -218,6 +225,7 @@ int run_command(const RunConfig& config) {
   RunContext run(config);
   run.scripts_dir = find_scripts_dir();
   for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, on_interrupt);  // stop cleanly: no partial files
+  stop_with_parent();
   const Watchdog watchdog(run, config.recipe.string());
   // --threads bounds every parallel kernel of the run; results never depend on it (DESIGN.md, Threads).
   std::optional<tbb::global_control> threads;

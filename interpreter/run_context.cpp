@@ -58,6 +58,9 @@ std::string RunContext::stop_reason() const {
       std::chrono::steady_clock::now() - started_ > std::chrono::duration<double>(config.timeout)) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%g", config.timeout);
+    if (config.params_only)  // `selfsim params`, or a sweep reading the parameters first
+      return std::string("stopped: reading the recipe's parameters took over ") + buf +
+             " s (a long Lua loop before its first heavy step, or in a finalizer?)";
     return std::string("stopped: --timeout of ") + buf + " s reached";
   }
   return {};

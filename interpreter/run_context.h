@@ -53,16 +53,17 @@ class RunContext : public Progress {
   explicit RunContext(RunConfig c);
 
   const RunConfig config;
-  std::filesystem::path scripts_dir;  // the DSL's own library (require "selfsim.curves")
-  std::set<std::string> used_params;  // --set keys that param() read
-  std::vector<ParamSpec> params;      // the parameters declared, in order (param_spec.h)
-  std::string recipe_sha256;          // of the recipe's bytes, read at the first save (save_support.cpp)
-  double held_points = 0;             // points held by live values (curves), against --max-points
-  bool ended = false;                 // the recipe has returned or failed: nothing more may be written
-  std::atomic<bool> reported{false};  // the run's error line is printed: the watchdog adds none
-  LuaMemory memory;                   // the Lua state's allocator and its --max-memory limit
-  LiveValues values;                  // the C++ values the recipe's Lua values stand for
-  std::string pending_warning;        // a warning Lua is still sending in pieces
+  std::filesystem::path scripts_dir;               // the DSL's own library (require "selfsim.curves")
+  std::set<std::string> used_params;               // --set keys that param() read
+  std::vector<ParamSpec> params;                   // the parameters declared, in order (param_spec.h)
+  std::map<std::string, std::size_t> param_index;  // their places in params, by name
+  std::string recipe_sha256;                       // of the recipe's bytes, read at the first save (save_support.cpp)
+  double held_points = 0;                          // points held by live values (curves), against --max-points
+  bool ended = false;                              // the recipe has returned or failed: nothing more may be written
+  std::atomic<bool> reported{false};               // the run's error line is printed: the watchdog adds none
+  LuaMemory memory;                                // the Lua state's allocator and its --max-memory limit
+  LiveValues values;                               // the C++ values the recipe's Lua values stand for
+  std::string pending_warning;                     // a warning Lua is still sending in pieces
   // The files save() has written in this run (bind_io.cpp): by their name inside the output folder, made
   // lexically normal, the name as written and the recipe location ("dragon.lua:3: ") that wrote it; and
   // by their identity (device, inode), the normal name, for names that differ but open the same file.

@@ -14,6 +14,13 @@ namespace selfsim::interp {
 // truncated, never through a link) or, when `log` is empty, where ours go. Returns its pid; throws Error.
 pid_t spawn_selfsim(const std::string& exe, const std::vector<std::string>& args, const std::filesystem::path& log);
 
+// The environment variable that tells a child whose parent it should stop with.
+inline constexpr const char* stop_with_variable = "SELFSIM_STOP_WITH";
+
+// In a child started by spawn_selfsim: asks the kernel for SIGTERM when the parent dies (a sweep or
+// --watch killed by SIGKILL must not leave its runs going). Call after the SIGTERM handler is installed.
+void stop_with_parent();
+
 // A child's exit code as a shell reports it: its exit status, or 128 + the signal that ended it.
 int exit_code(int wait_status);
 

@@ -35,6 +35,10 @@ void check_sweep_params(const RunConfig& run, const SweepPlan& plan);
 std::vector<std::string> run_arguments(const RunConfig& run, const SweepRun& one, const std::filesystem::path& dir,
                                        int threads);
 
+// Refuses, before anything starts, a link or a file where one of the sweep's folders goes, and a job list
+// or Slurm script named like a file of the sweep's own. Throws UsageError.
+void check_sweep_folders(const SweepConfig& config, const SweepPlan& plan);
+
 // Writes the job list and/or the Slurm scripts into the output folder and says how to run them.
 int write_job_lists(const SweepConfig& config, const SweepPlan& plan, const std::string& exe);
 

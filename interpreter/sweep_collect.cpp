@@ -16,6 +16,7 @@
 #include "kernels/geom/lower_case.h"
 #include "kernels/io/output_file.h"
 #include "kernels/io/series_file.h"
+#include "kernels/io/utf8.h"
 #include "kernels/io/xml_text.h"
 
 namespace selfsim::interp {
@@ -48,6 +49,15 @@ std::string url_path(const std::string& path) {
   return s;
 }
 
+// Text for the sheet's XML: control characters, and every byte above 127 of text that is not UTF-8,
+// become '?' (XML allows neither), then the markup characters are escaped.
+std::string svg_text(const std::string& text) {
+  const bool utf8 = io::valid_utf8(text);
+  std::string s;
+  for (unsigned char c : text) s += c < 0x20 || (c >= 0x80 && !utf8) ? '?' : static_cast<char>(c);
+  return io::xml_escaped(s);
+}
+
 // Columns of a sheet: one per value of the last key when two keys vary (a true grid), else about square.
 std::size_t sheet_columns(const SweepPlan& plan) {
   if (plan.keys.size() == 2) {
@@ -73,7 +83,7 @@ std::string sheet_svg(const SweepPlan& plan, const std::string& title, const std
       std::to_string(width) + "\" height=\"" + std::to_string(height) + "\" viewBox=\"0 0 " + std::to_string(width) +
       " " + std::to_string(height) + "\" font-family=\"sans-serif\">\n" +
       "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"" + std::to_string(gap) +
-      "\" y=\"26\" font-size=\"16\">" + io::xml_escaped(title) + "</text>\n";
+      "\" y=\"26\" font-size=\"16\">" + svg_text(title) + "</text>\n";
   for (std::size_t i = 0; i < plan.runs.size(); ++i) {
     const int x = gap + static_cast<int>(i % columns) * (cell + gap);
     const int y = top + static_cast<int>(i / columns) * (cell + caption + gap);
@@ -86,10 +96,10 @@ std::string sheet_svg(const SweepPlan& plan, const std::string& title, const std
            href + "\" xlink:href=\"" + href + "\" preserveAspectRatio=\"xMidYMid meet\"/>\n";
     } else {
       s += "<text x=\"" + std::to_string(x + cell / 2) + "\" y=\"" + std::to_string(y + cell / 2) +
-           "\" font-size=\"14\" text-anchor=\"middle\" fill=\"#b00\">" + io::xml_escaped(notes[i]) + "</text>\n";
+           "\" font-size=\"14\" text-anchor=\"middle\" fill=\"#b00\">" + svg_text(notes[i]) + "</text>\n";
     }
     s += "<text x=\"" + std::to_string(x + cell / 2) + "\" y=\"" + std::to_string(y + cell + 17) +
-         "\" font-size=\"13\" text-anchor=\"middle\">" + io::xml_escaped(plan.runs[i].caption) + "</text>\n";
+         "\" font-size=\"13\" text-anchor=\"middle\">" + svg_text(plan.runs[i].caption) + "</text>\n";
   }
   return s + "</svg>\n";
 }
@@ -120,9 +130,13 @@ std::vector<double> series_times(const SweepPlan& plan) {
 std::vector<int> read_exit_codes(const std::filesystem::path& out, const SweepPlan& plan) {
   std::vector<int> codes;
   for (const SweepRun& run : plan.runs) {
-    std::ifstream in(out / run.folder / "selfsim.exit");
+    const std::filesystem::path file = out / run.folder / "selfsim.exit";
+    std::error_code ec;
     int code = -1;
-    if (!(in >> code)) code = -1;
+    if (std::filesystem::is_regular_file(std::filesystem::symlink_status(file, ec))) {  // never a FIFO or link
+      std::ifstream in(file);
+      if (!(in >> code)) code = -1;
+    }
     codes.push_back(code);
   }
   return codes;
@@ -153,6 +167,11 @@ int collect_sweep(const SweepConfig& c, const SweepPlan& plan, const std::vector
   for (const std::string& k : plan.keys) swept += (swept.empty() ? "" : " × ") + k;
   const std::string recipe = c.run.recipe.filename().string();
   std::vector<std::string> written;
+  // Two outputs whose sheets would share a name (a.vtp.svg and a.vtp): the second takes its other name.
+  std::set<std::string> taken;
+  auto unique = [&](const std::string& name, const std::string& other) {
+    return taken.insert(name).second ? name : (taken.insert(other), other);
+  };
 
   // Sheets of SVG results, and the previews 3D results need (one display for all of them).
   std::set<std::string> svg_stems;
@@ -170,7 +189,7 @@ int collect_sweep(const SweepConfig& c, const SweepPlan& plan, const std::vector
     if (ext == ".svg") {
       for (std::size_t i = 0; i < n; ++i)
         if (have[i]) images[i] = plan.runs[i].folder + "/" + leaf;
-      const std::string sheet = "sheet_" + p.stem().string() + ".svg";
+      const std::string sheet = unique("sheet_" + p.stem().string() + ".svg", "sheet_" + leaf + ".svg");
       write_text(out, sheet, sheet_svg(plan, recipe + ": " + leaf + " over " + swept, images, notes));
       written.push_back(sheet);
     } else if (previewable(ext) && !svg_stems.contains(p.stem().string())) {
@@ -197,7 +216,7 @@ int collect_sweep(const SweepConfig& c, const SweepPlan& plan, const std::vector
         else if (have[i])
           cell_notes[i] = "no preview";
       }
-      const std::string sheet = "sheet_" + leaf + ".svg";
+      const std::string sheet = unique("sheet_" + leaf + ".svg", "sheet_" + leaf + "_preview.svg");
       write_text(out, sheet, sheet_svg(plan, recipe + ": " + leaf + " over " + swept, images, cell_notes));
       written.push_back(sheet);
     }

@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -29,6 +30,12 @@ namespace selfsim::interp {
 namespace {
 
 extern "C" void on_sweep_signal(int) { interrupted.store(true); }
+
+// "exit 1", or "killed by signal 9 (Killed)" for a run a signal ended.
+std::string exit_text(int code) {
+  if (code <= 128) return "exit " + std::to_string(code);
+  return "killed by signal " + std::to_string(code - 128) + " (" + strsignal(code - 128) + ")";
+}
 
 // The first line of a failed run's log: its error.
 std::string first_line(const std::filesystem::path& log) {
@@ -73,6 +80,9 @@ std::vector<int> run_all(const SweepConfig& c, const SweepPlan& plan, int jobs) 
   const std::string exe = selfsim_executable();
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   const int threads = c.run.threads > 0 ? c.run.threads : std::max(1, cores / jobs);
+  // N runs at once share the machine: each may hold its share of the default --max-memory.
+  RunConfig each = c.run;
+  if (each.max_memory == 0) each.max_memory = std::max(256.0 * (1 << 20), default_max_memory() / jobs);
   struct sigaction sa {};
   sa.sa_handler = on_sweep_signal;  // no SA_RESTART: waitpid returns at Ctrl-C
   for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaction(sig, &sa, nullptr);
@@ -84,9 +94,11 @@ std::vector<int> run_all(const SweepConfig& c, const SweepPlan& plan, int jobs) 
   while (done < n && !(interrupted.load() && live.empty())) {
     while (!interrupted.load() && live.size() < static_cast<std::size_t>(jobs) && next < n) {
       const SweepRun& run = plan.runs[next];
+      // The folder is the run's alone: what an earlier sweep left there must not reach this one's sheets.
+      std::filesystem::remove_all(out / run.folder);
       std::filesystem::create_directories(out / run.folder);
       const pid_t pid =
-          spawn_selfsim(exe, run_arguments(c.run, run, out / run.folder, threads), out / run.folder / "selfsim.log");
+          spawn_selfsim(exe, run_arguments(each, run, out / run.folder, threads), out / run.folder / "selfsim.log");
       live[pid] = {next++, std::chrono::steady_clock::now()};
     }
     if (live.empty()) break;
@@ -110,15 +122,40 @@ std::vector<int> run_all(const SweepConfig& c, const SweepPlan& plan, int jobs) 
     if (code == 0) {
       if (!c.run.quiet) std::printf("[%zu/%zu] %s: ok (%.2f s)\n", done, n, shown_text(run.caption).c_str(), seconds);
     } else if (!interrupted.load()) {
-      std::fprintf(stderr, "[%zu/%zu] %s: failed (exit %d): %s\n", done, n, shown_text(run.caption).c_str(), code,
-                   first_line(out / run.folder / "selfsim.log").c_str());
+      std::fprintf(stderr, "[%zu/%zu] %s: failed (%s): %s\n", done, n, shown_text(run.caption).c_str(),
+                   exit_text(code).c_str(), first_line(out / run.folder / "selfsim.log").c_str());
     }
     std::fflush(stdout);
   }
   return codes;
 }
 
+
 }  // namespace
+
+void check_sweep_folders(const SweepConfig& c, const SweepPlan& plan) {
+  const std::filesystem::path& out = c.run.out_dir;
+  std::vector<std::string> ours{"previews", "slurm"};
+  for (const SweepRun& run : plan.runs) ours.push_back(run.folder);
+  // A link where a folder of the sweep goes would lead its writes out of the output folder; a file there
+  // would stop the sweep halfway. Both are refused before anything starts.
+  for (const std::string& name : ours) {
+    std::error_code ec;
+    const auto st = std::filesystem::symlink_status(out / name, ec);
+    if (std::filesystem::is_symlink(st))
+      throw UsageError("'" + (out / name).string() + "' is a link: a sweep writes only inside its output folder");
+    if (std::filesystem::exists(st) && !std::filesystem::is_directory(st))
+      throw UsageError("'" + (out / name).string() + "' is a file where the sweep's folder goes");
+  }
+  for (const std::string* file : {&c.jobs_file, &c.slurm}) {
+    if (file->empty()) continue;
+    const bool taken = *file == "sweep.json" || *file == "." || *file == ".." ||
+                       std::find(ours.begin(), ours.end(), *file) != ours.end() || file->starts_with("sheet_") ||
+                       (file == &c.jobs_file && (*file == c.slurm || *file == "collect-" + c.slurm)) ||
+                       (file == &c.slurm && c.jobs_file.empty() && *file == "jobs.txt");
+    if (taken) throw UsageError("'" + *file + "' is a name the sweep uses itself: give the job list another name");
+  }
+}
 
 std::string selfsim_executable() {
   std::error_code ec;
@@ -129,12 +166,18 @@ std::string selfsim_executable() {
 
 int sweep_command(const SweepConfig& c) {
   const SweepPlan plan = plan_sweep(c.run.sets);
-  check_sweep_params(c.run, plan);
   const std::filesystem::path& out = c.run.out_dir;
+  if (c.collect_only) {  // reads what the runs left; writes only the sheets and series
+    std::error_code ec;
+    if (!std::filesystem::is_directory(out, ec))
+      throw UsageError("--collect: no sweep in '" + out.string() + "' (not a folder)");
+    return collect_sweep(c, plan, read_exit_codes(out, plan));
+  }
+  check_sweep_params(c.run, plan);
+  check_sweep_folders(c, plan);
   std::filesystem::create_directories(out);
   write_text(out, "sweep.json", manifest(c, plan));
   if (!c.jobs_file.empty() || !c.slurm.empty()) return write_job_lists(c, plan, selfsim_executable());
-  if (c.collect_only) return collect_sweep(c, plan, read_exit_codes(out, plan));
 
   const int jobs = c.run.jobs > 0 ? c.run.jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   if (!c.run.quiet)

@@ -42,7 +42,7 @@ void write_file(const std::filesystem::path& out, const std::string& name, const
 std::vector<std::string> run_arguments(const RunConfig& r, const SweepRun& run, const std::filesystem::path& dir,
                                        int threads) {
   std::vector<std::string> a{"run", r.recipe.string(), "-o", dir.string()};
-  for (const auto& [key, value] : run.sets) a.insert(a.end(), {"--set", key + "=" + value});
+  for (const auto& [key, value] : run.sets) a.insert(a.end(), {"--set", key + "=" + escaped_value(value)});
   if (r.max_points != default_max_points) a.insert(a.end(), {"--max-points", number_text(r.max_points)});
   if (r.max_memory > 0) a.insert(a.end(), {"--max-memory", number_text(r.max_memory)});
   if (r.timeout > 0) a.insert(a.end(), {"--timeout", number_text(r.timeout)});
@@ -65,8 +65,9 @@ int write_job_lists(const SweepConfig& c, const SweepPlan& plan, const std::stri
     std::vector<std::string> a = run_arguments(absolute.run, run, dir, threads);
     a.insert(a.begin(), exe);
     // The run's messages go to its log and its exit code beside them, which --collect reads.
-    jobs += "mkdir -p " + shell_word(dir) + " && " + words(a) + " >" + shell_word(dir + "/selfsim.log") +
-            " 2>&1; echo $? >" + shell_word(dir + "/selfsim.exit") + "\n";
+    // As in a local sweep, the folder is the run's alone: an earlier sweep's files are removed first.
+    jobs += "rm -rf " + shell_word(dir) + " && mkdir -p " + shell_word(dir) + " && " + words(a) + " >" +
+            shell_word(dir + "/selfsim.log") + " 2>&1; echo $? >" + shell_word(dir + "/selfsim.exit") + "\n";
   }
   const std::string list = c.jobs_file.empty() ? "jobs.txt" : c.jobs_file;
   write_file(out, list, jobs);

@@ -1,8 +1,10 @@
 #include "interpreter/sweep_plan.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <set>
+#include <string_view>
 
 #include "interpreter/parse_text.h"
 #include "kernels/geom/count_text.h"
@@ -18,22 +20,42 @@ std::string twelve_digits(double v) {
   return buf;
 }
 
-std::vector<std::string> list_values(const std::string& key, const std::string& text) {
-  std::vector<std::string> values(1);
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] == '\\' && i + 1 < text.size() && text[i + 1] == ',') {
-      values.back() += ',';
-      ++i;
-    } else if (text[i] == ',') {
-      values.emplace_back();
-    } else {
-      values.back() += text[i];
+// The text of a --set value with its backslash escapes marked: backslash-comma is a comma, backslash-dot a
+// dot and two backslashes one backslash, none of which splits a list or makes a range.
+struct Marked {
+  std::string text;
+  std::vector<bool> escaped;  // per character of text
+
+  explicit Marked(const std::string& raw) {
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+      // Only those three are escapes; any other backslash is itself (a Windows path stays whole).
+      const bool esc =
+          raw[i] == '\\' && i + 1 < raw.size() && std::string_view(",.\\").find(raw[i + 1]) != std::string_view::npos;
+      text += raw[esc ? ++i : i];
+      escaped.push_back(esc);
     }
+  }
+  bool plain(std::size_t i, char c) const { return i < text.size() && text[i] == c && !escaped[i]; }
+  // The first unescaped `c` (or "..") at or after `from`.
+  std::size_t find(char c, std::size_t from = 0, bool twice = false) const {
+    for (std::size_t i = from; i < text.size(); ++i)
+      if (plain(i, c) && (!twice || plain(i + 1, c))) return i;
+    return std::string::npos;
+  }
+};
+
+std::vector<std::string> list_values(const std::string& key, const std::string& raw, const Marked& m) {
+  std::vector<std::string> values;
+  for (std::size_t begin = 0;;) {
+    const std::size_t comma = m.find(',', begin);
+    values.push_back(m.text.substr(begin, comma == std::string::npos ? std::string::npos : comma - begin));
+    if (comma == std::string::npos) break;
+    begin = comma + 1;
   }
   std::set<std::string> seen;
   for (const std::string& v : values) {
-    if (v.empty()) throw Error("--set " + key + "=" + text + ": an empty value in the list");
-    if (!seen.insert(v).second) throw Error("--set " + key + "=" + text + ": '" + v + "' is listed twice");
+    if (v.empty()) throw Error("--set " + key + "=" + raw + ": an empty value in the list");
+    if (!seen.insert(v).second) throw Error("--set " + key + "=" + raw + ": '" + v + "' is listed twice");
   }
   return values;
 }
@@ -50,25 +72,29 @@ std::string folder_piece(const std::string& text) {
 
 std::vector<std::string> sweep_values(const std::string& key, const std::string& text) {
   const std::string set = "--set " + key + "=" + text + ": ";
-  const std::size_t dots = text.find("..");
+  const Marked m(text);
+  const std::size_t dots = m.find('.', 0, true);
   if (dots != std::string::npos && dots > 0) {
-    const std::string from = text.substr(0, dots);
-    std::string to = text.substr(dots + 2), by;
-    if (const std::size_t colon = to.find(':'); colon != std::string::npos) {
-      by = to.substr(colon + 1);
-      to = to.substr(0, colon);
-    }
+    const std::string from = m.text.substr(0, dots);
+    const std::size_t colon = m.find(':', dots + 2);
+    const std::string to = m.text.substr(dots + 2, colon == std::string::npos ? std::string::npos : colon - dots - 2);
+    const std::string by = colon == std::string::npos ? std::string() : m.text.substr(colon + 1);
     const auto a = parse_text<double>(from), b = parse_text<double>(to);
     if (a && b) {
       if (*b < *a) throw Error(set + "the range runs down; write it from " + to + " to " + from);
-      if (by.empty()) {
+      if (colon == std::string::npos) {
         const auto wa = parse_text<long long>(from), wb = parse_text<long long>(to);
         if (!wa || !wb) throw Error(set + "a range of fractions needs a step, e.g. " + from + ".." + to + ":0.1");
-        if (static_cast<double>(*wb - *wa) >= max_sweep_runs)
-          throw Error(set + "that is " + count_text(static_cast<double>(*wb - *wa) + 1) + " values; at most " +
+        // In whole numbers (doubles cannot tell 2^63 - 8 from 2^63 - 1), counted rather than stepped to the
+        // end: an end at the largest integer must not wrap around.
+        if (*wb < *wa) throw Error(set + "the range runs down; write it from " + to + " to " + from);
+        const unsigned long long span = static_cast<unsigned long long>(*wb) - static_cast<unsigned long long>(*wa);
+        if (span >= max_sweep_runs)
+          throw Error(set + "that is " + count_text(static_cast<double>(span) + 1) + " values; at most " +
                       std::to_string(max_sweep_runs));
         std::vector<std::string> values;
-        for (long long v = *wa; v <= *wb; ++v) values.push_back(std::to_string(v));
+        for (unsigned long long i = 0; i <= span; ++i)
+          values.push_back(std::to_string(static_cast<long long>(static_cast<unsigned long long>(*wa) + i)));
         return values;
       }
       const auto step = parse_text<double>(by);
@@ -80,15 +106,28 @@ std::vector<std::string> sweep_values(const std::string& key, const std::string&
       std::vector<std::string> values;
       std::set<std::string> seen;
       for (int i = 0; i <= static_cast<int>(steps); ++i) {
-        values.push_back(twelve_digits(*a + i * *step));
+        double v = *a + i * *step;
+        if (std::abs(v) < 1e-9 * *step) v = 0;  // -0.3 + 3 * 0.1 is 5.6e-17: the 0 it means
+        values.push_back(twelve_digits(v));
         if (!seen.insert(values.back()).second)
           throw Error(set + "the step is too small to tell values apart at 12 digits");
       }
       return values;
     }
   }
-  if (text.find(',') != std::string::npos) return list_values(key, text);
-  return {text};
+  if (m.find(',') != std::string::npos) return list_values(key, text, m);
+  return {m.text};
+}
+
+std::string escaped_value(const std::string& value) {
+  std::string s;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const char c = value[i];
+    // A dot only after a dot (1..3 as 1.\.3): plain numbers stay as they read.
+    if (c == ',' || c == '\\' || (c == '.' && i > 0 && value[i - 1] == '.')) s += '\\';
+    s += c;
+  }
+  return s;
 }
 
 bool is_sweep(const std::map<std::string, std::string>& sets) {

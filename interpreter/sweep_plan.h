@@ -13,11 +13,15 @@ namespace selfsim::interp {
 inline constexpr std::size_t max_sweep_runs = 10000;
 
 // The values one --set gives: "4..10" (whole numbers, step 1), "0.3..0.9:0.1" (a range with a step; the
-// end is included when the steps reach it to within rounding), "a,b,c" (a list; "\," is a comma inside a
-// value) or one plain value. Range values are written to 12 significant digits, so 0.1 * 3 reads "0.3".
-// Throws Error naming the key: a range that runs down or has no whole-number ends without a step, a step
-// that is not > 0, an empty or repeated list item, more than max_sweep_runs values.
+// end is included when the steps reach it to within rounding), "a,b,c" (a list) or one plain value. A
+// backslash takes the next character as it is: "\," is a comma inside a value, "1\.\.3" the text 1..3. Range values are
+// written to 12 significant digits, so 0.1 * 3 reads "0.3". Throws Error naming the key: a range that runs down or has
+// no whole-number ends without a step, a step that is not > 0, an empty or repeated list item, more than max_sweep_runs
+// values.
 std::vector<std::string> sweep_values(const std::string& key, const std::string& text);
+
+// A value written so that sweep_values reads it back as that one value (for a run's own --set).
+std::string escaped_value(const std::string& value);
 
 // Whether any --set gives more than one value (the run is a sweep).
 bool is_sweep(const std::map<std::string, std::string>& sets);

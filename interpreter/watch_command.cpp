@@ -89,7 +89,19 @@ int watch_command(const RunConfig& config) {
   sa.sa_handler = on_watch_signal;  // no SA_RESTART: poll returns at Ctrl-C
   for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaction(sig, &sa, nullptr);
 
+  // The recipe's folder, and the folder of the file it links to: an edit there is a change too.
   std::vector<std::filesystem::path> folders{std::filesystem::absolute(config.recipe).parent_path()};
+  std::error_code ec;
+  const std::filesystem::path real = std::filesystem::canonical(config.recipe, ec).parent_path();
+  if (!ec && !std::filesystem::equivalent(real, folders[0], ec)) folders.push_back(real);
+  // The runs' own writes must not count as changes: the output folder may not hold the recipe.
+  const std::filesystem::path real_out = std::filesystem::canonical(out, ec);
+  for (const std::filesystem::path& f : folders) {
+    const std::string inside = std::filesystem::canonical(f, ec).string() + "/";
+    if ((real_out.string() + "/").size() <= inside.size() && inside.starts_with(real_out.string() + "/"))
+      throw UsageError("--watch: the output folder '" + out.string() +
+                       "' holds the recipe; its writes would count as changes (choose another -o)");
+  }
   const char* scripts = std::getenv("SELFSIM_SCRIPTS");
   folders.emplace_back(scripts ? scripts : SELFSIM_SCRIPTS_DIR);
   FileWatcher watcher(folders, out);

@@ -2,20 +2,25 @@
 // (ParaView's .series, `selfsim params`, a sweep's manifest).
 #pragma once
 
+#include <charconv>
 #include <cstdio>
 #include <string>
 #include <string_view>
 
+#include "kernels/io/utf8.h"
+
 namespace selfsim::io {
 
-// JSON string content: quotes, backslashes and control characters escaped; other bytes (UTF-8) as they are.
+// JSON string content: quotes, backslashes and control characters escaped; other bytes as they are when
+// the text is UTF-8, else each byte above 127 as the character of that number (JSON must be UTF-8).
 inline std::string json_escaped(std::string_view text) {
+  const bool utf8 = valid_utf8(std::string(text));
   std::string out;
   for (unsigned char c : text) {
     if (c == '"' || c == '\\') {
       out += '\\';
       out += static_cast<char>(c);
-    } else if (c < 0x20) {
+    } else if (c < 0x20 || (c >= 0x80 && !utf8)) {
       char buffer[8];
       std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
       out += buffer;
@@ -24,6 +29,13 @@ inline std::string json_escaped(std::string_view text) {
     }
   }
   return out;
+}
+
+// A number as JSON: the shortest text that reads back to the same double ("0.30000000000000004", "1e-07").
+inline std::string json_number(double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
 }
 
 // The string as a quoted JSON string.
