@@ -62,5 +62,13 @@ grep -qF "bad.lua:1: param: 'a': the default 1 is outside its range: it must be 
   fail "bad annotation message: $(cat "$tmp/err")"
 [ -s "$tmp/o.txt" ] && fail "params printed JSON for a failed recipe"
 
+# params builds and writes nothing: a sweep, --watch, -o and --jobs are refused.
+for args in "--set level=1..3" "--watch" "-o elsewhere" "--jobs 2"; do
+  # shellcheck disable=SC2086
+  "$selfsim" params r.lua $args >/dev/null 2>"$tmp/err"
+  [ $? = 2 ] || fail "params $args should be a usage error"
+done
+[ -e "$tmp/elsewhere" ] || [ -e "$tmp/out" ] && fail "params made a folder"
+
 echo "$failures failures"
 [ "$failures" = 0 ]

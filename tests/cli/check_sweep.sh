@@ -98,6 +98,29 @@ assert got == want, got
 assert runs[0]["folder"] == "factor=0.3,title=a_b", runs[0]["folder"]
 PY
 
+# An escaped comma reaches the run as part of its one value; an escaped ".." is text, not a range.
+printf 'local m = param("m", "a")\nprint("m=[" .. m .. "]")\nsave(polyline({ { 0, 0 }, { 1, 1 } }), "p.svg")\n' >m.lua
+"$selfsim" run m.lua -o ew --set 'm=a\,b,1\.\.3' -q || fail "escaped values"
+grep -qxF "m=[a,b]" ew/m=a_b/selfsim.log || fail "a\\,b should reach the run as a,b: $(cat ew/m=a_b/selfsim.log)"
+grep -qxF "m=[1..3]" ew/m=1..3/selfsim.log || fail "1\\.\\.3 should reach the run as 1..3"
+[ -d ew/m=a_b/m=a ] && fail "a run started a sweep of its own"
+# A range ending at the largest integer is counted, not stepped past it.
+"$selfsim" sweep r.lua -o big --set factor=9223372036854775800..9223372036854775807 --jobs-file j.txt -q ||
+  fail "range to 2^63-1"
+[ "$(wc -l <big/j.txt)" = 8 ] || fail "range to 2^63-1 should give 8 runs"
+# A link where a run's folder goes is refused before anything starts; nothing is written through it.
+elsewhere=$(mktemp -d)
+mkdir -p lw && ln -s "$elsewhere" lw/n=1
+"$selfsim" run f.lua -o lw --set n=1,3 >out.txt 2>err.txt
+[ $? = 2 ] || fail "a linked run folder should be refused"
+grep -qF "'lw/n=1' is a link" err.txt || fail "linked folder message: $(cat err.txt)"
+[ -z "$(ls "$elsewhere")" ] || fail "a sweep wrote through a link"
+rm -rf "$elsewhere"
+# --collect reads only regular exit files (a FIFO would block it).
+mkdir -p fifo/n=1 && mkfifo fifo/n=1/selfsim.exit
+timeout 20 "$selfsim" sweep f.lua -o fifo --set n=1,3 --collect -q 2>/dev/null
+[ $? = 1 ] || fail "--collect with a FIFO exit file should report the run as not run"
+
 # Ctrl-C (SIGINT to the sweep) stops every run: exit 130, no run left behind, no partial file.
 cat >slow.lua <<'LUA'
 local n = param("n", 1)
@@ -118,6 +141,16 @@ sleep 0.2
 pgrep -f "slow.lua -o $tmp/cw" >/dev/null && fail "runs still alive after Ctrl-C"
 grep -qF "sweep interrupted" err.txt || fail "interrupt message: $(cat err.txt)"
 [ -n "$(find cw -name '*.svg')" ] && fail "an interrupted run left a file"
+
+# SIGKILL to the sweep: its runs stop too (they are told to stop with their parent).
+"$selfsim" run slow.lua -o kw --set n=1..2 --jobs 2 >out.txt 2>err.txt &
+pid=$!
+for _ in $(seq 1 100); do [ "$(pgrep -fc "slow.lua -o kw/")" = 2 ] && break; sleep 0.1; done
+kill -9 $pid
+wait $pid 2>/dev/null
+for _ in $(seq 1 100); do pgrep -f "slow.lua -o kw/" >/dev/null || break; sleep 0.1; done
+pgrep -f "slow.lua -o kw/" >/dev/null && fail "runs kept going after the sweep was killed"
+pkill -9 -f "slow.lua -o kw/" 2>/dev/null
 
 echo "$failures failures"
 [ "$failures" = 0 ]
