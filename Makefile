@@ -6,8 +6,9 @@ PACKAGES   := cmake g++ make libopenvdb-dev libboost-iostreams-dev liblua5.4-dev
               libtbb-dev lib3mf-dev libgtest-dev libgmock-dev libbenchmark-dev python3-vtk9 xvfb xauth libgl1-mesa-dri \
               libglx-mesa0 librsvg2-bin clang-format ghostscript python3-openvdb paraview
 # Only `make test` installs these: GNU parallel and a Slurm with munge, which the sweep tests start on
-# localhost in a temporary folder (tests/cli/check_slurm.sh). selfsim itself never needs them.
-TEST_PACKAGES := parallel slurmctld slurmd slurm-client munge
+# localhost in a temporary folder (tests/cli/check_slurm.sh), and headless Chromium with Selenium for the
+# studio's browser test (tests/browser/check_studio.py). selfsim itself never needs them.
+TEST_PACKAGES := parallel slurmctld slurmd slurm-client munge chromium chromium-driver python3-selenium
 # ParaView's Python modules, unpacked from Debian's python3-paraview (never installed: it conflicts with
 # python3-vtk9, which libvtk9-dev needs) for scripts/pvbatch-selfsim. README: "ParaView and selfsim on one machine".
 PARAVIEW_PYTHON ?= /opt/selfsim/paraview-python

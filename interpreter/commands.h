@@ -16,6 +16,16 @@ struct UsageError : std::runtime_error {
 };
 
 int run_command(const RunConfig& config);
+
+// The parameters a recipe declares, read as `selfsim params` reads them (run_command.cpp): the recipe runs
+// up to its first heavy step. Throws Error with the recipe's error line when it fails before that.
+struct ParamsRead {
+  std::vector<ParamSpec> specs;
+  std::string stopped_at;  // "recipe.lua:7" where it stopped, or empty when it ran to its end
+};
+ParamsRead read_params(const RunConfig& config);
+// `selfsim studio RECIPE [--port N]` (studio_command.cpp): until Ctrl-C, then 130. Throws UsageError.
+int studio_command(const RunConfig& config, int port);
 // `selfsim run --watch` (watch_command.cpp).
 int watch_command(const RunConfig& config);
 // The running selfsim's own path (/proc/self/exe), for the runs a sweep or --watch starts.

@@ -43,6 +43,10 @@ usage:
                              the recipe's parameters as JSON: name, type, default, min, max, step,
                              choices, doc. The recipe runs only up to its first heavy step (nothing
                              is built or written); "complete" says whether it reached its end
+  selfsim studio RECIPE.lua [--port N] [run options]
+                             a page on http://127.0.0.1:N/ (default 8765; 0: any free port) with a
+                             control per param(), the outputs drawn, re-running as a control moves or
+                             the recipe is saved; outputs in the output folder, as run writes them
   selfsim rerun FILE [-o DIR] run again the recipe FILE records it was made by (every file a run saves
                              records its recipe, --set values and seed), into DIR (default: a new
                              folder ./rerun), and say whether FILE comes out the same byte for byte.
@@ -90,7 +94,7 @@ int main(int argc, char** argv) {
   using namespace selfsim::interp;
   std::vector<std::string> args(argv + 1, argv + argc);
   try {
-    if (args.empty()) throw UsageError("expected a command: run, sweep, params, rerun, diff, info or preview");
+    if (args.empty()) throw UsageError("expected a command: run, sweep, studio, params, rerun, diff, info or preview");
     const std::string command = args[0];
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     if (command == "--help" || command == "-h" || command == "help") {
@@ -108,6 +112,23 @@ int main(int argc, char** argv) {
     if (command == "sweep") {
       if (asks_help(rest)) return 0;
       return sweep_command(parse_sweep_arguments(rest));
+    }
+    if (command == "studio") {
+      if (asks_help(rest)) return 0;
+      int port = 8765;
+      std::vector<std::string> run_args;
+      for (std::size_t i = 0; i < rest.size(); ++i) {
+        if (rest[i] == "--port") {
+          if (i + 1 >= rest.size()) throw UsageError("--port expects a number");
+          port = static_cast<int>(number_argument("--port", rest[++i], 0, 65535));
+        } else {
+          run_args.push_back(rest[i]);
+        }
+      }
+      RunConfig config = parse_run_arguments(run_args);
+      if (config.watch) throw UsageError("the studio watches the recipe itself: no --watch");
+      if (is_sweep(config.sets)) throw UsageError("the studio runs one value at a time: give each --set one value");
+      return studio_command(config, port);
     }
     if (command == "rerun") {
       std::string file, out;
@@ -190,8 +211,8 @@ int main(int argc, char** argv) {
       line.insert(line.end(), rest.begin(), rest.end());
       throw UsageError("unknown command '" + command + "'; to run a recipe: " + shell_command(line));
     }
-    const std::string near =
-        suggestion(command, {"run", "sweep", "params", "rerun", "diff", "info", "preview", "--help", "--version"});
+    const std::string near = suggestion(
+        command, {"run", "sweep", "studio", "params", "rerun", "diff", "info", "preview", "--help", "--version"});
     throw UsageError("unknown command '" + command + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
   } catch (const UsageError& e) {
     return usage_error(e.what());

@@ -170,16 +170,14 @@ RunConfig with_plain_values(RunConfig c) {
 
 }  // namespace
 
-void check_sweep_params(const RunConfig& sweep, const SweepPlan& plan) {
-  RunConfig config = sweep;
-  config.sets = plan.runs.front().sets;
+ParamsRead read_params(const RunConfig& given) {
+  RunConfig config = given;
   config.params_only = true;
   config.quiet = true;
   config.view = false;
   if (config.timeout == 0) config.timeout = 30;
   RunContext run(config);
   run.scripts_dir = find_scripts_dir();
-  for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, on_interrupt);
   // A finalizer that loops runs with hooks off, where only the watchdog can stop it.
   const Watchdog watchdog(run, config.recipe.string());
   lua_State* L = new_sandbox(run);
@@ -187,18 +185,28 @@ void check_sweep_params(const RunConfig& sweep, const SweepPlan& plan) {
   const int status = run_recipe(L, run);
   const std::string message = status == LUA_OK ? std::string() : failure_message(L, run, status);
   lua_close(L);
-  const bool complete = status == LUA_OK;
-  if (!complete && !message.ends_with(params_stop)) throw Error(message);
+  if (status != LUA_OK && !message.ends_with(params_stop)) throw Error(message);
+  ParamsRead read;
+  read.specs = run.params;
+  if (status != LUA_OK) read.stopped_at = message.substr(0, message.find(": "));
+  return read;
+}
+
+void check_sweep_params(const RunConfig& sweep, const SweepPlan& plan) {
+  RunConfig config = sweep;
+  config.sets = plan.runs.front().sets;
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, on_interrupt);
+  const ParamsRead read = read_params(config);
   std::vector<std::string> names;
-  for (const ParamSpec& p : run.params) names.push_back(p.name);
+  for (const ParamSpec& p : read.specs) names.push_back(p.name);
   for (const auto& [key, text] : sweep.sets) {
     const auto spec =
-        std::find_if(run.params.begin(), run.params.end(), [&](const ParamSpec& p) { return p.name == key; });
-    if (spec == run.params.end()) {
+        std::find_if(read.specs.begin(), read.specs.end(), [&](const ParamSpec& p) { return p.name == key; });
+    if (spec == read.specs.end()) {
       const std::string near = suggestion(key, names);
-      if (!complete) {  // perhaps declared after the first heavy step: each run checks it
+      if (!read.stopped_at.empty()) {  // perhaps declared after the first heavy step: each run checks it
         std::fprintf(stderr, "selfsim: warning: --set %s: no param '%s' is read before %s%s\n", shown_text(key).c_str(),
-                     shown_text(key).c_str(), message.substr(0, message.find(": ")).c_str(),
+                     shown_text(key).c_str(), read.stopped_at.c_str(),
                      near.empty() ? "" : (" (did you mean '" + near + "'?)").c_str());
         continue;
       }

@@ -130,7 +130,6 @@ std::vector<int> run_all(const SweepConfig& c, const SweepPlan& plan, int jobs) 
   return codes;
 }
 
-
 }  // namespace
 
 void check_sweep_folders(const SweepConfig& c, const SweepPlan& plan) {

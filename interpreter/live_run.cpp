@@ -1,0 +1,127 @@
+#include "interpreter/live_run.h"
+
+#include <signal.h>
+#include <sys/syscall.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <fstream>
+#include <iterator>
+
+#include "interpreter/commands.h"
+#include "interpreter/spawn_selfsim.h"
+#include "interpreter/sweep.h"
+
+namespace selfsim::interp {
+
+namespace {
+
+const char* const staging_name = ".selfsim-next";
+const char* const log_name = ".selfsim-run.log";
+
+// Moves every file of the staging folder to the same place in the output folder, deepest first (a series'
+// steps before the series file that names them). Returns the top-level names moved.
+std::vector<std::string> publish(const std::filesystem::path& staging, const std::filesystem::path& out) {
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(staging))
+    if (entry.is_regular_file() && !entry.is_symlink()) files.push_back(entry.path().lexically_relative(staging));
+  std::stable_sort(files.begin(), files.end(), [](const auto& a, const auto& b) {
+    return std::distance(a.begin(), a.end()) > std::distance(b.begin(), b.end());
+  });
+  std::vector<std::string> names;
+  for (const std::filesystem::path& rel : files) {
+    const std::filesystem::path to = out / rel;
+    // A link planted on the way would lead the rename out of the output folder.
+    for (std::filesystem::path up = to.parent_path(); up != out && !up.empty(); up = up.parent_path())
+      if (std::filesystem::is_symlink(up)) throw Error("'" + up.string() + "' is a link; not writing through it");
+    std::filesystem::create_directories(to.parent_path());
+    std::filesystem::rename(staging / rel, to);
+    if (!rel.has_parent_path()) names.push_back(rel.string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+}  // namespace
+
+LiveRun::LiveRun(RunConfig base, bool capture)
+    : base_(std::move(base)),
+      capture_(capture),
+      staging_(base_.out_dir / staging_name),
+      log_(base_.out_dir / log_name),
+      exe_(selfsim_executable()) {
+  std::filesystem::create_directories(base_.out_dir);
+}
+
+LiveRun::~LiveRun() {
+  stop();
+  std::error_code ec;
+  std::filesystem::remove_all(staging_, ec);
+  std::filesystem::remove(log_, ec);
+}
+
+void LiveRun::stop() {
+  if (pid_ <= 0) return;
+  ::kill(pid_, SIGINT);  // as Ctrl-C: the run stops at its next check and leaves no partial file
+  int status = 0;
+  while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (pidfd_ >= 0) ::close(pidfd_);
+  pid_ = pidfd_ = -1;
+}
+
+void LiveRun::start(const std::map<std::string, std::string>& sets) {
+  stop();
+  std::error_code ec;
+  std::filesystem::remove_all(staging_, ec);
+  SweepRun one;
+  one.sets = sets;
+  std::vector<std::string> args = run_arguments(base_, one, staging_, base_.threads);
+  // view.py names the output folder, where its files end up.
+  args.insert(args.end() - 1, {"--view-folder", std::filesystem::absolute(base_.out_dir).lexically_normal().string()});
+  started_ = std::chrono::steady_clock::now();
+  pid_ = spawn_selfsim(exe_, args, capture_ ? log_ : std::filesystem::path());
+  pidfd_ = static_cast<int>(::syscall(SYS_pidfd_open, pid_, 0));
+}
+
+bool LiveRun::finished(LiveResult& result) {
+  if (pid_ <= 0) return false;
+  int status = 0;
+  if (::waitpid(pid_, &status, WNOHANG) != pid_) return false;
+  if (pidfd_ >= 0) ::close(pidfd_);
+  pid_ = pidfd_ = -1;
+  result = {};
+  result.code = exit_code(status);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  if (capture_) {
+    std::ifstream in(log_);
+    result.log.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    result.log.resize(std::min<std::size_t>(result.log.size(), 16384));
+  }
+  std::error_code ec;
+  if (result.code == 0 && std::filesystem::is_directory(staging_, ec)) result.files = publish(staging_, base_.out_dir);
+  std::filesystem::remove_all(staging_, ec);
+  return true;
+}
+
+std::vector<std::filesystem::path> recipe_folders(const RunConfig& config, const std::string& who) {
+  // The recipe's folder, and the folder of the file it links to: an edit there is a change too.
+  std::vector<std::filesystem::path> folders{std::filesystem::absolute(config.recipe).parent_path()};
+  std::error_code ec;
+  const std::filesystem::path real = std::filesystem::canonical(config.recipe, ec).parent_path();
+  if (!ec && !std::filesystem::equivalent(real, folders[0], ec)) folders.push_back(real);
+  // The runs' own writes must not count as changes: the output folder may not hold the recipe.
+  std::filesystem::create_directories(config.out_dir);
+  const std::string out = std::filesystem::canonical(config.out_dir, ec).string() + "/";
+  for (const std::filesystem::path& f : folders)
+    if ((std::filesystem::canonical(f, ec).string() + "/").starts_with(out))
+      throw UsageError(who + ": the output folder '" + config.out_dir.string() +
+                       "' holds the recipe; its writes would count as changes (choose another -o)");
+  const char* scripts = std::getenv("SELFSIM_SCRIPTS");
+  folders.emplace_back(scripts ? scripts : SELFSIM_SCRIPTS_DIR);
+  return folders;
+}
+
+}  // namespace selfsim::interp

@@ -1,0 +1,260 @@
+// `selfsim studio RECIPE.lua [--port N]`: a page on http://127.0.0.1:N/ with a control per annotated
+// parameter (param_spec.h), the run's outputs drawn (SVGs as they are, 3D results as `selfsim preview`
+// PNGs), re-running when a control moves (the run going is stopped) or the recipe is saved. The runs are
+// live_run.h's, into the same output folder `run` writes: a failed run shows its error line in the page and
+// leaves the last good files and pictures. One loop polls the socket, the file watcher and the run: no
+// threads, no state shared between them.
+#include <poll.h>
+#include <signal.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <set>
+
+#include "interpreter/commands.h"
+#include "interpreter/file_watcher.h"
+#include "interpreter/http_server.h"
+#include "interpreter/live_run.h"
+#include "interpreter/lua_support.h"
+#include "kernels/geom/lower_case.h"
+#include "kernels/io/json_text.h"
+
+namespace selfsim::interp {
+
+namespace {
+
+extern "C" void on_studio_signal(int) { interrupted.store(true); }
+
+const char* const previews_folder = ".studio";
+
+bool previewable(const std::string& leaf) {
+  const std::string ext = lower_case(std::filesystem::path(leaf).extension().string());
+  for (const char* e : {".vtp", ".vtu", ".stl", ".obj", ".ply", ".vdb", ".pvd", ".series"})
+    if (ext == e) return true;
+  return false;
+}
+
+std::string file_text(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+std::string content_type(const std::string& leaf) {
+  const std::string ext = lower_case(std::filesystem::path(leaf).extension().string());
+  if (ext == ".svg") return "image/svg+xml";
+  if (ext == ".png") return "image/png";
+  if (ext == ".json" || ext == ".series") return "application/json";
+  if (ext == ".html") return "text/html; charset=utf-8";
+  return "application/octet-stream";
+}
+
+// The page's view of the studio: what runs, what the last good run wrote, the last error.
+struct Studio {
+  RunConfig base;
+  ParamsRead params;
+  int params_version = 1;
+  std::map<std::string, std::string> values;  // the --set values of the next run
+  long generation = 0, shown_generation = 0, error_generation = 0;
+  bool running = false;
+  double seconds = 0;
+  std::vector<std::string> files;  // of the last good run
+  std::string error;               // of the last failed run (or recipe), empty after a good one
+
+  std::string params_json_text() const {
+    std::string v;
+    for (const auto& [k, x] : values) v += (v.empty() ? "" : ", ") + io::json_string(k) + ": " + io::json_string(x);
+    return "{\"recipe\": " + io::json_string(base.recipe.string()) +
+           ", \"version\": " + std::to_string(params_version) +
+           ", \"stopped_at\": " + io::json_string(params.stopped_at) + ", \"values\": {" + v +
+           "}, \"parameters\": " + params_json(params.specs) + "}\n";
+  }
+
+  long version = 0;  // counts every change the page would show: /state?since=V waits for the next
+
+  std::string state_json() const {
+    std::string list;
+    std::error_code ec;
+    for (const std::string& f : files) {
+      if (f.ends_with(".stl.json") || f.ends_with(".vdb.json")) continue;  // provenance beside a file
+      std::string image = "null";
+      if (lower_case(std::filesystem::path(f).extension().string()) == ".svg")
+        image = io::json_string("/out/" + f + "?g=" + std::to_string(shown_generation));
+      else if (std::filesystem::is_regular_file(base.out_dir / previews_folder / (f + ".png"), ec))
+        image = io::json_string("/out/" + std::string(previews_folder) + "/" + f +
+                                ".png?g=" + std::to_string(shown_generation));
+      list +=
+          std::string(list.empty() ? "" : ", ") + "{\"name\": " + io::json_string(f) + ", \"image\": " + image + "}";
+    }
+    return "{\"version\": " + std::to_string(version) + ", \"generation\": " + std::to_string(generation) +
+           ", \"running\": " + (running ? "true" : "false") +
+           ", \"params_version\": " + std::to_string(params_version) +
+           ", \"shown\": " + std::to_string(shown_generation) + ", \"seconds\": " + io::json_number(seconds) +
+           ", \"error\": " + io::json_string(error) + ", \"error_generation\": " + std::to_string(error_generation) +
+           ", \"files\": [" + list + "]}\n";
+  }
+
+  // Throws Error naming the first value that is no parameter or outside its range or choices.
+  void check(const std::map<std::string, std::string>& given) const {
+    for (const auto& [key, value] : given) {
+      const auto spec =
+          std::find_if(params.specs.begin(), params.specs.end(), [&](const ParamSpec& p) { return p.name == key; });
+      if (spec == params.specs.end()) throw Error("the recipe has no parameter '" + key + "'");
+      check_param_value(*spec, value);
+    }
+  }
+};
+
+// A file of the output folder, by its path below /out/: never '..', never through a link, regular files only.
+void serve_output(int fd, const Studio& s, const std::string& rel) {
+  const std::filesystem::path p(rel);
+  bool ok = !rel.empty() && p.is_relative() && rel.find('\\') == std::string::npos;
+  std::filesystem::path at = s.base.out_dir;
+  std::error_code ec;
+  for (const auto& part : p) {
+    ok = ok && part != ".." && part != "." && !part.empty();
+    at /= part;
+    ok = ok && !std::filesystem::is_symlink(std::filesystem::symlink_status(at, ec));
+  }
+  if (!ok || !std::filesystem::is_regular_file(at, ec)) return http_respond(fd, 404, "text/plain", "no such file\n");
+  http_respond(fd, 200, content_type(rel), file_text(at));
+}
+
+}  // namespace
+
+int studio_command(const RunConfig& config, int port) {
+  if (!std::filesystem::is_regular_file(config.recipe))
+    throw UsageError("cannot open recipe '" + config.recipe.string() + "'");
+  struct sigaction sa {};
+  sa.sa_handler = on_studio_signal;  // no SA_RESTART: poll returns at Ctrl-C
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaction(sig, &sa, nullptr);
+  Studio s;
+  s.base = config;
+  s.values = config.sets;
+  s.params = read_params(config);
+  s.check(s.values);
+  FileWatcher watcher(recipe_folders(config, "studio"), config.out_dir);
+  LiveRun live(config, true);
+  HttpListener http(port);
+  const char* scripts = std::getenv("SELFSIM_SCRIPTS");
+  const std::filesystem::path page = std::filesystem::path(scripts ? scripts : SELFSIM_SCRIPTS_DIR) / "studio.html";
+  std::printf("studio: http://127.0.0.1:%d/ for %s; outputs in %s (Ctrl-C to stop)\n", http.port(),
+              shown_text(config.recipe.string()).c_str(), shown_text(config.out_dir.string()).c_str());
+  std::fflush(stdout);
+
+  auto start = [&] {
+    ++s.generation;
+    ++s.version;
+    s.running = true;
+    live.start(s.values);
+  };
+  start();
+  std::vector<std::pair<int, std::chrono::steady_clock::time_point>> parked;  // long polls waiting
+  long answered = s.version;
+  // One request: its answer, or its connection parked as a long poll.
+  auto answer = [&](const HttpListener::Accepted& a) {
+    if (a.fd < 0) return;
+    const HttpRequest& q = *a.request;
+    const std::string port_text = std::to_string(http.port());
+    // Only this machine, by its own names: a page elsewhere cannot reach in through DNS rebinding.
+    if (!a.local || (q.host != "127.0.0.1:" + port_text && q.host != "localhost:" + port_text)) {
+      http_respond(a.fd, 403, "text/plain", "the studio answers only to http://127.0.0.1:" + port_text + "/\n");
+    } else if (q.method != "GET") {
+      http_respond(a.fd, 405, "text/plain", "GET only\n");
+    } else if (q.path == "/") {
+      http_respond(a.fd, 200, "text/html; charset=utf-8", file_text(page));
+    } else if (q.path == "/params") {
+      http_respond(a.fd, 200, "application/json", s.params_json_text());
+    } else if (q.path == "/state") {
+      // A long poll: /state?since=V answers when the state is no longer version V (or after 20 s), so the
+      // page hears of a finished run at once without asking again and again.
+      const auto since = query_values(q.query);
+      if (since && since->contains("since") && since->at("since") == std::to_string(s.version) && parked.size() < 32)
+        parked.push_back({a.fd, std::chrono::steady_clock::now() + std::chrono::seconds(20)});
+      else
+        http_respond(a.fd, 200, "application/json", s.state_json());
+    } else if (q.path == "/run") {
+      try {
+        const auto given = query_values(q.query);
+        if (!given) throw Error("a value that does not decode");
+        s.check(*given);
+        for (const auto& [k, v] : *given) s.values[k] = v;
+        start();
+        http_respond(a.fd, 200, "application/json", "{\"generation\": " + std::to_string(s.generation) + "}\n");
+      } catch (const Error& e) {
+        http_respond(a.fd, 400, "application/json", "{\"error\": " + io::json_string(e.what()) + "}\n");
+      }
+    } else if (q.path.starts_with("/out/")) {
+      serve_output(a.fd, s, q.path.substr(5));
+    } else {
+      http_respond(a.fd, 404, "text/plain", "not found\n");
+    }
+  };
+  while (!interrupted.load()) {
+    pollfd p[3] = {{http.fd(), POLLIN, 0}, {watcher.fd(), POLLIN, 0}, {live.fd(), POLLIN, 0}};
+    if (::poll(p, live.fd() >= 0 ? 3 : 2, 500) < 0) continue;
+    if (LiveResult r; live.finished(r)) {
+      s.running = false;
+      ++s.version;
+      if (r.code == 0) {
+        // 3D results as `selfsim preview` draws them, into the output folder's .studio/.
+        // A result that is also an SVG (curve.svg beside curve.vtp) is shown once, as the SVG.
+        std::set<std::string> svgs;
+        for (const std::string& f : r.files)
+          if (lower_case(std::filesystem::path(f).extension().string()) == ".svg")
+            svgs.insert(std::filesystem::path(f).stem().string());
+        PreviewConfig previews;
+        previews.quiet = true;
+        for (const std::string& f : r.files)
+          if (previewable(f) && !svgs.contains(std::filesystem::path(f).stem().string())) {
+            previews.files.push_back((config.out_dir / f).string());
+            previews.pngs.push_back(config.out_dir / previews_folder / (f + ".png"));
+          }
+        if (!previews.files.empty()) preview_command(previews);
+        s.files = r.files;
+        s.seconds = r.seconds;
+        s.shown_generation = s.generation;
+        s.error.clear();
+      } else {
+        s.error = r.log.substr(0, r.log.find('\n'));
+        if (s.error.empty()) s.error = "the run failed (exit " + std::to_string(r.code) + ")";
+        s.error_generation = s.generation;
+      }
+    }
+    if (p[1].revents & POLLIN) {
+      if (const std::string changed = watcher.take(); !changed.empty()) {
+        try {  // the recipe may now declare other parameters
+          s.params = read_params(s.base);
+          ++s.params_version;
+          std::map<std::string, std::string> kept;
+          for (const auto& [k, v] : s.values) try {
+              s.check({{k, v}});
+              kept[k] = v;
+            } catch (const Error&) {
+            }
+          s.values = kept;
+          start();
+        } catch (const Error& e) {
+          s.error = e.what();
+          s.error_generation = ++s.generation;
+          ++s.version;
+        }
+      }
+    }
+    if (p[0].revents & POLLIN) answer(http.accept_one());
+    // Answer the parked long polls when the state changed, or when they have waited long enough.
+    const auto now = std::chrono::steady_clock::now();
+    for (auto it = parked.begin(); it != parked.end();)
+      if (s.version != answered || it->second <= now) {
+        http_respond(it->first, 200, "application/json", s.state_json());
+        it = parked.erase(it);
+      } else {
+        ++it;
+      }
+    answered = s.version;
+  }
+  for (const auto& [fd, deadline] : parked) ::close(fd);
+  return 130;
+}
+
+}  // namespace selfsim::interp
