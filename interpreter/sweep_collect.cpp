@@ -104,12 +104,6 @@ std::string sheet_svg(const SweepPlan& plan, const std::string& title, const std
   return s + "</svg>\n";
 }
 
-void write_text(const std::filesystem::path& root, const std::string& name, const std::string& text) {
-  io::OutputFile f(root, name);
-  f.write(text);
-  f.commit();
-}
-
 // Run i's time in a sweep series: the swept value when one key varies and all its values are numbers.
 std::vector<double> series_times(const SweepPlan& plan) {
   std::vector<double> times;
@@ -190,7 +184,7 @@ int collect_sweep(const SweepConfig& c, const SweepPlan& plan, const std::vector
       for (std::size_t i = 0; i < n; ++i)
         if (have[i]) images[i] = plan.runs[i].folder + "/" + leaf;
       const std::string sheet = unique("sheet_" + p.stem().string() + ".svg", "sheet_" + leaf + ".svg");
-      write_text(out, sheet, sheet_svg(plan, recipe + ": " + leaf + " over " + swept, images, notes));
+      io::write_whole(out, sheet, sheet_svg(plan, recipe + ": " + leaf + " over " + swept, images, notes));
       written.push_back(sheet);
     } else if (previewable(ext) && !svg_stems.contains(p.stem().string())) {
       for (std::size_t i = 0; i < n; ++i)
@@ -217,7 +211,7 @@ int collect_sweep(const SweepConfig& c, const SweepPlan& plan, const std::vector
           cell_notes[i] = "no preview";
       }
       const std::string sheet = unique("sheet_" + leaf + ".svg", "sheet_" + leaf + "_preview.svg");
-      write_text(out, sheet, sheet_svg(plan, recipe + ": " + leaf + " over " + swept, images, cell_notes));
+      io::write_whole(out, sheet, sheet_svg(plan, recipe + ": " + leaf + " over " + swept, images, cell_notes));
       written.push_back(sheet);
     }
   }
@@ -235,7 +229,7 @@ int collect_sweep(const SweepConfig& c, const SweepPlan& plan, const std::vector
         times.push_back(all_times[i]);
       }
     const std::string series = std::filesystem::path(leaf).stem().string() + "_sweep.pvd";
-    write_text(out, series, io::pvd_text(files, times));
+    io::write_whole(out, series, io::pvd_text(files, times));
     written.push_back(series);
   }
 

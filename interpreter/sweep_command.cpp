@@ -45,12 +45,6 @@ std::string first_line(const std::filesystem::path& log) {
   return shown_text(line, 300);
 }
 
-void write_text(const std::filesystem::path& root, const std::string& name, const std::string& text) {
-  io::OutputFile f(root, name);
-  f.write(text);
-  f.commit();
-}
-
 // sweep.json: what the sweep ran, for people and tools; the sweep itself never reads it back.
 std::string manifest(const SweepConfig& c, const SweepPlan& plan) {
   std::string s =
@@ -117,7 +111,7 @@ std::vector<int> run_all(const SweepConfig& c, const SweepPlan& plan, int jobs) 
     const int code = exit_code(status);
     codes[child.index] = code;
     ++done;
-    write_text(out / run.folder, "selfsim.exit", std::to_string(code) + "\n");
+    io::write_whole(out / run.folder, "selfsim.exit", std::to_string(code) + "\n");
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - child.started).count();
     if (code == 0) {
       if (!c.run.quiet) std::printf("[%zu/%zu] %s: ok (%.2f s)\n", done, n, shown_text(run.caption).c_str(), seconds);
@@ -175,7 +169,7 @@ int sweep_command(const SweepConfig& c) {
   check_sweep_params(c.run, plan);
   check_sweep_folders(c, plan);
   std::filesystem::create_directories(out);
-  write_text(out, "sweep.json", manifest(c, plan));
+  io::write_whole(out, "sweep.json", manifest(c, plan));
   if (!c.jobs_file.empty() || !c.slurm.empty()) return write_job_lists(c, plan, selfsim_executable());
 
   const int jobs = c.run.jobs > 0 ? c.run.jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));

@@ -31,12 +31,6 @@ std::vector<std::string> collect_arguments(const SweepConfig& c, const std::stri
   return a;
 }
 
-void write_file(const std::filesystem::path& out, const std::string& name, const std::string& text) {
-  io::OutputFile f(out, name);
-  f.write(text);
-  f.commit();
-}
-
 }  // namespace
 
 std::vector<std::string> run_arguments(const RunConfig& r, const SweepRun& run, const std::filesystem::path& dir,
@@ -70,7 +64,7 @@ int write_job_lists(const SweepConfig& c, const SweepPlan& plan, const std::stri
             shell_word(dir + "/selfsim.log") + " 2>&1; echo $? >" + shell_word(dir + "/selfsim.exit") + "\n";
   }
   const std::string list = c.jobs_file.empty() ? "jobs.txt" : c.jobs_file;
-  write_file(out, list, jobs);
+  io::write_whole(out, list, jobs);
   const std::string collect = words(collect_arguments(c, exe, out, recipe));
   const std::string list_path = (out / list).string();
   if (!c.run.quiet) {
@@ -93,7 +87,7 @@ int write_job_lists(const SweepConfig& c, const SweepPlan& plan, const std::stri
   std::string logs;
   for (char ch : folder) logs += ch == '%' ? std::string("%%") : std::string(1, ch);
   auto output = [&](const std::string& leaf) { return "#SBATCH --output=\"" + logs + "/" + leaf + "\"\n"; };
-  write_file(
+  io::write_whole(
       out, c.slurm,
       "#!/bin/bash\n"
       "# One Slurm array task per run of the sweep of " +
@@ -102,10 +96,10 @@ int write_job_lists(const SweepConfig& c, const SweepPlan& plan, const std::stri
           "\n#SBATCH --cpus-per-task=" + std::to_string(threads) + "\n" + output("run-%a.out") +
           "line=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" " + shell_word(list_path) + ")\nexec bash -c \"$line\"\n");
   const std::string collect_script = "collect-" + c.slurm;
-  write_file(out, collect_script,
-             "#!/bin/bash\n# The sheets and ParaView series of the sweep, once its array has ended.\n"
-             "#SBATCH --job-name=selfsim-collect\n" +
-                 output("collect.out") + collect + "\n");
+  io::write_whole(out, collect_script,
+                  "#!/bin/bash\n# The sheets and ParaView series of the sweep, once its array has ended.\n"
+                  "#SBATCH --job-name=selfsim-collect\n" +
+                      output("collect.out") + collect + "\n");
   const std::string array = shell_word((out / c.slurm).string()), after = shell_word((out / collect_script).string());
   if (!c.run.quiet)
     std::printf("wrote %s and %s\n  submit: jid=$(sbatch --parsable %s) && sbatch --dependency=afterany:$jid %s\n",

@@ -47,6 +47,13 @@ class OutputFile {
   bool committed_ = false;
 };
 
+// Writes `text` as root/name, atomically and confined as any OutputFile (a sweep's manifest, sheets, job lists).
+inline void write_whole(const std::filesystem::path& root, const std::string& name, std::string_view text) {
+  OutputFile f(root, name);
+  f.write(text);
+  f.commit();
+}
+
 // Removes the regular files of root/folder (confined as OutputFile's folders are) whose names `remove`
 // picks: the step files a series' earlier version named and its new version does not.
 void remove_files(const std::filesystem::path& root, const std::filesystem::path& folder,

@@ -1,12 +1,8 @@
 #!/usr/bin/env bash
 # `selfsim params`: a recipe's annotated parameters as JSON, read without building or writing anything.
 # usage: check_params.sh SELFSIM SOURCE_DIR
-set -uo pipefail
-selfsim=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+# shellcheck source=tests/cli/test_lib.sh
+source "$(dirname "$0")/test_lib.sh"
 
 cat >"$tmp/r.lua" <<'LUA'
 local curves = require "selfsim.curves"
@@ -70,5 +66,4 @@ for args in "--set level=1..3" "--watch" "-o elsewhere" "--jobs 2"; do
 done
 [ -e "$tmp/elsewhere" ] || [ -e "$tmp/out" ] && fail "params made a folder"
 
-echo "$failures failures"
-[ "$failures" = 0 ]
+finish

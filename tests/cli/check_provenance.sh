@@ -2,12 +2,8 @@
 # Every output records how it was made (recipe path and SHA-256, --set values, seed, version); info shows
 # it, rerun repeats the run into a new folder and says whether the bytes match.
 # usage: check_provenance.sh SELFSIM SOURCE_DIR
-set -uo pipefail
-selfsim=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+# shellcheck source=tests/cli/test_lib.sh
+source "$(dirname "$0")/test_lib.sh"
 # A folder whose name holds "--", which an XML comment may not: the SVG must still parse.
 dir="$tmp/a--b"
 mkdir -p "$dir" && cd "$dir" || exit 1
@@ -70,5 +66,4 @@ mv r.lua gone.lua
 [ $? = 2 ] || fail "rerun with the recipe gone should exit 2"
 grep -qF "which is not there any more" err.txt || fail "recipe gone message: $(cat err.txt)"
 
-echo "$failures failures"
-[ "$failures" = 0 ]
+finish

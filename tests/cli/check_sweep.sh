@@ -2,12 +2,8 @@
 # Sweeps: one run per combination of --set values, each in its own folder, N at a time; failures reported
 # while the others go on; Ctrl-C stops all; a job list that GNU parallel runs gives the same bytes.
 # usage: check_sweep.sh SELFSIM SOURCE_DIR
-set -uo pipefail
-selfsim=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+# shellcheck source=tests/cli/test_lib.sh
+source "$(dirname "$0")/test_lib.sh"
 cd "$tmp" || exit 1
 
 cat >d.lua <<'LUA'
@@ -152,5 +148,4 @@ for _ in $(seq 1 100); do pgrep -f "slow.lua -o kw/" >/dev/null || break; sleep 
 pgrep -f "slow.lua -o kw/" >/dev/null && fail "runs kept going after the sweep was killed"
 pkill -9 -f "slow.lua -o kw/" 2>/dev/null
 
-echo "$failures failures"
-[ "$failures" = 0 ]
+finish
