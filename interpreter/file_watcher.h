@@ -33,12 +33,12 @@ class FileWatcher {
   // pending. Then take() reads them: the changed file's name, or empty when they were only side files.
   int fd() const { return fd_; }
   std::string take(std::chrono::milliseconds settle = std::chrono::milliseconds(30));
+  // Watches again the folders that were deleted, where they exist again; true when one came back.
+  bool restore();
 
  private:
   void add(const std::filesystem::path& folder, int depth);
   std::string drain();  // the first counted change among the pending events, or empty
-
-  bool restore();  // watches again the folders that were deleted, where they exist again
 
   int fd_ = -1;
   std::filesystem::path skip_;

@@ -1,13 +1,17 @@
 #include "interpreter/http_server.h"
 
 #include <arpa/inet.h>
+#include <fcntl.h>
 #include <netinet/in.h>
 #include <poll.h>
 #include <sys/socket.h>
+#include <sys/time.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
 #include <chrono>
+#include <cstdio>
 #include <cstring>
 
 #include "kernels/geom/error.h"
@@ -42,10 +46,24 @@ const char* reason(int status) {
 
 }  // namespace
 
-std::optional<std::string> url_decoded(std::string_view text) {
+std::string url_path(const std::string& path) {
+  std::string s;
+  for (unsigned char c : path) {
+    if (std::isalnum(c) || std::string_view("-._~/=,").find(static_cast<char>(c)) != std::string_view::npos) {
+      s += static_cast<char>(c);
+    } else {
+      char buf[4];
+      std::snprintf(buf, sizeof buf, "%%%02X", c);
+      s += buf;
+    }
+  }
+  return s;
+}
+
+std::optional<std::string> url_decoded(std::string_view text, bool query) {
   std::string s;
   for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] == '+') {
+    if (text[i] == '+' && query) {
       s += ' ';
     } else if (text[i] == '%') {
       if (i + 2 >= text.size()) return std::nullopt;
@@ -88,18 +106,29 @@ std::optional<HttpRequest> parse_http_request(std::string_view head) {
   const std::string_view target = line.substr(a + 1, b - a - 1);
   if (target.empty() || target[0] != '/') return std::nullopt;
   const std::size_t q = target.find('?');
-  const auto path = url_decoded(target.substr(0, q));
+  const auto path = url_decoded(target.substr(0, q), false);
   if (!path) return std::nullopt;
   r.path = *path;
   if (q != std::string_view::npos) r.query = std::string(target.substr(q + 1));
   for (std::size_t at = line_end + 2; at < head.size();) {
     const std::size_t end = head.find("\r\n", at);
     const std::string_view h = head.substr(at, end == std::string_view::npos ? std::string_view::npos : end - at);
-    if (h.size() > 5 && (h.substr(0, 5) == "Host:" || h.substr(0, 5) == "host:")) {
-      std::string_view v = h.substr(5);
+    // Header names are case-insensitive; a second Host makes the request bad (which one would count?).
+    const std::size_t colon = h.find(':');
+    if (colon != std::string_view::npos) {
+      std::string name(h.substr(0, colon));
+      for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      std::string_view v = h.substr(colon + 1);
       while (!v.empty() && v.front() == ' ') v.remove_prefix(1);
       while (!v.empty() && v.back() == ' ') v.remove_suffix(1);
-      r.host = std::string(v);
+      if (name == "host") {
+        if (!r.host.empty()) return std::nullopt;
+        r.host = std::string(v);
+      } else if (name == "origin") {
+        r.origin = std::string(v);
+      } else if (name == "sec-fetch-site") {
+        r.fetch_site = std::string(v);
+      }
     }
     if (end == std::string_view::npos) break;
     at = end + 2;
@@ -108,7 +137,7 @@ std::optional<HttpRequest> parse_http_request(std::string_view head) {
 }
 
 HttpListener::HttpListener(int port) {
-  fd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  fd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0);  // accept never waits
   if (fd_ < 0) throw Error(std::string("cannot open a socket: ") + std::strerror(errno));
   const int yes = 1;
   ::setsockopt(fd_, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
@@ -130,34 +159,53 @@ HttpListener::~HttpListener() {
   if (fd_ >= 0) ::close(fd_);
 }
 
-HttpListener::Accepted HttpListener::accept_one() {
-  Accepted a;
+bool HttpListener::accept_into(std::vector<Connection>& open) {
   sockaddr_in peer{};
   socklen_t len = sizeof peer;
-  a.fd = ::accept4(fd_, reinterpret_cast<sockaddr*>(&peer), &len, SOCK_CLOEXEC);
-  if (a.fd < 0) return a;
-  a.local = peer.sin_family == AF_INET && ntohl(peer.sin_addr.s_addr) == INADDR_LOOPBACK;
-  std::string head;
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(2);
-  while (head.find("\r\n\r\n") == std::string::npos && head.size() < 16384) {
-    const auto left =
-        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()).count();
-    pollfd p{a.fd, POLLIN, 0};
-    if (left <= 0 || ::poll(&p, 1, static_cast<int>(left)) <= 0) break;
-    char buf[4096];
-    const ssize_t n = ::read(a.fd, buf, sizeof buf);
-    if (n <= 0) break;
-    head.append(buf, static_cast<std::size_t>(n));
+  Connection c;
+  c.fd = ::accept4(fd_, reinterpret_cast<sockaddr*>(&peer), &len, SOCK_CLOEXEC | SOCK_NONBLOCK);
+  if (c.fd < 0) return false;
+  c.local = peer.sin_family == AF_INET && ntohl(peer.sin_addr.s_addr) == INADDR_LOOPBACK;
+  c.deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  // An answer may wait at most 2 s for a client that does not read it.
+  const timeval send_limit{2, 0};
+  ::setsockopt(c.fd, SOL_SOCKET, SO_SNDTIMEO, &send_limit, sizeof send_limit);
+  if (open.size() >= 64) {  // the oldest quiet connection makes room
+    ::close(open.front().fd);
+    open.erase(open.begin());
   }
-  a.request = parse_http_request(head);
-  if (!a.request) {
-    http_respond(a.fd, 400, "text/plain", "bad request\n");
-    a.fd = -1;
+  open.push_back(std::move(c));
+  return true;
+}
+
+std::optional<HttpRequest> HttpListener::read_more(Connection& c) {
+  char buf[4096];
+  for (;;) {
+    const ssize_t n = ::read(c.fd, buf, sizeof buf);
+    if (n > 0) {
+      c.head.append(buf, static_cast<std::size_t>(n));
+      if (c.head.size() > 16384) break;
+      continue;
+    }
+    if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) break;
+    ::close(c.fd);  // closed by the client, or an error
+    c.fd = -1;
+    return std::nullopt;
   }
-  return a;
+  const std::size_t end = c.head.find("\r\n\r\n");
+  if (end == std::string::npos && c.head.size() <= 16384) return std::nullopt;  // more to come
+  std::optional<HttpRequest> r =
+      end == std::string::npos ? std::nullopt : parse_http_request(c.head.substr(0, end + 2));
+  if (!r) {
+    http_respond(c.fd, 400, "text/plain", "bad request\n");
+    c.fd = -1;
+  }
+  return r;
 }
 
 void http_respond(int fd, int status, const std::string& type, std::string_view body) {
+  // Blocking from here, so SO_SNDTIMEO bounds how long a client that does not read can hold the answer.
+  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
   const std::string head =
       "HTTP/1.1 " + std::to_string(status) + " " + reason(status) + "\r\nContent-Type: " + type +
       "\r\nContent-Length: " + std::to_string(body.size()) +
@@ -165,7 +213,8 @@ void http_respond(int fd, int status, const std::string& type, std::string_view 
   for (std::string_view part : {std::string_view(head), body}) {
     while (!part.empty()) {
       const ssize_t n = ::send(fd, part.data(), part.size(), MSG_NOSIGNAL);
-      if (n <= 0) break;
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;  // the client went away, or did not read for 2 s (SO_SNDTIMEO)
       part.remove_prefix(static_cast<std::size_t>(n));
     }
   }

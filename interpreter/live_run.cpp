@@ -1,12 +1,15 @@
 #include "interpreter/live_run.h"
 
+#include <fcntl.h>
 #include <signal.h>
+#include <sys/file.h>
 #include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <fstream>
 #include <iterator>
 
@@ -30,12 +33,20 @@ std::vector<std::string> publish(const std::filesystem::path& staging, const std
   std::stable_sort(files.begin(), files.end(), [](const auto& a, const auto& b) {
     return std::distance(a.begin(), a.end()) > std::distance(b.begin(), b.end());
   });
+  // Everything is checked before anything moves: a link planted on the way (it would lead a rename out of
+  // the output folder) or a folder where a file goes refuses the whole run, not half of it.
+  std::error_code ec;
+  for (const std::filesystem::path& rel : files) {
+    const std::filesystem::path to = out / rel;
+    for (std::filesystem::path up = to.parent_path(); up != out && !up.empty(); up = up.parent_path())
+      if (std::filesystem::is_symlink(std::filesystem::symlink_status(up, ec)))
+        throw Error("'" + up.string() + "' is a link; not writing through it");
+    if (std::filesystem::is_directory(std::filesystem::symlink_status(to, ec)))
+      throw Error("'" + to.string() + "' is a folder where the run's file goes");
+  }
   std::vector<std::string> names;
   for (const std::filesystem::path& rel : files) {
     const std::filesystem::path to = out / rel;
-    // A link planted on the way would lead the rename out of the output folder.
-    for (std::filesystem::path up = to.parent_path(); up != out && !up.empty(); up = up.parent_path())
-      if (std::filesystem::is_symlink(up)) throw Error("'" + up.string() + "' is a link; not writing through it");
     std::filesystem::create_directories(to.parent_path());
     std::filesystem::rename(staging / rel, to);
     if (!rel.has_parent_path()) names.push_back(rel.string());
@@ -53,6 +64,11 @@ LiveRun::LiveRun(RunConfig base, bool capture)
       log_(base_.out_dir / log_name),
       exe_(selfsim_executable()) {
   std::filesystem::create_directories(base_.out_dir);
+  // One live runner per output folder: two would remove each other's staging folder.
+  lock_ = ::open((base_.out_dir / ".selfsim-lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+  if (lock_ < 0 || ::flock(lock_, LOCK_EX | LOCK_NB) != 0)
+    throw UsageError("another studio or --watch is using the output folder '" + base_.out_dir.string() +
+                     "' (choose another -o)");
 }
 
 LiveRun::~LiveRun() {
@@ -60,6 +76,8 @@ LiveRun::~LiveRun() {
   std::error_code ec;
   std::filesystem::remove_all(staging_, ec);
   std::filesystem::remove(log_, ec);
+  std::filesystem::remove(base_.out_dir / ".selfsim-lock", ec);
+  if (lock_ >= 0) ::close(lock_);
 }
 
 void LiveRun::stop() {
@@ -76,6 +94,7 @@ void LiveRun::start(const std::map<std::string, std::string>& sets) {
   stop();
   std::error_code ec;
   std::filesystem::remove_all(staging_, ec);
+  std::filesystem::create_directories(base_.out_dir);  // deleted meanwhile: made again
   SweepRun one;
   one.sets = sets;
   std::vector<std::string> args = run_arguments(base_, one, staging_, base_.threads);
@@ -101,7 +120,14 @@ bool LiveRun::finished(LiveResult& result) {
     result.log.resize(std::min<std::size_t>(result.log.size(), 16384));
   }
   std::error_code ec;
-  if (result.code == 0 && std::filesystem::is_directory(staging_, ec)) result.files = publish(staging_, base_.out_dir);
+  try {
+    if (result.code == 0 && std::filesystem::is_directory(staging_, ec))
+      result.files = publish(staging_, base_.out_dir);
+  } catch (const std::exception& e) {  // the run's files could not go in: it failed, and the last good files stay
+    result.code = 1;
+    result.log = std::string("cannot move the run's files into the output folder: ") + e.what() + "\n" + result.log;
+    if (!capture_) std::fprintf(stderr, "selfsim: %s", result.log.substr(0, result.log.find('\n') + 1).c_str());
+  }
   std::filesystem::remove_all(staging_, ec);
   return true;
 }

@@ -49,7 +49,7 @@ class LiveRun {
   std::filesystem::path staging_, log_;
   std::string exe_;
   pid_t pid_ = -1;
-  int pidfd_ = -1;
+  int pidfd_ = -1, lock_ = -1;
   std::chrono::steady_clock::time_point started_;
 };
 

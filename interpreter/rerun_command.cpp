@@ -36,18 +36,32 @@ std::filesystem::path fresh_folder() {
 }  // namespace
 
 int rerun_command(const std::string& file, const std::string& out) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec))  // never a FIFO (reading it would wait forever)
+    throw UsageError("cannot read '" + shown_text(file) + "': not a regular file");
   const std::optional<io::Provenance> p = io::read_provenance(file);
   if (!p)
     throw UsageError("'" + shown_text(file) +
                      "' records no recipe (selfsim " SELFSIM_VERSION
                      " records one in every file a run saves; .stl and .vdb beside them, as NAME.json)");
-  std::error_code ec;
+  // The record is only text in a file: it may name nothing but a file inside the new folder, and --set
+  // keys a run could have had.
+  const std::filesystem::path name(p->name);
+  bool inside = !p->name.empty() && name.is_relative();
+  for (const auto& part : name) inside = inside && part != "..";
+  if (!inside)
+    throw UsageError("'" + shown_text(file) + "' records the name '" + shown_text(p->name) +
+                     "', not a file inside a run's folder");
+  for (const auto& [k, v] : p->sets)
+    if (k.empty() || k.find_first_of("=\n\r") != std::string::npos || k[0] == '-' || v.find('\0') != std::string::npos)
+      throw UsageError("'" + shown_text(file) + "' records a --set key '" + shown_text(k) + "' no run could have had");
   if (!std::filesystem::is_regular_file(p->recipe, ec))
     throw UsageError("'" + shown_text(file) + "' was made by " + shown_text(p->recipe) +
                      ", which is not there any more");
   const std::filesystem::path folder = out.empty() ? fresh_folder() : std::filesystem::path(out);
-  if (std::filesystem::exists(folder, ec) && !std::filesystem::is_empty(folder, ec))
-    throw UsageError("-o '" + folder.string() + "' is not empty: rerun writes into a new folder");
+  const auto st = std::filesystem::symlink_status(folder, ec);
+  if (std::filesystem::exists(st) && (!std::filesystem::is_directory(st) || !std::filesystem::is_empty(folder, ec)))
+    throw UsageError("-o '" + folder.string() + "' is not an empty folder: rerun writes into a new folder");
   if (io::sha256_hex(bytes_of(p->recipe)) != p->sha256)
     std::fprintf(stderr,
                  "selfsim: warning: %s has changed since '%s' was made (its SHA-256 differs): rerunning it as "
@@ -59,7 +73,7 @@ int rerun_command(const std::string& file, const std::string& out) {
   std::vector<std::string> args{"run", p->recipe, "-o", folder.string()};
   for (const auto& [k, v] : p->sets) args.insert(args.end(), {"--set", k + "=" + escaped_value(v)});
   args.insert(args.end(), {"--seed", std::to_string(p->seed), "-q"});
-  std::printf("%s\n", shell_command(args).c_str());
+  std::printf("%s\n", shown_text(shell_command(args), 4096).c_str());
   std::fflush(stdout);
   const pid_t pid = spawn_selfsim(selfsim_executable(), args, {});
   int status = 0;
@@ -69,7 +83,7 @@ int rerun_command(const std::string& file, const std::string& out) {
     std::fprintf(stderr, "selfsim: the rerun failed (exit %d)\n", code);
     return 1;
   }
-  const std::filesystem::path again = folder / p->name;
+  const std::filesystem::path again = folder / name;
   if (!std::filesystem::is_regular_file(again, ec)) {
     std::fprintf(stderr, "selfsim: the rerun wrote no %s\n", shown_text(again.string()).c_str());
     return 1;

@@ -4,8 +4,11 @@
 // live_run.h's, into the same output folder `run` writes: a failed run shows its error line in the page and
 // leaves the last good files and pictures. One loop polls the socket, the file watcher and the run: no
 // threads, no state shared between them.
+#include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
@@ -79,12 +82,12 @@ struct Studio {
       if (f.ends_with(".stl.json") || f.ends_with(".vdb.json")) continue;  // provenance beside a file
       std::string image = "null";
       if (lower_case(std::filesystem::path(f).extension().string()) == ".svg")
-        image = io::json_string("/out/" + f + "?g=" + std::to_string(shown_generation));
+        image = io::json_string("/out/" + url_path(f) + "?g=" + std::to_string(shown_generation));
       else if (std::filesystem::is_regular_file(base.out_dir / previews_folder / (f + ".png"), ec))
-        image = io::json_string("/out/" + std::string(previews_folder) + "/" + f +
+        image = io::json_string("/out/" + std::string(previews_folder) + "/" + url_path(f) +
                                 ".png?g=" + std::to_string(shown_generation));
-      list +=
-          std::string(list.empty() ? "" : ", ") + "{\"name\": " + io::json_string(f) + ", \"image\": " + image + "}";
+      list += std::string(list.empty() ? "" : ", ") + "{\"name\": " + io::json_string(f) +
+              ", \"url\": " + io::json_string("/out/" + url_path(f)) + ", \"image\": " + image + "}";
     }
     return "{\"version\": " + std::to_string(version) + ", \"generation\": " + std::to_string(generation) +
            ", \"running\": " + (running ? "true" : "false") +
@@ -105,19 +108,42 @@ struct Studio {
   }
 };
 
-// A file of the output folder, by its path below /out/: never '..', never through a link, regular files only.
+// A file of the output folder, by its path below /out/: opened one component at a time below the folder,
+// never through a link (O_NOFOLLOW at each step, so a link swapped in meanwhile is refused too), never
+// '..', and only a regular file with one name (a hard link could name a file from anywhere).
 void serve_output(int fd, const Studio& s, const std::string& rel) {
   const std::filesystem::path p(rel);
   bool ok = !rel.empty() && p.is_relative() && rel.find('\\') == std::string::npos;
-  std::filesystem::path at = s.base.out_dir;
-  std::error_code ec;
-  for (const auto& part : p) {
-    ok = ok && part != ".." && part != "." && !part.empty();
-    at /= part;
-    ok = ok && !std::filesystem::is_symlink(std::filesystem::symlink_status(at, ec));
+  int dir = ::open(s.base.out_dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  std::vector<std::string> parts;
+  for (const auto& part : p) parts.push_back(part.string());
+  for (std::size_t i = 0; ok && dir >= 0 && i < parts.size(); ++i) {
+    ok = parts[i] != ".." && parts[i] != "." && !parts[i].empty();
+    if (!ok) break;
+    const bool last = i + 1 == parts.size();
+    const int next = ::openat(dir, parts[i].c_str(),
+                              (last ? O_RDONLY : O_RDONLY | O_DIRECTORY) | O_NOFOLLOW | O_CLOEXEC |
+                                  (last ? O_NONBLOCK : 0));  // a FIFO must not block
+    ::close(dir);
+    dir = next;
   }
-  if (!ok || !std::filesystem::is_regular_file(at, ec)) return http_respond(fd, 404, "text/plain", "no such file\n");
-  http_respond(fd, 200, content_type(rel), file_text(at));
+  struct stat st {};
+  ok = ok && dir >= 0 && ::fstat(dir, &st) == 0 && S_ISREG(st.st_mode) && st.st_nlink == 1 &&
+       st.st_size <= (std::int64_t{1} << 30);
+  if (!ok) {
+    if (dir >= 0) ::close(dir);
+    return http_respond(fd, 404, "text/plain", "no such file\n");
+  }
+  std::string body(static_cast<std::size_t>(st.st_size), '\0');
+  std::size_t got = 0;
+  while (got < body.size()) {
+    const ssize_t n = ::read(dir, body.data() + got, body.size() - got);
+    if (n <= 0) break;
+    got += static_cast<std::size_t>(n);
+  }
+  ::close(dir);
+  body.resize(got);
+  http_respond(fd, 200, content_type(rel), body);
 }
 
 }  // namespace
@@ -145,34 +171,37 @@ int studio_command(const RunConfig& config, int port) {
   auto start = [&] {
     ++s.generation;
     ++s.version;
+    s.running = false;
+    live.start(s.values);  // throws when the output folder cannot be written: the run never started
     s.running = true;
-    live.start(s.values);
   };
   start();
   std::vector<std::pair<int, std::chrono::steady_clock::time_point>> parked;  // long polls waiting
   long answered = s.version;
   // One request: its answer, or its connection parked as a long poll.
-  auto answer = [&](const HttpListener::Accepted& a) {
-    if (a.fd < 0) return;
-    const HttpRequest& q = *a.request;
+  auto answer = [&](const int fd, const bool local, const HttpRequest& q) {
     const std::string port_text = std::to_string(http.port());
-    // Only this machine, by its own names: a page elsewhere cannot reach in through DNS rebinding.
-    if (!a.local || (q.host != "127.0.0.1:" + port_text && q.host != "localhost:" + port_text)) {
-      http_respond(a.fd, 403, "text/plain", "the studio answers only to http://127.0.0.1:" + port_text + "/\n");
+    // Only this machine, by its own names: a page elsewhere cannot reach in through DNS rebinding, nor
+    // make the browser send a request for it (an <img> on another site: its Origin or Sec-Fetch-Site).
+    const std::string ours = "127.0.0.1:" + port_text, also = "localhost:" + port_text;
+    const bool foreign = (!q.origin.empty() && q.origin != "http://" + ours && q.origin != "http://" + also) ||
+                         q.fetch_site == "cross-site" || q.fetch_site == "same-site";
+    if (!local || (q.host != ours && q.host != also) || foreign) {
+      http_respond(fd, 403, "text/plain", "the studio answers only to its own page at http://" + ours + "/\n");
     } else if (q.method != "GET") {
-      http_respond(a.fd, 405, "text/plain", "GET only\n");
+      http_respond(fd, 405, "text/plain", "GET only\n");
     } else if (q.path == "/") {
-      http_respond(a.fd, 200, "text/html; charset=utf-8", file_text(page));
+      http_respond(fd, 200, "text/html; charset=utf-8", file_text(page));
     } else if (q.path == "/params") {
-      http_respond(a.fd, 200, "application/json", s.params_json_text());
+      http_respond(fd, 200, "application/json", s.params_json_text());
     } else if (q.path == "/state") {
       // A long poll: /state?since=V answers when the state is no longer version V (or after 20 s), so the
       // page hears of a finished run at once without asking again and again.
       const auto since = query_values(q.query);
       if (since && since->contains("since") && since->at("since") == std::to_string(s.version) && parked.size() < 32)
-        parked.push_back({a.fd, std::chrono::steady_clock::now() + std::chrono::seconds(20)});
+        parked.push_back({fd, std::chrono::steady_clock::now() + std::chrono::seconds(20)});
       else
-        http_respond(a.fd, 200, "application/json", s.state_json());
+        http_respond(fd, 200, "application/json", s.state_json());
     } else if (q.path == "/run") {
       try {
         const auto given = query_values(q.query);
@@ -180,19 +209,21 @@ int studio_command(const RunConfig& config, int port) {
         s.check(*given);
         for (const auto& [k, v] : *given) s.values[k] = v;
         start();
-        http_respond(a.fd, 200, "application/json", "{\"generation\": " + std::to_string(s.generation) + "}\n");
+        http_respond(fd, 200, "application/json", "{\"generation\": " + std::to_string(s.generation) + "}\n");
       } catch (const Error& e) {
-        http_respond(a.fd, 400, "application/json", "{\"error\": " + io::json_string(e.what()) + "}\n");
+        http_respond(fd, 400, "application/json", "{\"error\": " + io::json_string(e.what()) + "}\n");
       }
     } else if (q.path.starts_with("/out/")) {
-      serve_output(a.fd, s, q.path.substr(5));
+      serve_output(fd, s, q.path.substr(5));
     } else {
-      http_respond(a.fd, 404, "text/plain", "not found\n");
+      http_respond(fd, 404, "text/plain", "not found\n");
     }
   };
+  std::vector<HttpListener::Connection> open;  // requests still coming in
   while (!interrupted.load()) {
-    pollfd p[3] = {{http.fd(), POLLIN, 0}, {watcher.fd(), POLLIN, 0}, {live.fd(), POLLIN, 0}};
-    if (::poll(p, live.fd() >= 0 ? 3 : 2, 500) < 0) continue;
+    std::vector<pollfd> p{{http.fd(), POLLIN, 0}, {watcher.fd(), POLLIN, 0}, {live.fd(), POLLIN, 0}};
+    for (const auto& c : open) p.push_back({c.fd, POLLIN, 0});
+    if (::poll(p.data(), p.size(), 250) < 0) continue;
     if (LiveResult r; live.finished(r)) {
       s.running = false;
       ++s.version;
@@ -210,7 +241,10 @@ int studio_command(const RunConfig& config, int port) {
             previews.files.push_back((config.out_dir / f).string());
             previews.pngs.push_back(config.out_dir / previews_folder / (f + ".png"));
           }
-        if (!previews.files.empty()) preview_command(previews);
+        if (!previews.files.empty()) {
+          preview_command(previews);
+          for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaction(sig, &sa, nullptr);  // the display server's are gone
+        }
         s.files = r.files;
         s.seconds = r.seconds;
         s.shown_generation = s.generation;
@@ -221,8 +255,9 @@ int studio_command(const RunConfig& config, int port) {
         s.error_generation = s.generation;
       }
     }
-    if (p[1].revents & POLLIN) {
-      if (const std::string changed = watcher.take(); !changed.empty()) {
+    const bool back = watcher.restore();  // a folder deleted and brought back (git checkout)
+    if ((p[1].revents & POLLIN) || back) {
+      if (const std::string changed = back ? "(a folder, back)" : watcher.take(); !changed.empty()) {
         try {  // the recipe may now declare other parameters
           s.params = read_params(s.base);
           ++s.params_version;
@@ -241,9 +276,24 @@ int studio_command(const RunConfig& config, int port) {
         }
       }
     }
-    if (p[0].revents & POLLIN) answer(http.accept_one());
-    // Answer the parked long polls when the state changed, or when they have waited long enough.
+    if (p[0].revents & POLLIN)
+      while (http.accept_into(open)) {
+      }
     const auto now = std::chrono::steady_clock::now();
+    for (std::size_t i = 0; i < open.size(); ++i) {
+      HttpListener::Connection& c = open[i];
+      if (i + 3 < p.size() && (p[i + 3].revents & (POLLIN | POLLHUP | POLLERR)))
+        if (const std::optional<HttpRequest> q = HttpListener::read_more(c)) {
+          answer(c.fd, c.local, *q);
+          c.fd = -1;
+        }
+      if (c.fd >= 0 && c.deadline <= now) {  // nothing complete in 10 s
+        ::close(c.fd);
+        c.fd = -1;
+      }
+    }
+    std::erase_if(open, [](const HttpListener::Connection& c) { return c.fd < 0; });
+    // Answer the parked long polls when the state changed, or when they have waited long enough.
     for (auto it = parked.begin(); it != parked.end();)
       if (s.version != answered || it->second <= now) {
         http_respond(it->first, 200, "application/json", s.state_json());
@@ -254,6 +304,7 @@ int studio_command(const RunConfig& config, int port) {
     answered = s.version;
   }
   for (const auto& [fd, deadline] : parked) ::close(fd);
+  for (const auto& c : open) ::close(c.fd);
   return 130;
 }
 

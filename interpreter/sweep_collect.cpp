@@ -10,6 +10,7 @@
 #include <set>
 
 #include "interpreter/commands.h"
+#include "interpreter/http_server.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/parse_text.h"
 #include "interpreter/sweep.h"
@@ -32,21 +33,6 @@ bool previewable(const std::string& ext) {
   for (const char* e : {".vtp", ".vtu", ".stl", ".obj", ".ply", ".vdb", ".pvd", ".series"})
     if (ext == e) return true;
   return false;
-}
-
-// A relative path as a URL path: every byte but letters, digits and -._~/=,+ percent-encoded.
-std::string url_path(const std::string& path) {
-  std::string s;
-  for (unsigned char c : path) {
-    if (std::isalnum(c) || std::string_view("-._~/=,+").find(static_cast<char>(c)) != std::string_view::npos) {
-      s += static_cast<char>(c);
-    } else {
-      char buf[4];
-      std::snprintf(buf, sizeof buf, "%%%02X", c);
-      s += buf;
-    }
-  }
-  return s;
 }
 
 // Text for the sheet's XML: control characters, and every byte above 127 of text that is not UTF-8,

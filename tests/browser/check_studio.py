@@ -63,10 +63,12 @@ try:
     check(port is not None, "the studio says where it listens: " + line)
     port = int(port.group(1))
 
-    def get(path, host=None):
+    def get(path, host=None, headers=()):
         c = http.client.HTTPConnection("127.0.0.1", port, timeout=10)
         c.putrequest("GET", path, skip_host=True)
         c.putheader("Host", host or "127.0.0.1:%d" % port)
+        for k, v in headers:
+            c.putheader(k, v)
         c.endheaders()
         r = c.getresponse()
         return r.status, r.read()
@@ -121,6 +123,18 @@ try:
     check(get("/out/../r.lua")[0] == 404, "a path out of the output folder is refused")
     check(get("/run?level=99")[0] == 400, "a value outside its range is refused")
     check(get("/run?levle=3")[0] == 400, "a name that is no parameter is refused")
+    # Another site's page cannot make the browser drive it (an <img src=".../run?..."> sends these).
+    check(get("/run?level=3", headers=[("Origin", "https://evil.example")])[0] == 403, "a foreign Origin is refused")
+    check(get("/run?level=3", headers=[("Sec-Fetch-Site", "cross-site")])[0] == 403, "a cross-site fetch is refused")
+    # Connections that send nothing (a slowloris, a browser's preconnect) hold up no other request: with ten
+    # of them open, a request is still answered (get's own 10 s limit would fail it otherwise).
+    import socket
+    idle = [socket.create_connection(("127.0.0.1", port)) for _ in range(10)]
+    for s in idle[:5]:
+        s.sendall(b"GET /params HTTP/1.1\r\n")  # half a request
+    check(get("/params")[0] == 200, "a request is answered while idle connections are open")
+    for s in idle:
+        s.close()
 finally:
     if driver:
         driver.quit()

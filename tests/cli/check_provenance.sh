@@ -49,13 +49,26 @@ cmp -s again/s.3mf out/s.3mf || fail "rerun's s.3mf differs"
 grep -qF "rerun-2/s.stl" out.txt || fail "a second rerun takes a new folder: $(cat out.txt)"
 "$selfsim" rerun out/c.vtp -o again >out.txt 2>err.txt
 [ $? = 2 ] || fail "rerun into a folder that is not empty should exit 2"
-grep -qF "is not empty" err.txt || fail "non-empty folder message: $(cat err.txt)"
+grep -qF "is not an empty folder" err.txt || fail "non-empty folder message: $(cat err.txt)"
 # A changed recipe: a warning, and different bytes (its fingerprint is in the file).
 echo "-- changed" >>r.lua
 "$selfsim" rerun out/c.svg -o changed >out.txt 2>err.txt
 [ $? = 1 ] || fail "rerun of a changed recipe should exit 1"
 grep -qF "has changed since 'out/c.svg' was made" err.txt || fail "changed recipe warning: $(cat err.txt)"
 grep -qF "different: changed/c.svg differs from out/c.svg" out.txt || fail "changed recipe result: $(cat out.txt)"
+# A crafted record: a name outside the run's folder, a key no --set could have.
+sed 's|"name": "c.svg"|"name": "../c.svg"|' out/c.svg >crafted.svg
+"$selfsim" rerun crafted.svg -o c1 >/dev/null 2>err.txt
+[ $? = 2 ] || fail "rerun of a record naming ../c.svg should exit 2"
+grep -qF "not a file inside a run's folder" err.txt || fail "crafted name message: $(cat err.txt)"
+sed 's|"set": {"level": "5"}|"set": {"level=1,2": "5"}|' out/c.svg >crafted2.svg
+"$selfsim" rerun crafted2.svg -o c2 >/dev/null 2>err.txt
+[ $? = 2 ] || fail "rerun of a record with a key holding = should exit 2"
+[ -e c2 ] && fail "a refused rerun made its folder"
+mkfifo fifo.svg
+timeout 10 "$selfsim" rerun fifo.svg >/dev/null 2>err.txt
+[ $? = 2 ] || fail "rerun of a FIFO should exit 2 at once"
+
 # A file with no record, and one whose recipe is gone.
 printf '<svg xmlns="http://www.w3.org/2000/svg"><path d="M0 0L1 1"/></svg>\n' >plain.svg
 "$selfsim" rerun plain.svg >/dev/null 2>err.txt

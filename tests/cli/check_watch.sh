@@ -57,6 +57,19 @@ save(curves.dragon():curve(7), "c.svg")'
 until_ok same_drawing out/c.svg ref7/c.svg || fail "the slow run was not stopped for the change: $(tail -3 log.txt)"
 grep -qF "run stopped, starting again" log.txt || fail "the stopped run is said: $(cat log.txt)"
 
+# A run whose file cannot go in (a folder is where it goes) fails; watching goes on.
+mkdir -p out/blocked.svg
+save_as r.lua 'local curves = require "selfsim.curves"
+save(curves.dragon():curve(3), "blocked.svg")'
+until_ok grep -qF "is a folder where the run's file goes" err.txt || fail "a file that cannot go in: $(tail -2 err.txt)"
+kill -0 $pid 2>/dev/null || fail "watching stopped when a run's file could not go in"
+rmdir out/blocked.svg
+
+# A second watcher on the same output folder is refused (they would remove each other's staging).
+"$selfsim" run r.lua --watch -o out >/dev/null 2>err2.txt
+[ $? = 2 ] || fail "a second watcher on one output folder should be refused"
+grep -qF "another studio or --watch is using the output folder" err2.txt || fail "lock message: $(cat err2.txt)"
+
 # Ctrl-C stops watching: exit 130, no run left, no staging folder.
 kill -INT $pid
 code=0
