@@ -13,6 +13,6 @@ trap 'rm -rf "$tmp"' EXIT
 cat >"$tmp/one_by_one.sh" <<SH
 for k in \$(seq 1 $runs); do "$selfsim" run "$src/bench/recipes/sweep_curve.lua" -o "$tmp/seq/k=\$k" --set k=\$k --threads $threads -q; done
 SH
-farm-bench -n 3 --timeout 600 --vs "bash $tmp/one_by_one.sh" -- \
+farm-bench -n 5 --timeout 900 --vs "bash $tmp/one_by_one.sh" -- \
   "$selfsim" run "$src/bench/recipes/sweep_curve.lua" -o "$tmp/sweep" --set "k=1..$runs" --jobs "$jobs" -q
 echo "goal: the sweep at most 1.1 / $jobs = $(echo "scale=3; 1.1 / $jobs" | bc) of the one-by-one time"
