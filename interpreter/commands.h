@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "interpreter/run_context.h"
+#include "interpreter/shell_quote.h"  // shell_word, shell_command
 
 namespace selfsim::interp {
 
@@ -57,10 +58,5 @@ double number_argument(const std::string& flag, const std::string& text, double 
 // Parses the arguments after `selfsim run`. Throws UsageError.
 RunConfig parse_run_arguments(const std::vector<std::string>& args);
 
-// "selfsim run a.lua --set 'name=two words'": the command line of `args`, quoted for a POSIX shell where
-// needed, for messages that suggest the command meant.
-std::string shell_command(const std::vector<std::string>& args);
-// One word for a POSIX shell: as it is when that is safe, else in single quotes.
-std::string shell_word(const std::string& word);
 
 }  // namespace selfsim::interp

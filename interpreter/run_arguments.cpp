@@ -22,23 +22,6 @@ double number_argument(const std::string& flag, const std::string& text, double 
   return *v;
 }
 
-std::string shell_word(const std::string& a) {
-  const bool plain = !a.empty() && std::all_of(a.begin(), a.end(), [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) ||
-           std::string_view("_-.,/=:+@%").find(c) != std::string_view::npos;
-  });
-  if (plain) return a;
-  std::string word = "'";
-  for (char c : a) word += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return word + "'";
-}
-
-std::string shell_command(const std::vector<std::string>& args) {
-  std::string line = "selfsim";
-  for (const std::string& a : args) line += " " + shell_word(a);
-  return line;
-}
-
 namespace {
 
 // A size in bytes with an optional binary suffix: 512M, 8G, 1T, or plain bytes.

@@ -39,7 +39,12 @@ std::vector<std::string> run_arguments(const RunConfig& run, const SweepRun& one
 // or Slurm script named like a file of the sweep's own. Throws UsageError.
 void check_sweep_folders(const SweepConfig& config, const SweepPlan& plan);
 
-// Writes the job list and/or the Slurm scripts into the output folder and says how to run them.
+// Refuses (UsageError), before anything is written, a job list or Slurm script that no shell could read
+// line by line as written: a path, name or --set value holding a line break (shell_quote.h).
+void check_job_lists(const SweepConfig& config, const SweepPlan& plan, const std::string& exe);
+
+// Writes the job list and/or the Slurm scripts into the output folder and says how to run them: every
+// path, value and name in them quoted for the shell by shell_quote.h's one rule.
 int write_job_lists(const SweepConfig& config, const SweepPlan& plan, const std::string& exe);
 
 // Each run's exit code as its folder's selfsim.exit records it; -1 where there is none.

@@ -168,9 +168,11 @@ int sweep_command(const SweepConfig& c) {
   }
   check_sweep_params(c.run, plan);
   check_sweep_folders(c, plan);
+  const bool lists = !c.jobs_file.empty() || !c.slurm.empty();
+  if (lists) check_job_lists(c, plan, selfsim_executable());
   std::filesystem::create_directories(out);
   io::write_whole(out, "sweep.json", manifest(c, plan));
-  if (!c.jobs_file.empty() || !c.slurm.empty()) return write_job_lists(c, plan, selfsim_executable());
+  if (lists) return write_job_lists(c, plan, selfsim_executable());
 
   const int jobs = c.run.jobs > 0 ? c.run.jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   if (!c.run.quiet)

@@ -7,6 +7,7 @@
 #include "interpreter/commands.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/param_spec.h"
+#include "interpreter/shell_quote.h"
 #include "interpreter/sweep.h"
 #include "kernels/geom/check.h"
 #include "kernels/io/output_file.h"
@@ -15,9 +16,10 @@ namespace selfsim::interp {
 
 namespace {
 
+// A line of the job list or a script from words: each quoted by the one rule (shell_quote.h).
 std::string words(const std::vector<std::string>& args) {
   std::string line;
-  for (const std::string& a : args) line += (line.empty() ? "" : " ") + shell_word(a);
+  for (const std::string& a : args) line += (line.empty() ? "" : " ") + script_word(a, "a word of the line");
   return line;
 }
 
@@ -29,6 +31,63 @@ std::vector<std::string> collect_arguments(const SweepConfig& c, const std::stri
   a.push_back("--collect");
   if (!c.sheet) a.push_back("--no-sheet");
   return a;
+}
+
+// The job list and Slurm scripts, whole, before any is written.
+struct JobLists {
+  std::string list, list_path, jobs;                     // the job list's name, path and text
+  std::string collect;                                   // the collect command's line
+  std::string array_text, collect_script, collect_text;  // with --slurm
+};
+
+JobLists job_lists(const SweepConfig& c, const SweepPlan& plan, const std::string& exe) {
+  const std::filesystem::path out = std::filesystem::absolute(c.run.out_dir).lexically_normal();
+  const std::filesystem::path recipe = std::filesystem::absolute(c.run.recipe).lexically_normal();
+  // Every text that reaches a line, by where it came from, so a refusal names it; words() below refuses
+  // the same for any word at all.
+  script_word(exe, "selfsim's own path");
+  script_word(recipe.string(), "the recipe's path");
+  script_word(out.string(), "the output folder");
+  script_word(c.jobs_file, "--jobs-file");
+  script_word(c.slurm, "--slurm");
+  for (const auto& [key, text] : c.run.sets) script_word(key + "=" + text, "--set");
+  const int threads = c.run.threads > 0 ? c.run.threads : 1;
+  SweepConfig absolute = c;
+  absolute.run.recipe = recipe;
+  JobLists j;
+  for (const SweepRun& run : plan.runs) {
+    const std::string dir = (out / run.folder).string();
+    std::vector<std::string> a = run_arguments(absolute.run, run, dir, threads);
+    a.insert(a.begin(), exe);
+    // The run's messages go to its log and its exit code beside them, which --collect reads.
+    // As in a local sweep, the folder is the run's alone: an earlier sweep's files are removed first.
+    j.jobs += words({"rm", "-rf", dir}) + " && " + words({"mkdir", "-p", dir}) + " && " + words(a) + " >" +
+              words({dir + "/selfsim.log"}) + " 2>&1; echo $? >" + words({dir + "/selfsim.exit"}) + "\n";
+  }
+  j.list = c.jobs_file.empty() ? "jobs.txt" : c.jobs_file;
+  j.list_path = (out / j.list).string();
+  j.collect = words(collect_arguments(c, exe, out, recipe));
+  if (c.slurm.empty()) return j;
+  // sbatch reads #SBATCH lines itself, not through a shell: a path is double-quoted (a space would end
+  // it) and its '%' doubled (sbatch expands %j, %a, ... there).
+  const std::string folder = (out / "slurm").string();
+  if (folder.find_first_of("\"\n\r") != std::string::npos)
+    throw UsageError("--slurm: the output folder's path holds a '\"' or a line break, which an #SBATCH line cannot");
+  std::string logs;
+  for (char ch : folder) logs += ch == '%' ? std::string("%%") : std::string(1, ch);
+  auto output = [&](const std::string& leaf) { return "#SBATCH --output=\"" + logs + "/" + leaf + "\"\n"; };
+  j.array_text =
+      "#!/bin/bash\n# One Slurm array task per run of the sweep of " + script_comment(recipe.filename().string()) +
+      " (" + std::to_string(plan.runs.size()) + " runs): task i runs line i + 1 of " + script_comment(j.list) + ".\n" +
+      "#SBATCH --job-name=selfsim-sweep\n#SBATCH --array=0-" + std::to_string(plan.runs.size() - 1) +
+      "\n#SBATCH --cpus-per-task=" + std::to_string(threads) + "\n" + output("run-%a.out") +
+      "line=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" " + words({j.list_path}) + ")\nexec bash -c \"$line\"\n";
+  j.collect_script = "collect-" + c.slurm;
+  j.collect_text =
+      "#!/bin/bash\n# The sheets and ParaView series of the sweep, once its array has ended.\n"
+      "#SBATCH --job-name=selfsim-collect\n" +
+      output("collect.out") + j.collect + "\n";
+  return j;
 }
 
 }  // namespace
@@ -47,60 +106,27 @@ std::vector<std::string> run_arguments(const RunConfig& r, const SweepRun& run, 
   return a;
 }
 
+void check_job_lists(const SweepConfig& c, const SweepPlan& plan, const std::string& exe) { job_lists(c, plan, exe); }
+
 int write_job_lists(const SweepConfig& c, const SweepPlan& plan, const std::string& exe) {
+  const JobLists j = job_lists(c, plan, exe);
   const std::filesystem::path out = std::filesystem::absolute(c.run.out_dir).lexically_normal();
-  const std::filesystem::path recipe = std::filesystem::absolute(c.run.recipe).lexically_normal();
-  const int threads = c.run.threads > 0 ? c.run.threads : 1;
-  SweepConfig absolute = c;
-  absolute.run.recipe = recipe;
-  std::string jobs;
-  for (const SweepRun& run : plan.runs) {
-    const std::string dir = (out / run.folder).string();
-    std::vector<std::string> a = run_arguments(absolute.run, run, dir, threads);
-    a.insert(a.begin(), exe);
-    // The run's messages go to its log and its exit code beside them, which --collect reads.
-    // As in a local sweep, the folder is the run's alone: an earlier sweep's files are removed first.
-    jobs += "rm -rf " + shell_word(dir) + " && mkdir -p " + shell_word(dir) + " && " + words(a) + " >" +
-            shell_word(dir + "/selfsim.log") + " 2>&1; echo $? >" + shell_word(dir + "/selfsim.exit") + "\n";
-  }
-  const std::string list = c.jobs_file.empty() ? "jobs.txt" : c.jobs_file;
-  io::write_whole(out, list, jobs);
-  const std::string collect = words(collect_arguments(c, exe, out, recipe));
-  const std::string list_path = (out / list).string();
+  io::write_whole(out, j.list, j.jobs);
   if (!c.run.quiet) {
-    std::printf("wrote %s (%zu runs)\n", shown_text(list_path).c_str(), plan.runs.size());
+    std::printf("wrote %s (%zu runs)\n", shown_text(j.list_path).c_str(), plan.runs.size());
     if (!c.jobs_file.empty())
       std::printf(
           "  run it here:           parallel --jobs 2 < %s\n"
           "  or on many machines:   parallel --sshloginfile nodes.txt --jobs 1 < %s\n"
           "  (the recipe, the output folder and selfsim at the same paths on every machine)\n"
           "  then the sheets:       %s\n",
-          shell_word(list_path).c_str(), shell_word(list_path).c_str(), collect.c_str());
+          shell_word(j.list_path).c_str(), shell_word(j.list_path).c_str(), j.collect.c_str());
   }
   if (c.slurm.empty()) return 0;
   std::filesystem::create_directories(out / "slurm");
-  // sbatch reads #SBATCH lines itself, not through a shell: a path is double-quoted (a space would end
-  // it) and its '%' doubled (sbatch expands %j, %a, ... there).
-  const std::string folder = (out / "slurm").string();
-  if (folder.find_first_of("\"\n") != std::string::npos)
-    throw UsageError("--slurm: the output folder's path holds a '\"' or a line break, which an #SBATCH line cannot");
-  std::string logs;
-  for (char ch : folder) logs += ch == '%' ? std::string("%%") : std::string(1, ch);
-  auto output = [&](const std::string& leaf) { return "#SBATCH --output=\"" + logs + "/" + leaf + "\"\n"; };
-  io::write_whole(
-      out, c.slurm,
-      "#!/bin/bash\n"
-      "# One Slurm array task per run of the sweep of " +
-          recipe.filename().string() + " (" + std::to_string(plan.runs.size()) + " runs): task i runs line i + 1 of " +
-          list + ".\n" + "#SBATCH --job-name=selfsim-sweep\n#SBATCH --array=0-" + std::to_string(plan.runs.size() - 1) +
-          "\n#SBATCH --cpus-per-task=" + std::to_string(threads) + "\n" + output("run-%a.out") +
-          "line=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" " + shell_word(list_path) + ")\nexec bash -c \"$line\"\n");
-  const std::string collect_script = "collect-" + c.slurm;
-  io::write_whole(out, collect_script,
-                  "#!/bin/bash\n# The sheets and ParaView series of the sweep, once its array has ended.\n"
-                  "#SBATCH --job-name=selfsim-collect\n" +
-                      output("collect.out") + collect + "\n");
-  const std::string array = shell_word((out / c.slurm).string()), after = shell_word((out / collect_script).string());
+  io::write_whole(out, c.slurm, j.array_text);
+  io::write_whole(out, j.collect_script, j.collect_text);
+  const std::string array = shell_word((out / c.slurm).string()), after = shell_word((out / j.collect_script).string());
   if (!c.run.quiet)
     std::printf("wrote %s and %s\n  submit: jid=$(sbatch --parsable %s) && sbatch --dependency=afterany:$jid %s\n",
                 array.c_str(), after.c_str(), array.c_str(), after.c_str());
