@@ -16,7 +16,6 @@
 #include "interpreter/lua_support.h"
 #include "interpreter/options_reader.h"
 #include "interpreter/param_spec.h"
-#include "interpreter/parse_text.h"
 #include "interpreter/print_options.h"
 #include "interpreter/run_context.h"
 #include "interpreter/save_support.h"
@@ -204,16 +203,7 @@ int param(lua_State* L) {
       lua_pushvalue(L, 2);
       return 1;
     }
-    const std::string& text = it->second;
-    check_param_value(spec, text);
-    if (spec.type == ParamSpec::Type::string)
-      lua_pushlstring(L, text.data(), text.size());
-    else if (spec.type == ParamSpec::Type::boolean)
-      lua_pushboolean(L, text == "true");
-    else if (const auto whole = parse_text<long long>(text))
-      lua_pushinteger(L, *whole);  // a number default takes any number: integers stay integers
-    else
-      lua_pushnumber(L, *parse_text<double>(text));
+    push_param_value(L, spec, it->second);
     return 1;
   });
 }

@@ -33,8 +33,13 @@ const char* type_name(ParamSpec::Type type);
 // string, min above max, a default outside its range or not among its choices, a step that is not > 0.
 ParamSpec read_param_spec(lua_State* L, const std::string& name, int def, int opts);
 
-// Checks `text` (a --set value) against the parameter; throws Error naming its range or choices.
+// Checks `text` (a --set value) against the parameter: its type (a whole number for an integer), range or
+// choices; throws Error naming the parameter and what it expects. Sweeps and the studio check with this.
 void check_param_value(const ParamSpec& spec, const std::string& text);
+
+// The one conversion of a --set value into the recipe's value: checked as above, then pushed with the
+// parameter's type (an integer parameter always as a Lua integer).
+void push_param_value(lua_State* L, const ParamSpec& spec, const std::string& text);
 
 // The parameters as `selfsim params` prints them: a JSON array of objects, one per line.
 std::string params_json(const std::vector<ParamSpec>& specs);

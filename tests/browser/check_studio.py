@@ -122,6 +122,7 @@ try:
     check(get("/state", host="evil.example:%d" % port)[0] == 403, "another Host is refused")
     check(get("/out/../r.lua")[0] == 404, "a path out of the output folder is refused")
     check(get("/run?level=99")[0] == 400, "a value outside its range is refused")
+    check(get("/run?level=2.5")[0] == 400, "a fraction for an integer parameter is refused")
     check(get("/run?levle=3")[0] == 400, "a name that is no parameter is refused")
     # Another site's page cannot make the browser drive it (an <img src=".../run?..."> sends these).
     check(get("/run?level=3", headers=[("Origin", "https://evil.example")])[0] == 403, "a foreign Origin is refused")
