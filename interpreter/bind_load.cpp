@@ -82,7 +82,11 @@ std::variant<Polyline, Polyline3, Mesh> load_value(lua_State* L, const std::stri
   // level set's voxels for a caller that asks.
   io::Dataset read;
   if (vdb) {
-    io::VdbSurface surface = io::read_vdb_surface(file.name(), grid, name);
+    // Its active tiles (and, for a caller that asks, its voxels) weighed against the run's budget first.
+    io::VdbSurface surface = with_budget(L, [&](const PointBudget& budget) {
+      return io::read_vdb_surface(file.name(),
+                                  {.grid = grid, .shown_as = name, .budget = budget, .samples = samples != nullptr});
+    });
     read = std::move(surface.mesh);
     if (samples) {
       check_run_budget(L, static_cast<double>(surface.samples.bytes()) / 16,

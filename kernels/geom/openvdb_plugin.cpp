@@ -55,9 +55,8 @@ namespace io {
 
 std::vector<VdbGridInfo> read_vdb_info(const std::filesystem::path& file) { return openvdb().read_vdb_info(file); }
 
-VdbSurface read_vdb_surface(const std::filesystem::path& file, const std::string& grid,
-                            const std::filesystem::path& shown_as) {
-  return openvdb().read_vdb_surface(file, grid, shown_as);
+VdbSurface read_vdb_surface(const std::filesystem::path& file, const VdbReadOptions& opt) {
+  return openvdb().read_vdb_surface(file, opt);
 }
 
 }  // namespace io

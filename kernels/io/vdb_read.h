@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "kernels/geom/budget.h"
 #include "kernels/geom/grid_samples.h"
 #include "kernels/io/dataset.h"
 
@@ -43,9 +44,18 @@ struct VdbSurface {
   GridSamples samples;
 };
 
-// `grid` names the grid to take instead (any float grid); `shown_as` is the name messages give the file (a
-// file opened under another name, FileBeneath::name()), by default `file`.
-VdbSurface read_vdb_surface(const std::filesystem::path& file, const std::string& grid = "",
-                            const std::filesystem::path& shown_as = {});
+struct VdbReadOptions {
+  std::string grid;                // the grid to take instead (any float grid); empty: chosen as above
+  std::filesystem::path shown_as;  // the name messages give the file (FileBeneath::name()); empty: the file
+  // The run's point budget. Active tiles (one value for a block of 8^3, 128^3 or 4096^3 voxels, as Houdini
+  // and Blender write) are weighed against it before anything is meshed or sent: their surface, and with
+  // `samples` their voxels, so a 2^36-voxel tile is refused at once instead of voxelised.
+  PointBudget budget;
+  bool samples = false;  // send a level set's voxels (VdbSurface::samples), its active tiles as voxels
+};
+
+// Grids that would mesh wrongly are refused with what is wrong with them: a level set inside out (negative
+// outside), one so far from its index or world origin that single-precision positions lose its voxels.
+VdbSurface read_vdb_surface(const std::filesystem::path& file, const VdbReadOptions& opt = {});
 
 }  // namespace selfsim::io

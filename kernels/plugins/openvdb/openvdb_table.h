@@ -23,7 +23,7 @@ struct OpenVdbTable {
   void (*wall_clearances)(const WallGrid&, std::span<const Vec3>, std::span<double>);
   double (*wall_voxel)(const WallGrid&);
   std::vector<io::VdbGridInfo> (*read_vdb_info)(const std::filesystem::path&);
-  io::VdbSurface (*read_vdb_surface)(const std::filesystem::path&, const std::string&, const std::filesystem::path&);
+  io::VdbSurface (*read_vdb_surface)(const std::filesystem::path&, const io::VdbReadOptions&);
   double (*grid_thicken_size)(const Mesh&, const print::GridThickenOptions&);
   Mesh (*thicken_on_grid)(const Mesh&, const print::GridThickenOptions&, Progress&);
 };

@@ -8,10 +8,13 @@
 #include <tbb/global_control.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <mutex>
 
 #include "kernels/geom/check.h"
+#include "kernels/geom/count_text.h"
 #include "kernels/geom/error.h"
 #include "kernels/io/child_process.h"
 #include "kernels/io/dataset_pipe.h"
@@ -120,6 +123,8 @@ auto reading(const std::filesystem::path& file, Read read) {
     return read();
   } catch (const std::bad_alloc&) {
     throw Error(cannot_read(file, "out of memory"));
+  } catch (const BudgetError&) {  // names the file itself; the run may collect garbage and try again
+    throw;
   } catch (const std::exception& e) {
     const std::string message = e.what();
     if (message.rfind("cannot read '", 0) == 0) throw;
@@ -161,8 +166,116 @@ void send_info(PipeOut& out, openvdb::io::File& file) {
   }
 }
 
-// Chooses the grid (see vdb_read.h), reads it, meshes it and sends the description and the Dataset.
-void send_surface(PipeOut& out, openvdb::io::File& file, const std::string& wanted) {
+// The farthest a grid's voxels may lie from its index origin, and its surface from the world origin, in
+// voxels: volumeToMesh's positions are single-precision floats (24 bits), which resolve 1/16 of a voxel
+// out to 2^20 voxels; beyond that a surface's points snap together and its polygons cross.
+constexpr double farthest_voxels = 1 << 20;
+
+// A grid's value as the float it is ("-0.3", not "-0.30000001192093").
+std::string float_text(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.7g", v);
+  return buf;
+}
+
+// Refuses a grid that would mesh into something else than its surface, saying what is wrong with the grid.
+void check_grid(const openvdb::FloatGrid& grid, bool fog) {
+  const std::string name = "grid '" + shown(grid.getName()) + "'";
+  const double background = grid.background();
+  if (!std::isfinite(background)) throw Error(name + " has a background that is not finite");
+  // The background is the value everywhere outside the stored voxels: it says which side is outside.
+  if (!fog && background < 0)
+    throw Error(name + " is inside out: its background (the value outside) is " + float_text(background) +
+                ", negative, where a level set is negative inside and positive outside; negate its values and "
+                "background and save it again");
+  if (fog && background > 0.5)
+    throw Error(name + " is inside out: its background (the density outside) is " + float_text(background) +
+                ", above the 0.5 its surface is drawn at; save it with an empty (0) background");
+  // Each of the 6 outermost active voxels (or tiles), one along each axis each way.
+  std::array<openvdb::Coord, 6> outermost;
+  bool any = false;
+  for (auto v = grid.cbeginValueOn(); v; ++v) {
+    openvdb::CoordBBox box;
+    v.getBoundingBox(box);
+    for (int k = 0; k < 3; ++k) {
+      if (!any || box.min()[k] < outermost[2 * k][k]) outermost[2 * k] = box.min();
+      if (!any || box.max()[k] > outermost[2 * k + 1][k]) outermost[2 * k + 1] = box.max();
+    }
+    any = true;
+  }
+  if (!any) return;
+  double index = 0, world = 0;
+  openvdb::Coord farthest;
+  for (const openvdb::Coord& c : outermost) {
+    const openvdb::Vec3d w = grid.indexToWorld(c);
+    for (int k = 0; k < 3; ++k) {
+      if (std::abs(static_cast<double>(c[k])) > index) farthest = c;
+      index = std::max(index, std::abs(static_cast<double>(c[k])));
+      world = std::max(world, std::abs(w[k]));
+    }
+  }
+  const openvdb::Vec3d size = grid.voxelSize();
+  world /= std::min({size[0], size[1], size[2]});
+  if (!(index <= farthest_voxels && world <= farthest_voxels))
+    throw Error(name + " lies " + count_text(std::round(std::max(index, world))) + " voxels from " +
+                (index > farthest_voxels ? "index (0, 0, 0) (its voxels reach (" + std::to_string(farthest[0]) + ", " +
+                                               std::to_string(farthest[1]) + ", " + std::to_string(farthest[2]) + "))"
+                                         : std::string("the world origin")) +
+                ", beyond the " + count_text(farthest_voxels) +
+                " within which single-precision positions resolve its voxels; move it nearer the origin and save it "
+                "again");
+  // Just beyond the outermost voxels is outside: a grid inside there is inside out (its values negated, its
+  // background left as it was), whatever its background says.
+  const auto access = grid.getConstAccessor();
+  for (int side = 0; side < 6; ++side) {
+    openvdb::Coord beyond = outermost[side];
+    beyond[side / 2] += side % 2 ? 1 : -1;
+    const double value = access.getValue(beyond);
+    if (fog ? value > 0.5 : value < 0)
+      throw Error(name + " is inside out: just outside its active voxels it is " + float_text(value) + " (at index (" +
+                  std::to_string(beyond[0]) + ", " + std::to_string(beyond[1]) + ", " + std::to_string(beyond[2]) +
+                  ")), where " +
+                  (fog ? "a fog volume is dense inside and empty outside"
+                       : "a level set is negative inside and positive outside") +
+                  "; negate its values and save it again");
+  }
+}
+
+// A grid's active tiles: how many, and the voxels on their faces (6 d^2 for a tile d voxels wide), at most
+// one point of volumeToMesh's surface each. (An inactive tile is not meshed.)
+struct Tiles {
+  std::uint64_t count = 0;
+  double surface = 0;
+};
+
+Tiles active_tiles(const openvdb::FloatGrid& grid) {
+  Tiles t;
+  auto it = grid.cbeginValueOn();
+  it.setMaxDepth(openvdb::FloatGrid::ValueOnCIter::LEAF_DEPTH - 1);  // tiles only, no leaf voxel
+  for (; it; ++it) {
+    openvdb::CoordBBox box;
+    it.getBoundingBox(box);
+    const double d = box.dim().x();
+    ++t.count;
+    t.surface += 6 * d * d;
+  }
+  return t;
+}
+
+// Active voxels, a tile's counted voxel by voxel (activeVoxelCount, counted in a double: a few thousand
+// root tiles of 2^36 voxels each would overflow 64 bits).
+double active_voxels(const openvdb::FloatGrid& grid) {
+  double n = static_cast<double>(grid.tree().activeLeafVoxelCount());
+  auto it = grid.cbeginValueOn();
+  it.setMaxDepth(openvdb::FloatGrid::ValueOnCIter::LEAF_DEPTH - 1);
+  for (; it; ++it) n += static_cast<double>(it.getVoxelCount());
+  return n;
+}
+
+// Chooses the grid (see vdb_read.h), reads it, checks it, sends its description and what its tiles weigh
+// (the parent refuses them here, before any meshing), then meshes it and sends the Dataset and, with
+// `samples`, its voxels.
+void send_surface(PipeOut& out, openvdb::io::File& file, const std::string& wanted, bool samples) {
   const openvdb::GridPtrVecPtr grids = file.readAllGridMetadata();
   openvdb::GridBase::Ptr chosen;
   if (grids && !wanted.empty()) {
@@ -181,9 +294,10 @@ void send_surface(PipeOut& out, openvdb::io::File& file, const std::string& want
         if (!chosen && g->isType<openvdb::FloatGrid>() && (!level_set || g->getGridClass() == openvdb::GRID_LEVEL_SET))
           chosen = g;
   if (!chosen) throw Error("it holds no float grid (a level set or a fog volume) to draw a surface of");
-  // Refuse what would not fit before reading any voxel: the declared memory, or 4 bytes a voxel.
-  const std::uint64_t declared = std::max(meta_count(*chosen, openvdb::GridBase::META_FILE_MEM_BYTES),
-                                          4 * meta_count(*chosen, openvdb::GridBase::META_FILE_VOXEL_COUNT));
+  // Refuse what would not fit before reading any voxel: the declared memory, or 4 bytes a voxel where the file
+  // declares none (a tile's voxels take no memory of their own: its count is weighed once it is read).
+  const std::uint64_t mem = meta_count(*chosen, openvdb::GridBase::META_FILE_MEM_BYTES);
+  const std::uint64_t declared = mem > 0 ? mem : 4 * meta_count(*chosen, openvdb::GridBase::META_FILE_VOXEL_COUNT);
   if (declared > read_budget_bytes() / 4)
     throw Error("grid '" + shown(chosen->getName()) + "' declares " + std::to_string(declared >> 20) +
                 " MiB, over the reading limit of " + std::to_string(read_budget_bytes() / 4 >> 20) + " MiB");
@@ -207,16 +321,28 @@ void send_surface(PipeOut& out, openvdb::io::File& file, const std::string& want
   } else {
     what += " at 0";
   }
-  if (!std::isfinite(grid->background()))
-    throw Error("grid '" + shown(grid->getName()) + "' has a background that is not finite");
+  check_grid(*grid, c == openvdb::GRID_FOG_VOLUME);
+  const Tiles tiles = active_tiles(*grid);
+  // A level set's own voxels (GridSamples) when asked, and when its transform is a uniform scale and
+  // translation.
+  const auto map = grid->transform().mapType();
+  const bool uniform =
+      map == openvdb::math::UniformScaleMap::mapType() || map == openvdb::math::UniformScaleTranslateMap::mapType();
+  samples = samples && c == openvdb::GRID_LEVEL_SET && uniform && grid->background() > 0;
+  out.write("D", 1);
+  put_name(out, grid->getName());
+  put_name(out, what);
+  put_count(out, tiles.count);
+  put_double(out, tiles.surface);
+  put_double(out, samples ? active_voxels(*grid) : 0.0);
+  out.flush();  // the parent weighs these while the mesh is made, and ends this process if they do not fit
   std::vector<openvdb::Vec3s> points;
   std::vector<openvdb::Vec3I> triangles;
   std::vector<openvdb::Vec4I> quads;
   openvdb::tools::volumeToMesh(*grid, points, triangles, quads, iso, 0.0);
+  // After the header a second 'D', or 'E' and the reason (in_child sends it for what is thrown here).
   if (points.empty()) throw Error("grid '" + shown(grid->getName()) + "' has no surface at " + number_text(iso));
   out.write("D", 1);
-  put_name(out, grid->getName());
-  put_name(out, what);
   // The Dataset in dataset_pipe.h's wire format: polygons, points, cell ends, cell points, no fields.
   put_count(out, static_cast<std::uint64_t>(CellShapes::polygons));
   put_count(out, points.size());
@@ -234,49 +360,54 @@ void send_surface(PipeOut& out, openvdb::io::File& file, const std::string& want
   put_count(out, 0);
   put_count(out, 0);
   put_name(out, "");  // no provenance inside: a .vdb carries it beside it (provenance.h)
-  // A level set's own voxels (GridSamples), or none: a count, then the voxel, origin and background, then
-  // each voxel's index and value.
-  const auto map = grid->transform().mapType();
-  const bool uniform =
-      map == openvdb::math::UniformScaleMap::mapType() || map == openvdb::math::UniformScaleTranslateMap::mapType();
-  if (c != openvdb::GRID_LEVEL_SET || !uniform || !(grid->background() > 0)) {
-    put_count(out, 0);
-    return;
-  }
-  put_count(out, grid->activeVoxelCount());
+  if (!samples) return;
+  // The voxel, origin and background, then each active value once: a voxel or a whole tile, as its lowest
+  // corner, its width (1 for a voxel) and its value. The parent expands the tiles into the count announced.
   put_double(out, grid->voxelSize()[0]);
   const openvdb::Vec3d origin = grid->indexToWorld(openvdb::Vec3d(0, 0, 0));
   for (int k = 0; k < 3; ++k) put_double(out, origin[k]);
   put_double(out, grid->background());
   for (auto v = grid->cbeginValueOn(); v; ++v) {
-    const openvdb::Coord ijk = v.getCoord();
-    for (int k = 0; k < 3; ++k) put_double(out, ijk[k]);
+    openvdb::CoordBBox box;
+    v.getBoundingBox(box);
+    for (int k = 0; k < 3; ++k) put_count(out, static_cast<std::uint64_t>(static_cast<std::int64_t>(box.min()[k])));
+    put_count(out, static_cast<std::uint64_t>(box.dim().x()));
     put_double(out, *v);
   }
 }
 
-// What send_surface sent after the surface: the level set's voxels, each checked finite and in range.
-GridSamples receive_samples(PipeIn& in) {
+// What send_surface sent after the surface: `voxels` voxels (0: none sent), each checked finite and in
+// range, a tile's expanded into one sample per voxel.
+GridSamples receive_samples(PipeIn& in, std::uint64_t voxels) {
   GridSamples g;
-  const std::uint64_t n = get_count(in, read_budget_bytes() / 32);
-  if (n == 0) return g;
+  if (voxels == 0) return g;
   g.voxel = get_double(in);
   g.origin = {get_double(in), get_double(in), get_double(in)};
   g.background = get_double(in);
   if (!(g.voxel > 0 && std::isfinite(g.voxel) && is_finite(g.origin) && g.background > 0 &&
         std::isfinite(g.background)))
     throw Error("the OpenVDB reader sent a malformed answer");
-  g.index.resize(n);
-  g.value.resize(n);
-  for (std::uint64_t i = 0; i < n; ++i) {
-    for (int k = 0; k < 3; ++k) {
-      const double x = get_double(in);
-      if (!(std::abs(x) < 2147483647.0)) throw Error("the OpenVDB reader sent a malformed answer");
-      g.index[i][k] = static_cast<std::int32_t>(x);
-    }
+  g.index.reserve(voxels);
+  g.value.reserve(voxels);
+  while (g.index.size() < voxels) {
+    std::int64_t lo[3];
+    for (std::int64_t& x : lo) x = static_cast<std::int64_t>(get_count(in, ~std::uint64_t{0}));
+    const std::uint64_t side = get_count(in, 4096);  // the widest tile of a float grid: the root's, 4096
     const double v = get_double(in);
     if (!std::isfinite(v)) throw Error("grid values that are not finite");
-    g.value[i] = static_cast<float>(v);
+    if (side == 0 || side * side * side > voxels - g.index.size())
+      throw Error("the OpenVDB reader sent more voxels than it announced");
+    for (const std::int64_t x : lo)
+      if (x < -2147483647 || x + static_cast<std::int64_t>(side) > 2147483647)
+        throw Error("the OpenVDB reader sent a malformed answer");
+    const auto n = static_cast<std::int32_t>(side);
+    for (std::int32_t i = 0; i < n; ++i)
+      for (std::int32_t j = 0; j < n; ++j)
+        for (std::int32_t k = 0; k < n; ++k) {
+          g.index.push_back({static_cast<std::int32_t>(lo[0] + i), static_cast<std::int32_t>(lo[1] + j),
+                             static_cast<std::int32_t>(lo[2] + k)});
+          g.value.push_back(static_cast<float>(v));
+        }
   }
   return g;
 }
@@ -321,21 +452,52 @@ std::vector<VdbGridInfo> read_vdb_info(const std::filesystem::path& file) {
   });
 }
 
-VdbSurface read_vdb_surface(const std::filesystem::path& file, const std::string& grid,
-                            const std::filesystem::path& shown_as) {
-  return reading(shown_as.empty() ? file : shown_as, [&] {
+namespace {
+
+// Weighs what send_surface announced before meshing: its active tiles' surface (a point and two triangles
+// a voxel of their faces) and the voxels it would send, against the run's point budget and the reading
+// limit. Throws BudgetError or Error; the child is then ended before it meshes or sends anything more.
+void weigh(const VdbSurface& s, const std::filesystem::path& named, const VdbReadOptions& opt, std::uint64_t tiles,
+           double surface, double voxels) {
+  if (!(surface >= 0 && voxels >= 0 && (tiles > 0 || surface == 0)))
+    throw Error("the OpenVDB reader sent a malformed answer");
+  const std::string grid = "grid '" + shown(s.grid) + "' in '" + one_line(named.string()) + "'";
+  const std::string tile_text = std::to_string(tiles) + " active tile" + (tiles == 1 ? "" : "s");
+  if (tiles > 0) check_budget(3 * surface, opt.budget, "the surface of the " + tile_text + " of " + grid);
+  if (voxels == 0) return;
+  check_budget(voxels, opt.budget,
+               "the voxels of " + grid + (tiles > 0 ? " (its " + tile_text + " as voxels)" : std::string()));
+  const double most = static_cast<double>(read_budget_bytes() / 32);  // 16 bytes a sample, twice over
+  if (voxels > most)
+    throw Error("grid '" + shown(s.grid) + "' has " + count_text(voxels) + " active voxels" +
+                (tiles > 0 ? " (its " + tile_text + " as voxels)" : std::string()) + ", over the reading limit of " +
+                count_text(most) + " voxels");
+}
+
+}  // namespace
+
+VdbSurface read_vdb_surface(const std::filesystem::path& file, const VdbReadOptions& opt) {
+  const std::filesystem::path named = opt.shown_as.empty() ? file : opt.shown_as;
+  return reading(named, [&] {
     VdbSurface s;
     // The metadata first, under the metadata's memory limit, before a child that may read voxels.
     read_in_child(
         file, send_info, [](PipeIn& in) { receive_info(in); }, true);
-    const auto answer = [&](PipeOut& out, openvdb::io::File& f) { send_surface(out, f, grid); };
+    const auto answer = [&](PipeOut& out, openvdb::io::File& f) { send_surface(out, f, opt.grid, opt.samples); };
     read_in_child(
         file, answer,
         [&](PipeIn& in) {
           s.grid = get_name(in);
           s.what = get_name(in);
+          const std::uint64_t tiles = get_count(in, ~std::uint64_t{0});
+          const double surface = get_double(in), voxels = get_double(in);
+          weigh(s, named, opt, tiles, surface, voxels);
+          char kind = 0;  // the mesh, or why there is none
+          in.read(&kind, 1);
+          if (kind == 'E') throw Error(get_name(in).substr(0, 4096));
+          if (kind != 'D') throw Error("the OpenVDB reader sent a malformed answer");
           s.mesh = receive_dataset(in, read_budget_bytes() / 8);
-          s.samples = receive_samples(in);
+          s.samples = receive_samples(in, static_cast<std::uint64_t>(voxels));
         },
         false);
     const Dataset& d = s.mesh;

@@ -41,7 +41,8 @@ TEST(VdbRead, SphereSurfaceHasItsRadius) {
 // A level set's own voxels come back too: each the sphere's signed distance at its centre, and a WallGrid
 // measured on them reads the distance inside within its bound, at the file's voxel whatever it is asked.
 TEST(VdbRead, ALevelSetsVoxelsComeBackForTheWalls) {
-  const VdbSurface s = read_vdb_surface(sphere_vdb());
+  EXPECT_TRUE(read_vdb_surface(sphere_vdb()).samples.index.empty());  // only when asked
+  const VdbSurface s = read_vdb_surface(sphere_vdb(), {.samples = true});
   const GridSamples& g = s.samples;
   EXPECT_DOUBLE_EQ(g.voxel, 1.0 / 32);
   ASSERT_GT(g.index.size(), 10000u);
