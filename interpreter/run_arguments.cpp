@@ -95,6 +95,11 @@ RunConfig parse_run_arguments(const std::vector<std::string>& args) {
     else if (a == "--view-folder") {
       c.view_folder = value();
       if (c.view_folder.empty()) throw UsageError("--view-folder expects a folder name, got ''");
+    } else if (a == "--no-sheet" || a == "--jobs-file" || a == "--slurm" || a == "--collect") {
+      // sweep's own options: say the command that takes them, this one's arguments kept.
+      std::vector<std::string> line{"sweep"};
+      line.insert(line.end(), args.begin(), args.end());
+      throw UsageError(a + " is an option of sweep, not run: " + shell_command(line));
     } else if (!a.empty() && a[0] == '-') {
       const std::string near = suggestion(a, run_flags());
       throw UsageError("unknown option '" + a + "' for run" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));

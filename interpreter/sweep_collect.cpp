@@ -105,6 +105,25 @@ std::vector<double> series_times(const SweepPlan& plan) {
   return times;
 }
 
+// A run's preview of `leaf`, inside the sweep's previews/ folder.
+std::string preview_name(const std::string& folder, const std::string& leaf) {
+  return "previews/" + folder + "/" + fitting_name("", leaf, ".png");
+}
+
+// The ParaView series of the VTK output `leaf`: NAME_sweep.pvd for NAME.vtp, unless another VTK output of
+// the runs has the same NAME (a.vtp and a.vtu) or is named NAME itself; then each such series keeps its
+// output's whole name (a.vtp_sweep.pvd, a.vtu_sweep.pvd), so no series replaces another.
+std::string series_name(const std::string& leaf, const std::map<std::string, std::vector<bool>>& outputs) {
+  const std::string stem = std::filesystem::path(leaf).stem().string();
+  bool shared = false;
+  for (const auto& [other, have] : outputs) {
+    const std::string ext = lower_case(std::filesystem::path(other).extension().string());
+    if (other == leaf || (ext != ".vtp" && ext != ".vtu")) continue;
+    shared = shared || other == stem || std::filesystem::path(other).stem().string() == stem;
+  }
+  return fitting_name("", shared ? leaf : stem, "_sweep.pvd");
+}
+
 }  // namespace
 
 std::vector<int> read_exit_codes(const std::filesystem::path& out, const SweepPlan& plan) {
@@ -169,14 +188,15 @@ int collect_sweep(const SweepConfig& c, const SweepPlan& plan, const std::vector
     if (ext == ".svg") {
       for (std::size_t i = 0; i < n; ++i)
         if (have[i]) images[i] = plan.runs[i].folder + "/" + leaf;
-      const std::string sheet = unique("sheet_" + p.stem().string() + ".svg", "sheet_" + leaf + ".svg");
+      const std::string sheet =
+          unique(fitting_name("sheet_", p.stem().string(), ".svg"), fitting_name("sheet_", leaf, ".svg"));
       io::write_whole(out, sheet, sheet_svg(plan, recipe + ": " + leaf + " over " + swept, images, notes));
       written.push_back(sheet);
     } else if (previewable(ext) && !svg_stems.contains(p.stem().string())) {
       for (std::size_t i = 0; i < n; ++i)
         if (have[i]) {
           previews.files.push_back((out / plan.runs[i].folder / leaf).string());
-          previews.pngs.push_back(out / "previews" / plan.runs[i].folder / (leaf + ".png"));
+          previews.pngs.push_back(out / preview_name(plan.runs[i].folder, leaf));
         }
       preview_leaves.push_back(leaf);
     }
@@ -189,14 +209,15 @@ int collect_sweep(const SweepConfig& c, const SweepPlan& plan, const std::vector
       std::vector<std::string> images(n);
       std::vector<std::string> cell_notes = notes;
       for (std::size_t i = 0; i < n; ++i) {
-        const std::string png = "previews/" + plan.runs[i].folder + "/" + leaf + ".png";
+        const std::string png = preview_name(plan.runs[i].folder, leaf);
         std::error_code ec;
         if (have[i] && std::filesystem::is_regular_file(out / png, ec))
           images[i] = png;
         else if (have[i])
           cell_notes[i] = "no preview";
       }
-      const std::string sheet = unique("sheet_" + leaf + ".svg", "sheet_" + leaf + "_preview.svg");
+      const std::string sheet =
+          unique(fitting_name("sheet_", leaf, ".svg"), fitting_name("sheet_", leaf + "_preview", ".svg"));
       io::write_whole(out, sheet, sheet_svg(plan, recipe + ": " + leaf + " over " + swept, images, cell_notes));
       written.push_back(sheet);
     }
@@ -214,7 +235,7 @@ int collect_sweep(const SweepConfig& c, const SweepPlan& plan, const std::vector
         files.push_back(plan.runs[i].folder + "/" + leaf);
         times.push_back(all_times[i]);
       }
-    const std::string series = std::filesystem::path(leaf).stem().string() + "_sweep.pvd";
+    const std::string series = series_name(leaf, outputs);
     io::write_whole(out, series, io::pvd_text(files, times));
     written.push_back(series);
   }

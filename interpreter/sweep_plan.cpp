@@ -1,7 +1,9 @@
 #include "interpreter/sweep_plan.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <set>
 #include <string_view>
@@ -128,6 +130,18 @@ std::string escaped_value(const std::string& value) {
     s += c;
   }
   return s;
+}
+
+std::string fitting_name(const std::string& prefix, const std::string& core, const std::string& suffix) {
+  constexpr std::size_t name_max = 255, mark = 9;  // "~" and 8 hex digits
+  if (prefix.size() + core.size() + suffix.size() <= name_max) return prefix + core + suffix;
+  std::uint32_t hash = 2166136261u;  // FNV-1a: the same on every machine, so --collect names alike
+  for (unsigned char c : core) hash = (hash ^ c) * 16777619u;
+  std::size_t keep = name_max - std::min(name_max, prefix.size() + suffix.size() + mark);
+  while (keep > 0 && (static_cast<unsigned char>(core[keep]) & 0xC0) == 0x80) --keep;  // not inside a character
+  char tail[16];
+  std::snprintf(tail, sizeof tail, "~%08x", static_cast<unsigned>(hash));
+  return prefix + core.substr(0, keep) + tail + suffix;
 }
 
 bool is_sweep(const std::map<std::string, std::string>& sets) {

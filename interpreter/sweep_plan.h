@@ -23,6 +23,12 @@ std::vector<std::string> sweep_values(const std::string& key, const std::string&
 // A value written so that sweep_values reads it back as that one value (for a run's own --set).
 std::string escaped_value(const std::string& value);
 
+// A file name prefix + core + suffix (a sweep's "sheet_" + "dragon" + ".svg") that always fits a folder's
+// 255-byte limit: as it is when it fits, else `core` cut at a character boundary and "~" and 8 hex digits of
+// a hash of the whole core put after it, so that two long names stay apart. For every name a sweep derives
+// from a run's output (sheets, series, previews): an output may use the whole 255 bytes itself.
+std::string fitting_name(const std::string& prefix, const std::string& core, const std::string& suffix);
+
 // Whether any --set gives more than one value (the run is a sweep).
 bool is_sweep(const std::map<std::string, std::string>& sets);
 

@@ -117,6 +117,35 @@ mkdir -p fifo/n=1 && mkfifo fifo/n=1/selfsim.exit
 timeout 20 "$selfsim" sweep f.lua -o fifo --set n=1,3 --collect -q 2>/dev/null
 [ $? = 1 ] || fail "--collect with a FIFO exit file should report the run as not run"
 
+# Outputs a.vtp and a.vtu: a series each, named by the whole output name as they share a stem. A 251-byte
+# output name (valid: 255 is the limit): its sheet's and series' names are cut to fit, with a hash of the
+# whole name, and the sweep ends as its runs did.
+cat >v.lua <<'LUA'
+local n = param("n", 1)
+local c = polyline({ { 0, 0 }, { n, 1 } })
+local long = string.rep("b", 247)
+for _, name in ipairs({ "a.svg", "a.vtp", "a.vtu", long .. ".svg", long .. ".vtp" }) do save(c, name) end
+LUA
+"$selfsim" run v.lua -o vw --set n=1,2 -q 2>err.txt || fail "a sweep with a.vtp, a.vtu and long names: $(cat err.txt)"
+grep -qF 'file="n=2/a.vtp"' vw/a.vtp_sweep.pvd || fail "a.vtp_sweep.pvd: $(cat vw/a.vtp_sweep.pvd 2>&1)"
+grep -qF 'file="n=2/a.vtu"' vw/a.vtu_sweep.pvd || fail "a.vtu_sweep.pvd: $(cat vw/a.vtu_sweep.pvd 2>&1)"
+[ -e vw/a_sweep.pvd ] && fail "a_sweep.pvd would be one series for two outputs"
+b=$(printf 'b%.0s' $(seq 247))
+sheet=(vw/sheet_"${b:0:236}"~????????.svg)
+series=(vw/"${b:0:236}"~????????_sweep.pvd)
+[ -f "${sheet[0]}" ] && [ "$(basename "${sheet[0]}" | wc -c)" = 256 ] || fail "long sheet name: $(ls vw)"
+[ -f "${series[0]}" ] && [ "$(basename "${series[0]}" | wc -c)" = 256 ] || fail "long series name: $(ls vw)"
+grep -qF "file=\"n=1/$b.vtp\"" "${series[0]}" || fail "the long series names its runs' files"
+
+# --no-sheet is sweep's: run says the command that takes it; sweep writes no sheet with it.
+"$selfsim" run f.lua -o ns --set n=1,3 --no-sheet >out.txt 2>err.txt
+[ $? = 2 ] || fail "run --no-sheet should be a usage error"
+grep -qF "selfsim: --no-sheet is an option of sweep, not run: selfsim sweep f.lua -o ns --set n=1,3 --no-sheet" err.txt ||
+  fail "run --no-sheet message: $(cat err.txt)"
+[ -e ns ] && fail "a refused run made its output folder"
+"$selfsim" sweep f.lua -o ns --set n=1,3 --no-sheet -q || fail "sweep --no-sheet"
+[ -f ns/n=3/p.svg ] && [ ! -e ns/sheet_p.svg ] || fail "sweep --no-sheet: $(ls ns)"
+
 # Ctrl-C (SIGINT to the sweep) stops every run: exit 130, no run left behind, no partial file.
 cat >slow.lua <<'LUA'
 local n = param("n", 1)
