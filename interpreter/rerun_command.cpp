@@ -45,16 +45,25 @@ int rerun_command(const std::string& file, const std::string& out) {
                      "' records no recipe (selfsim " SELFSIM_VERSION
                      " records one in every file a run saves; .stl and .vdb beside them, as NAME.json)");
   // The record is only text in a file: it may name nothing but a file inside the new folder, and --set
-  // keys a run could have had.
+  // keys a run could have had. A NUL would cut a path where it reaches the system (the parser refuses one
+  // in any field; this is where the paths are used).
+  for (const auto& [what, path] :
+       {std::pair<const char*, const std::string*>{"recipe", &p->recipe}, {"name", &p->name}})
+    if (path->find('\0') != std::string::npos)
+      throw UsageError("'" + shown_text(file) + "' records a " + what + " path holding a NUL character");
   const std::filesystem::path name(p->name);
   bool inside = !p->name.empty() && name.is_relative();
   for (const auto& part : name) inside = inside && part != "..";
   if (!inside)
     throw UsageError("'" + shown_text(file) + "' records the name '" + shown_text(p->name) +
                      "', not a file inside a run's folder");
-  for (const auto& [k, v] : p->sets)
-    if (k.empty() || k.find_first_of("=\n\r") != std::string::npos || k[0] == '-' || v.find('\0') != std::string::npos)
+  for (const auto& [k, v] : p->sets) {
+    if (k.empty() || k.find_first_of(std::string("=\n\r\0", 4)) != std::string::npos || k[0] == '-')
       throw UsageError("'" + shown_text(file) + "' records a --set key '" + shown_text(k) + "' no run could have had");
+    if (v.find('\0') != std::string::npos)  // the key is fine: blame the value
+      throw UsageError("'" + shown_text(file) + "' records a --set value for '" + shown_text(k) +
+                       "' holding a NUL character, which no run could have had");
+  }
   if (!std::filesystem::is_regular_file(p->recipe, ec))
     throw UsageError("'" + shown_text(file) + "' was made by " + shown_text(p->recipe) +
                      ", which is not there any more");

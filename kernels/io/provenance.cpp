@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <string>
 
 #include "kernels/geom/error.h"
 #include "kernels/geom/lower_case.h"
@@ -25,92 +26,6 @@ std::string comment_safe(const std::string& json) {
   }
   return s;
 }
-
-// A reader for exactly the JSON provenance_json writes: an object of strings, one object of strings and
-// one whole number. Anything else gives nullopt.
-class Parser {
- public:
-  explicit Parser(const std::string& text) : t_(text) {}
-
-  std::optional<Provenance> provenance() {
-    Provenance p;
-    if (!eat('{')) return std::nullopt;
-    do {
-      std::string key;
-      if (!string(key) || !eat(':')) return std::nullopt;
-      if (key == "set") {
-        if (!eat('{')) return std::nullopt;
-        if (!eat('}')) {
-          do {
-            std::string k, v;
-            if (!string(k) || !eat(':') || !string(v)) return std::nullopt;
-            p.sets[k] = v;
-          } while (eat(','));
-          if (!eat('}')) return std::nullopt;
-        }
-      } else if (key == "seed") {
-        skip();
-        char* end = nullptr;
-        p.seed = std::strtoll(t_.c_str() + i_, &end, 10);
-        if (end == t_.c_str() + i_) return std::nullopt;
-        i_ = static_cast<std::size_t>(end - t_.c_str());
-      } else {
-        std::string value;
-        if (!string(value)) return std::nullopt;
-        if (key == "selfsim")
-          p.version = value;
-        else if (key == "recipe")
-          p.recipe = value;
-        else if (key == "sha256")
-          p.sha256 = value;
-        else if (key == "name")
-          p.name = value;
-      }
-    } while (eat(','));
-    if (!eat('}') || p.recipe.empty()) return std::nullopt;
-    return p;
-  }
-
- private:
-  void skip() {
-    while (i_ < t_.size() && (t_[i_] == ' ' || t_[i_] == '\n' || t_[i_] == '\t' || t_[i_] == '\r')) ++i_;
-  }
-  bool eat(char c) {
-    skip();
-    if (i_ < t_.size() && t_[i_] == c) {
-      ++i_;
-      return true;
-    }
-    return false;
-  }
-  bool string(std::string& out) {
-    if (!eat('"')) return false;
-    for (; i_ < t_.size(); ++i_) {
-      const char c = t_[i_];
-      if (c == '"') {
-        ++i_;
-        return true;
-      }
-      if (c != '\\') {
-        out += c;
-        continue;
-      }
-      if (++i_ >= t_.size()) return false;
-      const char e = t_[i_];
-      if (e == 'u') {  // only the ASCII escapes json_escaped writes
-        if (i_ + 4 >= t_.size()) return false;
-        out += static_cast<char>(std::strtol(t_.substr(i_ + 1, 4).c_str(), nullptr, 16));
-        i_ += 4;
-      } else {
-        out += e == 'n' ? '\n' : e == 't' ? '\t' : e;
-      }
-    }
-    return false;
-  }
-
-  const std::string& t_;
-  std::size_t i_ = 0;
-};
 
 std::string head_of(const std::filesystem::path& file, std::size_t limit) {
   std::ifstream in(file, std::ios::binary);
@@ -164,8 +79,6 @@ std::string provenance_json(const Provenance& p) {
   return comment_safe(s);
 }
 
-std::optional<Provenance> parse_provenance(const std::string& json) { return Parser(json).provenance(); }
-
 bool provenance_beside(const std::string& extension) { return extension == ".stl" || extension == ".vdb"; }
 
 std::optional<Provenance> read_provenance(const std::filesystem::path& file) {
@@ -184,7 +97,11 @@ std::optional<Provenance> read_provenance(const std::filesystem::path& file) {
     json = marked_line(head_of(file, 1 << 16));
   }
   if (!json) return std::nullopt;
-  return parse_provenance(*json);
+  try {
+    return parse_provenance(*json);
+  } catch (const Error& e) {  // a malformed field: say which file holds it
+    throw Error(cannot_read(file, std::string("its provenance record: ") + e.what()));
+  }
 }
 
 }  // namespace selfsim::io

@@ -24,11 +24,13 @@ struct Provenance {
 // One line of JSON. It never holds "--", so it can sit inside an XML comment.
 std::string provenance_json(const Provenance& p);
 
-// Parses provenance_json's text; nullopt for anything else.
+// Parses provenance_json's text; nullopt for text of another shape. Throws Error naming the field when a
+// string is not strict JSON (a bad \u escape, a lone surrogate, a raw control character) or holds a NUL,
+// when a field is given twice, or when the seed is beyond 64 bits (provenance_parse.cpp).
 std::optional<Provenance> parse_provenance(const std::string& json);
 
 // The provenance recorded in (or, for .stl, beside) the file; nullopt when there is none. Throws Error
-// when the file cannot be read.
+// when the file cannot be read or its record is malformed ("cannot read 'FILE': its provenance record: ...").
 std::optional<Provenance> read_provenance(const std::filesystem::path& file);
 
 // The key under which formats hold it: "selfsim_provenance".

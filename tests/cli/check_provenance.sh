@@ -65,6 +65,20 @@ sed 's|"set": {"level": "5"}|"set": {"level=1,2": "5"}|' out/c.svg >crafted2.svg
 "$selfsim" rerun crafted2.svg -o c2 >/dev/null 2>err.txt
 [ $? = 2 ] || fail "rerun of a record with a key holding = should exit 2"
 [ -e c2 ] && fail "a refused rerun made its folder"
+# Crafted strings: a NUL in the recipe path (it ran the path cut at the NUL: r.lua) and a bad \u escape (it
+# read as a NUL, and rerun blamed a recipe "not there") are refused, naming the field.
+sed 's|/r.lua"|/r.lua\\u0000/x.lua"|' out/c.svg >nul.svg
+"$selfsim" rerun nul.svg -o c3 >out.txt 2>err.txt
+[ $? = 2 ] || fail "rerun of a record with a NUL in its recipe path should exit 2: $(cat out.txt err.txt)"
+grep -qF "nul.svg': its provenance record: the field \"recipe\" holds a NUL character" err.txt ||
+  fail "NUL message: $(cat err.txt)"
+[ -e c3 ] && fail "a rerun of the path cut at the NUL ran"
+sed 's|/r.lua"|/r\\uzzzz.lua"|' out/c.svg >zzzz.svg
+"$selfsim" rerun zzzz.svg -o c4 >/dev/null 2>err.txt
+[ $? = 2 ] || fail "rerun of a record with a bad \\u escape should exit 2"
+grep -qF "the field \"recipe\" holds a bad escape '\\uzzzz' (\\u takes 4 hex digits)" err.txt ||
+  fail "bad escape message: $(cat err.txt)"
+[ "$(wc -l <err.txt)" = 1 ] || fail "one line: $(cat err.txt)"
 mkfifo fifo.svg
 timeout 10 "$selfsim" rerun fifo.svg >/dev/null 2>err.txt
 [ $? = 2 ] || fail "rerun of a FIFO should exit 2 at once"
