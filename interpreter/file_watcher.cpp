@@ -21,6 +21,30 @@ bool same_folder(const std::filesystem::path& a, const std::filesystem::path& b)
   return std::filesystem::equivalent(a, b, ec);
 }
 
+// The folders holding `file` and each link on the way to what it finally names (a link to a link, in
+// another folder: changing the middle one changes the recipe too). Stops after 40 links (a loop).
+std::vector<std::filesystem::path> link_chain_folders(const std::filesystem::path& file) {
+  std::vector<std::filesystem::path> folders;
+  std::filesystem::path p = std::filesystem::absolute(file);
+  for (int hop = 0; hop < 40; ++hop) {
+    folders.push_back(p.parent_path());
+    std::error_code ec;
+    if (!std::filesystem::is_symlink(std::filesystem::symlink_status(p, ec))) break;
+    const std::filesystem::path target = std::filesystem::read_symlink(p, ec);
+    if (ec) break;
+    p = target.is_absolute() ? target : p.parent_path() / target;
+  }
+  return folders;
+}
+
+// Whether `folder` is `outer` or inside it, by their real paths.
+bool inside(const std::filesystem::path& folder, const std::filesystem::path& outer) {
+  std::error_code ec, ec2;
+  const std::string f = std::filesystem::canonical(folder, ec).string() + "/";
+  const std::string o = std::filesystem::canonical(outer, ec2).string() + "/";
+  return !ec && !ec2 && f.starts_with(o);
+}
+
 }  // namespace
 
 bool side_file(const std::string& name) {
@@ -46,6 +70,8 @@ void FileWatcher::add(const std::filesystem::path& folder, int depth) {
   const int wd = ::inotify_add_watch(fd_, folder.c_str(), events | IN_ONLYDIR);
   if (wd < 0) throw Error("cannot watch '" + folder.string() + "': " + std::strerror(errno));
   watched_[wd] = folder;
+  std::error_code ec0;
+  real_.insert(std::filesystem::canonical(folder, ec0).string());
   if (depth >= 3) return;
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
@@ -76,7 +102,28 @@ std::string FileWatcher::drain() {
       ((e->mask & (IN_MOVED_FROM | IN_DELETE)) ? gone : written) = e->name;
     }
   }
+  refollow();  // a change in a watched folder may have made the recipe a link, or pointed it elsewhere
   return written.empty() ? gone : written;
+}
+
+void FileWatcher::follow(const std::filesystem::path& file) {
+  followed_.push_back(file);
+  refollow();
+}
+
+void FileWatcher::refollow() {
+  for (const std::filesystem::path& file : followed_) {
+    for (const std::filesystem::path& folder : link_chain_folders(file)) {
+      std::error_code ec;
+      const std::filesystem::path real = std::filesystem::canonical(folder, ec);
+      if (ec || real_.count(real.string()) != 0 || (!skip_.empty() && inside(real, skip_))) continue;
+      try {
+        add(real, 0);
+      } catch (const Error&) {  // not watchable (no permission): its edits go unseen, watching goes on
+        real_.insert(real.string());
+      }
+    }
+  }
 }
 
 std::string FileWatcher::take(std::chrono::milliseconds settle) {

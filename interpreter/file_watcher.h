@@ -10,6 +10,7 @@
 #include <chrono>
 #include <filesystem>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -35,15 +36,22 @@ class FileWatcher {
   std::string take(std::chrono::milliseconds settle = std::chrono::milliseconds(30));
   // Watches again the folders that were deleted, where they exist again; true when one came back.
   bool restore();
+  // Watches also the folder of every link on the way from `file` to what it names, now and again after
+  // every change seen: a recipe that becomes a link while watched (an editor or stow replacing it by one)
+  // has its target's edits seen. Folders inside `skip` are left out (a run's writes are not changes).
+  void follow(const std::filesystem::path& file);
 
  private:
   void add(const std::filesystem::path& folder, int depth);
+  void refollow();      // watches the folders on the followed files' link chains not watched yet
   std::string drain();  // the first counted change among the pending events, or empty
 
   int fd_ = -1;
   std::filesystem::path skip_;
   std::map<int, std::filesystem::path> watched_;  // by watch descriptor
   std::vector<std::filesystem::path> lost_;       // deleted or moved away (git checkout may bring them back)
+  std::vector<std::filesystem::path> followed_;   // files whose links are followed (follow())
+  std::set<std::string> real_;                    // the watched folders' canonical paths
 };
 
 // Whether an editor's side file (hidden, backup, swap, vim's "4913" probe) rather than a source.

@@ -34,6 +34,7 @@ int watch_command(const RunConfig& config) {
   sa.sa_handler = on_watch_signal;  // no SA_RESTART: poll returns at Ctrl-C
   for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaction(sig, &sa, nullptr);
   FileWatcher watcher(recipe_folders(config, "--watch"), config.out_dir);
+  watcher.follow(config.recipe);  // the recipe may become a link (or point elsewhere) while watched
   LiveRun live(config, false);
   const std::string out = shown_text(config.out_dir.string());
   if (!config.quiet)

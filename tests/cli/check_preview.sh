@@ -6,6 +6,7 @@
 selfsim=$1
 src=$2
 source "$src/tests/robustness/lib.sh"
+export SELFSIM_TEST_MARK=$tmp  # inherited by the Xvfbs this test's runs start: how they are known below
 command -v Xvfb >/dev/null || { echo "skipped: no Xvfb"; exit 77; }
 # VTK's Python (python3-vtk9) or ParaView's, whichever is installed.
 python=$("$src/tests/viewer/vtk_python.sh") || { echo "skipped: no VTK Python"; exit 77; }
@@ -57,8 +58,16 @@ check "beside the input" test -s "$tmp/in/curve.png"
 env -u DISPLAY "$selfsim" preview "$tmp/in/curve.vtp" "$tmp/in/mesh.ply" -o "$tmp/many" >"$tmp/out" 2>"$tmp/err"
 check "two files, two lines" test "$(grep -c '^wrote ' "$tmp/out")" = 2
 
-# No Xvfb process is left behind by this test's runs.
-check "no Xvfb left" bash -c "! pgrep -u $(id -u) -f -- '[X]vfb -displayfd' >/dev/null"
+# No Xvfb process is left behind by this test's runs: known by the SELFSIM_TEST_MARK they inherited (any
+# other Xvfb on the machine, another test's or a user's, is not this test's business).
+no_own_xvfb() {
+  local p
+  for p in $(pgrep -u "$(id -u)" -x Xvfb); do
+    grep -qzx "SELFSIM_TEST_MARK=$tmp" "/proc/$p/environ" 2>/dev/null && return 1
+  done
+  return 0
+}
+check "no Xvfb left" no_own_xvfb
 
 # Errors: one line naming the file, exit 1; usage errors exit 2.
 echo hello >"$tmp/x.txt"

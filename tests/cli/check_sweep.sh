@@ -157,24 +157,29 @@ save(polyline({ { 0, 0 }, { n, 1 } }), "p.svg")
 LUA
 "$selfsim" run slow.lua -o cw --set n=1..4 --jobs 2 >out.txt 2>err.txt &
 pid=$!
-sleep 1
+for _ in $(seq 1 100); do [ "$(children $pid slow.lua | wc -l)" = 2 ] && break; sleep 0.1; done
+runs=$(children $pid slow.lua)
+[ "$(echo $runs | wc -w)" = 2 ] || fail "the sweep's 2 runs did not start: $runs"
 kill -INT $pid
 code=0
 wait $pid || code=$?
 [ "$code" = 130 ] || fail "interrupted sweep exit $code, expected 130"
 sleep 0.2
-pgrep -f "slow.lua -o $tmp/cw" >/dev/null && fail "runs still alive after Ctrl-C"
+for r in $runs; do running "$r" slow.lua && fail "runs still alive after Ctrl-C"; done
 grep -qF "sweep interrupted" err.txt || fail "interrupt message: $(cat err.txt)"
 [ -n "$(find cw -name '*.svg')" ] && fail "an interrupted run left a file"
 
 # SIGKILL to the sweep: its runs stop too (they are told to stop with their parent).
 "$selfsim" run slow.lua -o kw --set n=1..2 --jobs 2 >out.txt 2>err.txt &
 pid=$!
-for _ in $(seq 1 100); do [ "$(pgrep -fc "slow.lua -o kw/")" = 2 ] && break; sleep 0.1; done
+for _ in $(seq 1 100); do [ "$(children $pid slow.lua | wc -l)" = 2 ] && break; sleep 0.1; done
+runs=$(children $pid slow.lua)
+[ "$(echo $runs | wc -w)" = 2 ] || fail "the sweep's 2 runs did not start: $runs"
 kill -9 $pid
 wait $pid 2>/dev/null
-for _ in $(seq 1 100); do pgrep -f "slow.lua -o kw/" >/dev/null || break; sleep 0.1; done
-pgrep -f "slow.lua -o kw/" >/dev/null && fail "runs kept going after the sweep was killed"
-pkill -9 -f "slow.lua -o kw/" 2>/dev/null
+alive() { for r in $runs; do running "$r" slow.lua && return 0; done; return 1; }
+for _ in $(seq 1 100); do alive || break; sleep 0.1; done
+alive && fail "runs kept going after the sweep was killed"
+for r in $runs; do running "$r" slow.lua && kill -9 "$r"; done
 
 finish
