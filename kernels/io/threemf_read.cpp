@@ -1,11 +1,16 @@
 // Reading .3mf files back (selfsim diff, selfsim info) with lib3mf's own reader: every mesh object, its
-// points converted to millimetres from the model's unit, its triangles, and the object's name as the cell
-// field `object` (the objects in file order, counted from 0). Build items' placements are not applied:
+// points converted to millimetres from the model's unit (any of the six the 3MF core specification names;
+// another is refused, where lib3mf would read it as millimetres), its triangles, and the object's name as
+// the cell field `object` (the objects in file order, counted from 0). Build items' placements are not applied:
 // objects are compared as they are defined. Like threemf_file.cpp, lib3mf's C interface stays in this file.
+#include <Common/NMR_ErrorConst.h>
+
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "kernels/geom/error.h"
@@ -14,11 +19,48 @@
 #include "kernels/io/mesh_readers.h"
 #include "kernels/io/provenance.h"
 #include "kernels/io/read.h"
+#include "kernels/io/read_error.h"
 #include "kernels/io/xml_text.h"
+#include "kernels/io/zip_part.h"
 
 namespace selfsim::io {
 
 namespace {
+
+// The units of the 3MF core specification (its `unit` attribute), which lib3mf maps to MODELUNIT_*.
+const std::vector<std::string> units{"micron", "millimeter", "centimeter", "inch", "foot", "meter"};
+
+// lib3mf reads a unit it does not know as millimetres, with only a warning: refuse it, naming it (read
+// from the root model part ourselves: lib3mf keeps nothing of the text).
+void refuse_unknown_unit(NMR::PLib3MFBase* reader, const std::vector<BYTE>& bytes) {
+  DWORD count = 0;
+  if (NMR::lib3mf_reader_getwarningcount(reader, &count) != LIB3MF_OK) return;
+  bool invalid = false;
+  for (DWORD i = 0; i < count && !invalid; ++i) {
+    DWORD code = 0;
+    ULONG need = 0;
+    if (NMR::lib3mf_reader_getwarningutf8(reader, i, &code, nullptr, 0, &need) == LIB3MF_OK)
+      invalid = code == NMR_ERROR_INVALIDMODELUNIT;
+  }
+  if (!invalid) return;
+  const std::string_view zip(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  // The root model part: the package relationship of type .../3dmodel, by default /3D/3dmodel.model.
+  std::string root = "3D/3dmodel.model";
+  if (const auto rels = zip_part_head(zip, "_rels/.rels", 1 << 16))
+    for (std::size_t at = 0; (at = rels->find("<Relationship ", at)) != std::string::npos; ++at) {
+      const std::string_view one = std::string_view(*rels).substr(at);
+      const auto type = xml_attribute(one, "Relationship", "Type");
+      const auto target = xml_attribute(one, "Relationship", "Target");
+      if (type && target && type->ends_with("/3dmodel")) {
+        root = *target;
+        break;
+      }
+    }
+  std::optional<std::string> unit;
+  if (const auto model = zip_part_head(zip, root, 1 << 16)) unit = xml_attribute(*model, "model", "unit");
+  throw Error("the unit " + (unit ? "'" + shown(*unit) + "' " : std::string()) + "is not a 3MF unit; expected one of " +
+              quoted_list(units));
+}
 
 // Millimetres per unit of a 3MF model (its `unit` attribute).
 double millimetres(DWORD unit) {
@@ -66,6 +108,7 @@ Dataset parse_3mf(const RegularFile& f) {
   lib3mf_check(NMR::lib3mf_createmodel(&model.p), nullptr, "create a model");
   lib3mf_check(NMR::lib3mf_model_queryreader(model.p, "3mf", &reader.p), model.p, "make a reader");
   lib3mf_check(NMR::lib3mf_reader_readfrombuffer(reader.p, bytes.data(), bytes.size()), reader.p, "read it");
+  refuse_unknown_unit(reader.p, bytes);
   DWORD unit = NMR::MODELUNIT_MILLIMETER;
   lib3mf_check(NMR::lib3mf_model_getunit(model.p, &unit), model.p, "read its unit");
   const double scale = millimetres(unit);

@@ -158,6 +158,20 @@ expect 2 "info --print bad profile" -- "$selfsim" info --print "$tmp/p/tet.3mf" 
 expect 0 "info 3mf" -- "$selfsim" info "$tmp/p/tet.3mf"
 contains "$tmp/out" "surface: closed manifold, 1 component" "info 3mf closed"
 expect 0 "diff 3mf" -- "$selfsim" diff "$tmp/p/tet.3mf" "$tmp/p/tet.3mf"
+# A unit the 3MF specification does not have was read as millimetres: one line naming file and unit.
+/usr/bin/python3 - "$tmp/p/tet.3mf" "$tmp/p/furlong.3mf" <<'PY'
+import sys, zipfile
+with zipfile.ZipFile(sys.argv[1]) as a, zipfile.ZipFile(sys.argv[2], "w", zipfile.ZIP_DEFLATED) as b:
+    for n in a.namelist():
+        data = a.read(n)
+        if n.endswith(".model"):
+            data = data.replace(b'unit="millimeter"', b'unit="furlong"', 1)
+            assert b'unit="furlong"' in data
+        b.writestr(n, data)
+PY
+expect 2 "info 3mf in furlongs" -- "$selfsim" info "$tmp/p/furlong.3mf"
+contains "$tmp/err" "cannot read '$tmp/p/furlong.3mf': the unit 'furlong' is not a 3MF unit; expected one of 'micron', 'millimeter', 'centimeter', 'inch', 'foot', 'meter'" "unknown 3mf unit"
+[ "$(wc -l <"$tmp/err")" = 1 ] || { echo "FAIL: unknown 3mf unit: not one line: $(cat "$tmp/err")"; failures=$((failures + 1)); }
 
 echo "$failures failures"
 [ "$failures" = 0 ]
