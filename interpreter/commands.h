@@ -58,5 +58,4 @@ double number_argument(const std::string& flag, const std::string& text, double 
 // Parses the arguments after `selfsim run`. Throws UsageError.
 RunConfig parse_run_arguments(const std::vector<std::string>& args);
 
-
 }  // namespace selfsim::interp
