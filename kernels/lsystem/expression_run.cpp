@@ -66,6 +66,19 @@ double Expression::run(const Op* pc, const Op* end, const double* args) {
     const double a = below[--n];
     top = f(a, top);
   };
+  // Comparisons, logic, min, max and pow can turn a NaN into an ordinary number (NaN != 0 is 1, fmin drops
+  // it, pow(NaN, 0) is 1), which eval's check of the result would then miss: a condition computed from
+  // sqrt(-1) would silently hold. Their operands are checked instead, as a NaN result is.
+  const auto defined = [](double a) {
+    if (std::isnan(a)) [[unlikely]]
+      throw EvalError("a value it computes is not a number");
+    return a;
+  };
+  const auto unary_defined = [&](auto f) { top = f(defined(top)); };
+  const auto binary_defined = [&](auto f) {
+    const double a = defined(below[--n]);
+    top = f(a, defined(top));
+  };
   for (; pc != end; ++pc) {
     switch (pc->code) {
       case Code::Const:
@@ -78,10 +91,10 @@ double Expression::run(const Op* pc, const Op* end, const double* args) {
         unary([](double a) { return -a; });
         break;
       case Code::Not:
-        unary([](double a) { return a == 0 ? 1.0 : 0.0; });
+        unary_defined([](double a) { return a == 0 ? 1.0 : 0.0; });
         break;
       case Code::Truth:
-        unary([](double a) { return a != 0 ? 1.0 : 0.0; });
+        unary_defined([](double a) { return a != 0 ? 1.0 : 0.0; });
         break;
       case Code::Sin:
         unary(sin_degrees);
@@ -134,37 +147,37 @@ double Expression::run(const Op* pc, const Op* end, const double* args) {
         binary([](double a, double b) { return a / b; });
         break;
       case Code::Pow:
-        binary([](double a, double b) { return std::pow(a, b); });
+        binary_defined([](double a, double b) { return std::pow(a, b); });
         break;
       case Code::Eq:
-        binary([](double a, double b) { return a == b ? 1.0 : 0.0; });
+        binary_defined([](double a, double b) { return a == b ? 1.0 : 0.0; });
         break;
       case Code::Ne:
-        binary([](double a, double b) { return a != b ? 1.0 : 0.0; });
+        binary_defined([](double a, double b) { return a != b ? 1.0 : 0.0; });
         break;
       case Code::Lt:
-        binary([](double a, double b) { return a < b ? 1.0 : 0.0; });
+        binary_defined([](double a, double b) { return a < b ? 1.0 : 0.0; });
         break;
       case Code::Le:
-        binary([](double a, double b) { return a <= b ? 1.0 : 0.0; });
+        binary_defined([](double a, double b) { return a <= b ? 1.0 : 0.0; });
         break;
       case Code::Gt:
-        binary([](double a, double b) { return a > b ? 1.0 : 0.0; });
+        binary_defined([](double a, double b) { return a > b ? 1.0 : 0.0; });
         break;
       case Code::Ge:
-        binary([](double a, double b) { return a >= b ? 1.0 : 0.0; });
+        binary_defined([](double a, double b) { return a >= b ? 1.0 : 0.0; });
         break;
       case Code::Min:
-        binary([](double a, double b) { return std::fmin(a, b); });
+        binary_defined([](double a, double b) { return std::fmin(a, b); });
         break;
       case Code::Max:
-        binary([](double a, double b) { return std::fmax(a, b); });
+        binary_defined([](double a, double b) { return std::fmax(a, b); });
         break;
       case Code::Atan2:
         binary([](double y, double x) { return std::atan2(y, x) * kDegreesPerRadian; });
         break;
       case Code::AndJump:
-        if (top == 0) {
+        if (defined(top) == 0) {
           top = 0;  // also turns -0 into 0
           pc += pc->index;
         } else {
@@ -172,7 +185,7 @@ double Expression::run(const Op* pc, const Op* end, const double* args) {
         }
         break;
       case Code::OrJump:
-        if (top != 0) {
+        if (defined(top) != 0) {
           top = 1;
           pc += pc->index;
         } else {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -11,15 +12,18 @@
 #include "kernels/lsystem/context_match.h"
 #include "kernels/lsystem/cut.h"
 #include "kernels/lsystem/derivation_frame.h"
+#include "kernels/lsystem/expansion_count.h"
 #include "kernels/lsystem/rule_index.h"
+#include "kernels/lsystem/rule_scope.h"
 
 namespace selfsim::lsystem {
 
 namespace {
 
 constexpr std::size_t check_every = std::size_t{1} << 16;
-// rule_parser.cpp's bound on the parameters a rule binds, and the binding's on a grammar's constants.
-constexpr std::size_t max_scope = 48 + max_constants;
+// A decomposition or interpretation bounded by this many modules (expansion_count.h) is not counted before
+// it is written: it cannot take the budget by surprise, and counting it would cost as much as writing it.
+constexpr double small_expansion = 4096;
 
 // The memory a level takes, in budget points (16 bytes): what its arrays have reserved.
 double held_points(const ModuleString& s) {
@@ -37,11 +41,12 @@ class Deriver {
         interpret_(g.interpretation),
         limits_(limits),
         progress_(progress),
+        rules_(g),
         stochastic_(g.stochastic()),
+        decomposed_(decompose_, g.max_depth, rules_, limits.steps, progress),
+        interpreted_(interpret_, g.max_depth, rules_, limits.steps, progress),
         values_(static_cast<std::size_t>(g.max_depth) + 2) {
     for (char c : g.ignore) ignored_[static_cast<std::uint8_t>(c)] = true;
-    if (g.constants.size() > max_constants) throw Error("internal error: too many constants");
-    for (const auto& [name, value] : g.constants) scope_[k_++] = value;
   }
 
   bool context() const { return index_.context; }
@@ -53,7 +58,7 @@ class Deriver {
     for (const Call& c : g_.start) {
       double args[max_scope];
       for (std::size_t k = 0; k < c.args.size(); ++k)
-        args[k] = evaluate(c.args[k], {scope_.data(), k_}, c, k, nullptr, 0);
+        args[k] = rules_.evaluate(c.args[k], rules_.constants(), c, k, nullptr, 0);
       write(s, c.symbol, {args, c.args.size()}, child_lineage(root, c.salt), 0, 0, &cut);
     }
     return s;
@@ -86,7 +91,7 @@ class Deriver {
         continue;
       }
       if (d < static_cast<std::size_t>(level)) {
-        if (const Production* p = match(index_, s, run.args_of(i))) {
+        if (const Production* p = rules_.match(index_, s, run.args_of(i), static_cast<int>(d) + 1)) {
           const std::uint64_t lineage = f.lineage(i, stochastic_);
           if (d + 1 == static_cast<std::size_t>(level) && decompose_.total == 0) {
             emit_successor(*p, lineage, level, cut, sink);  // the last level: never held
@@ -95,8 +100,8 @@ class Deriver {
           DerivationFrame& next = frames[++d];
           pos[d] = 0;
           if (decompose_.total == 0) {  // the successor read in place, with its evaluated parameters
-            const Successor& succ = chosen(*p, lineage);
-            evaluate_successor(*p, succ, static_cast<int>(d), next.values);
+            const Successor& succ = rules_.chosen(*p, lineage);
+            rules_.evaluate_successor(*p, succ, static_cast<int>(d), next.values);
             next.view(succ, lineage);
             count(succ.modules.size());
           } else {
@@ -122,7 +127,7 @@ class Deriver {
         if (++work_ >= next_check_) check_level(k, level, i, cur, next);
         ModuleString& out = streamed ? last : next;
         if (streamed) last.clear();
-        if (const Production* p = match(index_, cur, &near, i))
+        if (const Production* p = match(cur, near, i, k))
           apply(*p, lineage_of(cur, i), k, out, streamed ? nullptr : &cut);
         else if (streamed || cut.keep(cur.symbols[i]))
           out.push(cur.symbols[i], cur.args_of(i), stochastic_ ? &cur.lineage[i] : nullptr);
@@ -152,79 +157,31 @@ class Deriver {
 
  private:
   std::uint64_t lineage_of(const ModuleString& s, std::size_t i) const { return stochastic_ ? s.lineage[i] : 0; }
-  // A written module's lineage: hashed only when a choice will read it.
-  std::uint64_t child(std::uint64_t parent, const Call& c) const {
-    return stochastic_ ? child_lineage(parent, c.salt) : 0;
-  }
+  std::uint64_t child(std::uint64_t parent, const Call& c) const { return rules_.child(parent, c); }
 
-  double evaluate(const Expression& e, std::span<const double> scope, const Call& c, std::size_t k, const Production* p,
-                  int level) const {
-    try {
-      return e.eval(scope);
-    } catch (const EvalError& err) {
-      const std::string where = p == nullptr ? "option 'axiom'" : p->where + " (" + p->text + ")";
-      throw Error(where + (p == nullptr ? "" : " deriving level " + std::to_string(level)) + ": parameter " +
-                  std::to_string(k + 1) + " of " + module_text(c.symbol, {}) + ": " + err.what());
-    }
-  }
-
-  // The first production of `index` that rewrites module i of s, its parameters bound in scope_ (after the
-  // constants, which scope_ always holds); null if none. `near` is given when productions have contexts.
-  const Production* match(const RuleIndex& index, const ModuleString& s, const Neighbours* near, std::size_t i) {
+  // The first production of index_ that rewrites module i of s (deriving level `level`), its parameters
+  // bound in the scope (after the constants); null if none.
+  const Production* match(const ModuleString& s, const Neighbours& near, std::size_t i, int level) {
     const std::span<const double> args = s.args_of(i);
-    double* params = scope_.data() + k_;
-    for (const Production* p : index.by_symbol[s.symbols[i]]) {
+    double* params = rules_.params();
+    for (const Production* p : index_.by_symbol[s.symbols[i]]) {
       if (p->pred.params.size() != args.size()) continue;
       std::size_t slot = 0;
       for (const Pattern& m : p->left) slot += m.params.size();
       std::copy(args.begin(), args.end(), params + slot);
-      if (p->context() && !(left_context(*p, s, *near, i, params) &&
-                            right_context(*p, s, *near, i, ignored_, params + slot + args.size())))
+      if (p->context() && !(left_context(*p, s, near, i, params) &&
+                            right_context(*p, s, near, i, ignored_, params + slot + args.size())))
         continue;
-      if (holds(*p)) return p;
+      if (rules_.holds(*p, args, level)) return p;
     }
     return nullptr;
   }
 
-  // The first context-free production of `index` for a module given by its symbol and parameters.
-  const Production* match(const RuleIndex& index, std::uint8_t symbol, std::span<const double> args) {
-    for (const Production* p : index.by_symbol[symbol]) {
-      if (p->pred.params.size() != args.size()) continue;
-      std::copy(args.begin(), args.end(), scope_.data() + k_);
-      if (holds(*p)) return p;
-    }
-    return nullptr;
-  }
-
-  bool holds(const Production& p) const {
-    if (p.condition.empty()) return true;
-    try {
-      return p.condition.eval({scope_.data(), k_ + static_cast<std::size_t>(p.slots)}) != 0;
-    } catch (const EvalError& err) {
-      throw Error(p.where + " (" + p.text + "): its condition: " + err.what());
-    }
-  }
-
-  // The successor p chooses for a module of this lineage (its parameters bound in scope_).
-  const Successor& chosen(const Production& p, std::uint64_t lineage) const {
-    if (p.options.size() == 1) return p.options[0];
-    return p.options[choose_option(p.options, choice_point(lineage))];
-  }
-
-  // Evaluates the successor's parameters into `values` (the modules' parameters, in order), before any
-  // of them is written: writing may decompose, which binds scope_ again.
-  void evaluate_successor(const Production& p, const Successor& succ, int level, std::vector<double>& values) const {
-    const std::span<const double> bound{scope_.data(), k_ + static_cast<std::size_t>(p.slots)};
-    values.clear();
-    for (const Call& c : succ.modules)
-      for (std::size_t k = 0; k < c.args.size(); ++k) values.push_back(evaluate(c.args[k], bound, c, k, &p, level));
-  }
-
-  // Writes p's successor for a module of this lineage (its parameters bound in scope_) into out.
+  // Writes p's successor for a module of this lineage (its parameters bound) into out.
   void apply(const Production& p, std::uint64_t lineage, int level, ModuleString& out, Cut* cut) {
-    const Successor& succ = chosen(p, lineage);
+    const Successor& succ = rules_.chosen(p, lineage);
     std::vector<double>& values = values_[0];
-    evaluate_successor(p, succ, level, values);
+    rules_.evaluate_successor(p, succ, level, values);
     std::size_t v = 0;
     for (const Call& c : succ.modules) {
       write(out, c.symbol, {values.data() + v, c.args.size()}, child(lineage, c), level, 0, cut);
@@ -235,9 +192,9 @@ class Deriver {
 
   // Feeds p's successor for a module of this lineage straight to the sink, as the last level's frame would.
   void emit_successor(const Production& p, std::uint64_t lineage, int level, Cut& cut, ModuleSink& sink) {
-    const Successor& succ = chosen(p, lineage);
+    const Successor& succ = rules_.chosen(p, lineage);
     std::vector<double>& values = values_[0];
-    evaluate_successor(p, succ, level, values);
+    rules_.evaluate_successor(p, succ, level, values);
     const ModuleRun run{succ.symbols.data(), succ.arg_end.data(), values.data(), 0, succ.symbols.size()};
     for (std::size_t i = 0; i < run.end;) {
       const std::uint8_t s = run.symbols[i];
@@ -269,10 +226,11 @@ class Deriver {
   void write(ModuleString& out, std::uint8_t symbol, std::span<const double> args, std::uint64_t lineage, int level,
              int depth, Cut* cut) {
     if (depth < g_.max_depth && !decompose_.empty_for(symbol)) {
-      if (const Production* p = match(decompose_, symbol, args)) {
-        const Successor& succ = chosen(*p, lineage);
+      if (depth == 0) predict_decomposition(out, symbol, args, lineage, level);
+      if (const Production* p = rules_.match(decompose_, symbol, args, level)) {
+        const Successor& succ = rules_.chosen(*p, lineage);
         std::vector<double>& values = values_[static_cast<std::size_t>(depth) + 1];
-        evaluate_successor(*p, succ, level, values);
+        rules_.evaluate_successor(*p, succ, level, values);
         std::size_t v = 0;
         for (const Call& c : succ.modules) {
           write(out, c.symbol, {values.data() + v, c.args.size()}, child(lineage, c), level, depth + 1, cut);
@@ -294,10 +252,11 @@ class Deriver {
   void emit(std::uint8_t symbol, std::span<const double> args, std::uint64_t lineage, int level, int depth,
             ModuleSink& sink) {
     if (interpreting_ && depth < g_.max_depth && !interpret_.empty_for(symbol)) {
-      if (const Production* p = match(interpret_, symbol, args)) {
-        const Successor& succ = chosen(*p, lineage);
+      if (depth == 0) predict_interpretation(symbol, args, lineage, level);
+      if (const Production* p = rules_.match(interpret_, symbol, args, level)) {
+        const Successor& succ = rules_.chosen(*p, lineage);
         std::vector<double>& values = values_[static_cast<std::size_t>(depth) + 1];
-        evaluate_successor(*p, succ, level, values);
+        rules_.evaluate_successor(*p, succ, level, values);
         std::size_t v = 0;
         for (const Call& c : succ.modules) {
           emit(c.symbol, {values.data() + v, c.args.size()}, child(lineage, c), level, depth + 1, sink);
@@ -319,9 +278,50 @@ class Deriver {
     if (progress_.cancelled()) throw Cancelled();
   }
 
-  void over_budget() const {
-    throw BudgetError("the grammar would rewrite more than " + count_text(limits_.work) +
+  void over_budget(const std::string& what = "the grammar") const {
+    throw BudgetError(what + " would rewrite more than " + count_text(limits_.work) +
                       " modules, over the limit (64 x --max-points)");
+  }
+
+  double work_left() const { return limits_.work - static_cast<double>(work_ + written_); }
+
+  static std::string through(const ExpansionSize& size, int level) {
+    const std::string rule = size.rule == nullptr ? "" : " through " + size.rule->where + " (" + size.rule->text + ")";
+    return "level " + std::to_string(level) + rule;
+  }
+
+  // Counts the interpretation of a module before it is drawn: refused when it would pass the work limit or,
+  // with the modules drawn through interpretations before it, the point budget.
+  void predict_interpretation(std::uint8_t symbol, std::span<const double> args, std::uint64_t lineage, int level) {
+    if (!interpreted_.may_exceed(symbol, small_expansion)) return;
+    const double inf = std::numeric_limits<double>::infinity();
+    const double steps_left = limits_.points ? limits_.points->left() - predicted_steps_ : inf;
+    const ExpansionSize size = interpreted_.count(symbol, args, lineage, level, work_left(), steps_left);
+    if (limits_.points && size.steps > steps_left) {
+      const PointBudget& b = *limits_.points;
+      if (!size.over) check_budget(predicted_steps_ + size.steps, b, through(size, level));
+      throw BudgetError(through(size, level) + " would make more than " + count_text(b.left()) +
+                        " points, over the limit of " + count_text(b.limit) +
+                        (b.held > 0 ? " with " + count_text(b.held) + " held by the recipe's other values" : "") +
+                        " (raise it with --max-points)");
+    }
+    if (size.modules > work_left()) over_budget(through(size, level));
+    predicted_steps_ += size.steps;
+  }
+
+  // Counts the decomposition of a module before it is written into `out`: refused when it would pass the
+  // work limit, or make `out` hold more than the memory limit.
+  void predict_decomposition(const ModuleString& out, std::uint8_t symbol, std::span<const double> args,
+                             std::uint64_t lineage, int level) {
+    if (!decomposed_.may_exceed(symbol, small_expansion)) return;
+    // Each module held takes at least bytes_per_module(0) bytes; budget points are 16.
+    const double held_left = (limits_.held - held_points(out)) * 16 / ModuleString::bytes_per_module(0);
+    const double inf = std::numeric_limits<double>::infinity();
+    const ExpansionSize size = decomposed_.count(symbol, args, lineage, level, std::min(work_left(), held_left), inf);
+    if (size.modules > held_left)
+      throw BudgetError(through(size, level) + ": one successor's decomposition would take more than " +
+                        count_text(limits_.held) + " points' worth of memory, over the limit");
+    if (size.modules > work_left()) over_budget(through(size, level));
   }
 
   void check(const std::vector<DerivationFrame>& frames, const std::vector<std::size_t>& pos, std::size_t d) {
@@ -357,11 +357,12 @@ class Deriver {
   RuleIndex index_, decompose_, interpret_;
   ModuleLimits limits_;
   Progress& progress_;
+  RuleScope rules_;  // the scope every expression is evaluated in
   bool stochastic_;
+  ExpansionCount decomposed_, interpreted_;
+  double predicted_steps_ = 0;  // points counted by predict_interpretation, drawn or to be
   std::array<bool, 256> ignored_{};
   std::vector<std::vector<double>> values_;  // evaluated successor parameters, one list per depth
-  std::array<double, max_scope> scope_{};    // the grammar's constants, then the parameters a rule binds
-  std::size_t k_ = 0;                        // how many constants
   bool interpreting_ = false;
   std::array<bool, 256> passes_{};  // see interpret()
   std::array<bool, 256> final_{};   // the same on the last level, where productions no longer apply

@@ -9,10 +9,13 @@
 // one rule changes only the choices below the modules that rule writes.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 
+#include "kernels/geom/budget.h"
 #include "kernels/geom/progress.h"
 #include "kernels/lsystem/grammar.h"
 #include "kernels/lsystem/module_string.h"
@@ -35,13 +38,18 @@ class ModuleSink {
 struct ModuleLimits {
   double work = 1e12;   // modules read and written over all levels before refusing (BudgetError)
   double held = 2.7e8;  // modules a context-sensitive grammar may hold in memory at once
+  // Drawing: the sink's point budget and the symbols that make a point each. An interpretation predicted
+  // to make more points than the budget leaves is refused before any of it is drawn.
+  std::optional<PointBudget> points;
+  std::array<bool, 256> steps{};
 };
 
 // Derives level `level` of g (g.modules() must be true) and feeds it to sink; with `interpret`, each module
 // through g's interpretation rules first (drawing). Decomposition rules rewrite every module a step (or
-// the axiom) writes, recursively, up to g.max_depth levels deep. Throws Error naming the rule and level
-// when a parameter evaluates to a division by zero or a non-finite number; BudgetError past `limits`;
-// Cancelled when progress says so.
+// the axiom) writes, recursively, up to g.max_depth levels deep; each module's decomposition and
+// interpretation is counted before it is written (expansion_count.h), and refused when over `limits`.
+// Throws Error naming the rule and level when a parameter or condition evaluates to a division by zero or
+// a non-finite number; BudgetError past `limits`; Cancelled when progress says so.
 void rewrite_modules(const Grammar& g, int level, ModuleSink& sink, const ModuleLimits& limits, Progress& progress,
                      bool interpret = false);
 

@@ -284,10 +284,14 @@ class Turtle final : public ModuleSink {
   std::vector<double> root_distance_, widths_;
 };
 
-ModuleLimits limits_for(const TurtleOptions& opt) {
+ModuleLimits limits_for(const Grammar& g, const TurtleOptions& opt) {
   ModuleLimits limits;
   limits.work = modules_per_point * opt.budget.left();
   limits.held = opt.budget.left();
+  // Each drawing step makes a point (a corner inside a polygon): interpretations are counted in them.
+  limits.points = opt.budget;
+  const Compiled c(g);
+  for (int s = 0; s < 256; ++s) limits.steps[s] = c.action[s] == Action::Draw;
   return limits;
 }
 
@@ -301,9 +305,9 @@ PolylineT<V> draw(const Grammar& g, const TurtleOptions& opt, Mesh* polygons, Pr
   Turtle<V, Heading> turtle(g, opt, out, polygons);
   // With a second core, the derivation runs beside the turtle (the same modules, in the same order).
   if (tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) >= 2)
-    rewrite_modules_piped(g, opt.level, turtle, limits_for(opt), progress, true);
+    rewrite_modules_piped(g, opt.level, turtle, limits_for(g, opt), progress, true);
   else
-    rewrite_modules(g, opt.level, turtle, limits_for(opt), progress, true);
+    rewrite_modules(g, opt.level, turtle, limits_for(g, opt), progress, true);
   turtle.finish();
   progress.fraction(1);
   if (!out.finite() || (polygons != nullptr && !polygons->finite()))

@@ -153,6 +153,22 @@ TEST(Expression, NotFiniteResultThrows) {
   EXPECT_EQ(value("sqrt(x)", {2.25, 0, 0}), 1.5);
 }
 
+// A NaN met on the way is an error even where the operation would hide it in an ordinary number: a
+// comparison or logic (NaN != 0 is true), min and max (which drop it), pow (pow(NaN, 0) is 1).
+TEST(Expression, NaNOnTheWayThrows) {
+  const std::string nan = "a value it computes is not a number";
+  EXPECT_EQ(eval_error("sqrt(x) != 0", {-1, 0, 0}), nan);
+  EXPECT_EQ(eval_error("sqrt(x) > 1", {-1, 0, 0}), nan);
+  EXPECT_EQ(eval_error("!sqrt(x)", {-1, 0, 0}), nan);
+  EXPECT_EQ(eval_error("sqrt(x) && 1", {-1, 0, 0}), nan);
+  EXPECT_EQ(eval_error("0 || sqrt(x)", {-1, 0, 0}), nan);
+  EXPECT_EQ(eval_error("min(sqrt(x), 1)", {-1, 0, 0}), nan);
+  EXPECT_EQ(eval_error("pow(sqrt(x), 0)", {-1, 0, 0}), nan);
+  // What a NaN would not have decided is not evaluated: || and && skip their right side as before.
+  EXPECT_EQ(value("1 || sqrt(x)", {-1, 0, 0}), 1);
+  EXPECT_EQ(value("0 && sqrt(x) > 1", {-1, 0, 0}), 0);
+}
+
 TEST(Expression, AnglesAreDegrees) {
   EXPECT_NEAR(value("sin(30)"), 0.5, 1e-15);
   EXPECT_NEAR(value("cos(x)", {60, 0, 0}), 0.5, 1e-15);
