@@ -16,13 +16,16 @@ std::string shown(char c) {
   return "\\" + std::to_string(static_cast<unsigned char>(c));
 }
 
-// A ']' before its '[' would pop an empty turtle stack (every level expands each string in one piece).
+// A ']' before its '[' would pop an empty turtle stack, and a '[' never closed leaves a branch open to
+// the end (every level expands each string in one piece): both are mistakes, as in a module grammar's
+// axiom and successors (rule_parser.cpp).
 void require_balanced(const std::string& s, const std::string& what) {
   int depth = 0;
   for (char c : s) {
     depth += c == '[' ? 1 : c == ']' ? -1 : 0;
     if (depth < 0) throw Error(what + " has a ']' without a matching '['");
   }
+  if (depth > 0) throw Error(what + " has a '[' that is never closed (a ']' is missing)");
 }
 
 }  // namespace

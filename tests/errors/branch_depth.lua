@@ -1,3 +1,3 @@
 -- args: --max-points 1e7
--- branches opened and never closed: the saved turtle states are predicted and budgeted like points
-lsystem { axiom = "X", rules = { X = "[X[X" } }:curve(24)
+-- branches opened 300000 deep per level: the saved turtle states are predicted and budgeted like points
+lsystem { axiom = "X", rules = { X = string.rep("[", 300000) .. "X" .. string.rep("]", 300000) } }:curve(24)

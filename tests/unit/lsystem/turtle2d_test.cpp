@@ -182,8 +182,9 @@ TEST(Turtle, HugeAnglesAreReducedExactly) {
 }
 
 TEST(Turtle, OpenBranchesAreBudgeted) {
-  // X -> [X[X keeps 2^(level+1) - 2 branches open; each saved state costs two points of the budget.
-  const Grammar open{.axiom = "X", .rules = {{'X', "[X[X"}}};
+  // X -> 20000 '[', X, 20000 ']' has 20000 x level branches open at once (and as many breaks); each saved
+  // state costs two points of the budget.
+  const Grammar open{.axiom = "X", .rules = {{'X', std::string(20000, '[') + "X" + std::string(20000, ']')}}};
   EXPECT_THROW(turtle2d(open, {.level = 20, .budget = {1e6}}, no_progress()), BudgetError);
   EXPECT_NO_THROW(turtle2d(open, {.level = 12, .budget = {1e6}}, no_progress()));
 }
