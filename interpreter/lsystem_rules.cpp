@@ -18,8 +18,10 @@ namespace {
 using lsystem::Production;
 
 [[noreturn]] void rule_error(const lsystem::RuleError& e, const std::string& where, std::string_view text) {
-  throw DetailedError(where + ": " + e.what() + " (column " + std::to_string(e.column + 1) + ")",
-                      lsystem::caret_lines(text, e.column));
+  // Columns count characters, as the caret line shows them, not bytes.
+  throw DetailedError(
+      where + ": " + e.what() + " (column " + std::to_string(lsystem::shown_column(text, e.column) + 1) + ")",
+      lsystem::caret_lines(text, e.column));
 }
 
 // The names of the grammar's constants, which every expression may read.

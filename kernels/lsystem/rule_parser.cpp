@@ -1,9 +1,13 @@
 #include "kernels/lsystem/rule_parser.h"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <set>
+
+#include "kernels/io/utf8.h"
 
 namespace selfsim::lsystem {
 
@@ -257,15 +261,49 @@ Production parse_rule(std::string_view text, const std::string& where, std::span
   return p;
 }
 
+std::size_t shown_column(std::string_view text, std::size_t column) {
+  return io::shown_characters(text.substr(0, std::min(column, text.size())));
+}
+
 std::string caret_lines(std::string_view text, std::size_t column) {
+  // The text as a terminal shows it, piece by piece: a character (UTF-8, or a byte that is not) takes one
+  // column, a blank shows as a space, another control byte as the message's lines escape it (4 columns).
+  // The caret goes under the piece that holds the byte at `column`: a '«' before the fault moves it one
+  // column, as it moves the fault, not two.
+  struct Piece {
+    std::string shown;
+    std::size_t columns;
+  };
+  std::vector<Piece> pieces;
+  std::size_t at = npos;  // the piece holding byte `column`
+  for (std::size_t i = 0; i < text.size();) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    const std::size_t n = std::max<std::size_t>(io::utf8_length(text, i), 1);
+    if (at == npos && column < i + n) at = pieces.size();
+    if (blank(text[i])) {
+      pieces.push_back({" ", 1});
+    } else if (c < 32 || c == 127) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", c);
+      pieces.push_back({buf, 4});
+    } else {
+      pieces.push_back({std::string(text.substr(i, n)), 1});
+    }
+    i += n;
+  }
+  if (at == npos) at = pieces.size();  // past the end
+  // Long text: `width` pieces around the caret.
   constexpr std::size_t width = 100;
   std::size_t begin = 0;
-  if (text.size() > width && column > width / 2) begin = std::min(column - width / 2, text.size() - width);
-  std::string line(text.substr(begin, width));
-  for (char& c : line)
-    if (blank(c)) c = ' ';
+  if (pieces.size() > width && at > width / 2) begin = std::min(at - width / 2, pieces.size() - width);
+  const std::size_t end = std::min(begin + width, pieces.size());
   const std::string lead = begin > 0 ? "  ..." : "  ";
-  return lead + line + "\n" + std::string(lead.size() + std::min(column - begin, line.size()), ' ') + "^";
+  std::string line = lead, under(lead.size(), ' ');
+  for (std::size_t k = begin; k < end; ++k) {
+    line += pieces[k].shown;
+    if (k < at) under.append(pieces[k].columns, ' ');
+  }
+  return line + "\n" + under + "^";
 }
 
 }  // namespace selfsim::lsystem

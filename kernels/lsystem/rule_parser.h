@@ -33,8 +33,11 @@ bool rule_weight_given(std::string_view text);
 // Whether text uses anything beyond plain symbols: parameters, context or condition syntax.
 bool has_module_syntax(std::string_view text);
 
-// The text on one line and a caret under `column` on the next, for messages:
+// The text on one line and a caret under the character at byte `column` on the next, for messages:
 //   "    A(x) : x > -> F\n               ^"
+// Placed by the characters shown (UTF-8), not by bytes.
 std::string caret_lines(std::string_view text, std::size_t column);
+// The column (0-based) at which a terminal shows the byte at `column` of text: its characters before it.
+std::size_t shown_column(std::string_view text, std::size_t column);
 
 }  // namespace selfsim::lsystem

@@ -114,3 +114,14 @@ TEST(RuleParser, CaretSitsUnderTheColumn) {
   EXPECT_EQ(lines[lines.size() - 1], '^');
   EXPECT_EQ(lines[lines.size() - 1 - newline - 1], '(');  // the caret under the '('
 }
+
+TEST(RuleParser, CaretCountsCharactersNotBytes) {
+  // «» take 4 bytes but show as 2 characters: the caret sits under the 'y' (byte 15, character 13).
+  EXPECT_EQ(caret_lines("A(x) -> «» F(y)", 15), "  A(x) -> «» F(y)\n               ^");
+  EXPECT_EQ(shown_column("A(x) -> «» F(y)", 15), 13u);
+  // A control byte shows escaped, as the message's lines print it: 4 columns.
+  EXPECT_EQ(caret_lines("A -> \x01 F(y)", 9), "  A -> \\x01 F(y)\n              ^");
+  // A byte that is not UTF-8 shows as one replacement character; a caret past the end follows the last.
+  EXPECT_EQ(caret_lines("\xff F(", 4), "  \xff F(\n      ^");
+  EXPECT_EQ(shown_column("\xff F(", 4), 4u);
+}
