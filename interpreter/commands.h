@@ -40,12 +40,14 @@ int rerun_command(const std::string& file, const std::string& out);
 // passes, 1 with its findings, 2 when the file cannot be read or is not a closed solid.
 int print_info_command(const std::string& file, const std::string& profile);
 
-// `selfsim preview FILE... [-o DIR] [-q]`.
+// `selfsim preview FILE... [-o DIR] [-q] [--timeout S] [--max-memory SIZE] [--as NAME FILE]...`.
 struct PreviewConfig {
   std::vector<std::string> files;
-  std::string out_dir;                      // empty: each PNG beside its input
-  std::vector<std::filesystem::path> pngs;  // when given, the PNG of each file, in order (a sweep's previews)
+  std::string out_dir;             // empty: each PNG beside its input
+  std::vector<std::string> names;  // per file, the PNG's name inside out_dir ("" for NAME.png); --as
   bool quiet = false;
+  double timeout = 0;     // seconds for all the previews, 0 = none (as run's --timeout)
+  double max_memory = 0;  // bytes the previews may add, 0 = none (as run's --max-memory)
 };
 // Throws UsageError.
 PreviewConfig parse_preview_arguments(const std::vector<std::string>& args);
@@ -54,6 +56,8 @@ int preview_command(const PreviewConfig& config);
 
 // A flag's value as a finite number in [lo, hi]; throws UsageError naming the flag.
 double number_argument(const std::string& flag, const std::string& text, double lo, double hi);
+// A flag's value as a size in bytes (512M, 8G, or plain bytes) from 16M to 1024T; throws UsageError.
+double size_argument(const std::string& flag, const std::string& text);
 
 // Parses the arguments after `selfsim run`. Throws UsageError.
 RunConfig parse_run_arguments(const std::vector<std::string>& args);

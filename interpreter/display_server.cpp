@@ -5,6 +5,7 @@
 #include <poll.h>
 #include <sys/mman.h>
 #include <sys/prctl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -110,6 +111,11 @@ DisplayServer::DisplayServer() {
     if (::getppid() != parent) ::_exit(127);
     ::setpgid(0, 0);
     for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, SIG_DFL);
+    // The X server's memory is not the preview's: the soft --max-memory limit (preview_command.cpp) is lifted.
+    if (rlimit data{}; ::getrlimit(RLIMIT_DATA, &data) == 0) {
+      data.rlim_cur = data.rlim_max;
+      ::setrlimit(RLIMIT_DATA, &data);
+    }
     const int null = ::open("/dev/null", O_RDWR);
     ::dup2(null, 0);
     ::dup2(null, 1);

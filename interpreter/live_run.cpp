@@ -16,6 +16,7 @@
 #include "interpreter/commands.h"
 #include "interpreter/spawn_selfsim.h"
 #include "interpreter/sweep.h"
+#include "kernels/io/output_file.h"
 
 namespace selfsim::interp {
 
@@ -44,11 +45,11 @@ std::vector<std::string> publish(const std::filesystem::path& staging, const std
     if (std::filesystem::is_directory(std::filesystem::symlink_status(to, ec)))
       throw Error("'" + to.string() + "' is a folder where the run's file goes");
   }
+  // Each move through the confined writer's folders (output_file.h): a link swapped in after the check
+  // above is refused too, never followed.
   std::vector<std::string> names;
   for (const std::filesystem::path& rel : files) {
-    const std::filesystem::path to = out / rel;
-    std::filesystem::create_directories(to.parent_path());
-    std::filesystem::rename(staging / rel, to);
+    io::move_file(out, staging.lexically_relative(out) / rel, rel);
     if (!rel.has_parent_path()) names.push_back(rel.string());
   }
   std::sort(names.begin(), names.end());
@@ -101,7 +102,7 @@ void LiveRun::start(const std::map<std::string, std::string>& sets) {
   // view.py names the output folder, where its files end up.
   args.insert(args.end() - 1, {"--view-folder", std::filesystem::absolute(base_.out_dir).lexically_normal().string()});
   started_ = std::chrono::steady_clock::now();
-  pid_ = spawn_selfsim(exe_, args, capture_ ? log_ : std::filesystem::path());
+  pid_ = spawn_selfsim(exe_, args, base_.out_dir, capture_ ? log_name : "");
   pidfd_ = static_cast<int>(::syscall(SYS_pidfd_open, pid_, 0));
 }
 

@@ -62,12 +62,14 @@ usage:
                              the print check of a closed solid in millimetres (.stl .3mf .obj .ply
                              .vtp): closed, crossing, thinnest wall, narrowest gap, triangles, size.
                              Exit 0 passes, 1 with its findings, 2 error
-  selfsim preview FILE... [-o DIR] [-q]
+  selfsim preview FILE... [-o DIR] [-q] [--timeout S] [--max-memory SIZE] [--as NAME FILE]...
                              a PNG picture of each file (.vtp .vtu .svg .stl .obj .ply, .vdb as its
                              surface, .pvd/.vtp.series as its last step): NAME.png beside it, or in DIR. Curves and flat drawings from above,
                              anything else shaded from two sides, coloured by the field a ParaView view
                              uses. Needs an X display; without one it starts Xvfb (apt-get install xvfb).
-                             Exit 1 when a file could not be drawn (the others still are)
+                             Exit 1 when a file could not be drawn (the others still are).
+                             --timeout and --max-memory as for run; --as NAME FILE writes FILE's PNG
+                             as DIR/NAME (folders made inside DIR, never through a link)
   selfsim --help | --version
 
 exit codes: 0 success, 1 recipe error, 2 usage error, 130 interrupted

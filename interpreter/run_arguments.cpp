@@ -22,8 +22,6 @@ double number_argument(const std::string& flag, const std::string& text, double 
   return *v;
 }
 
-namespace {
-
 // A size in bytes with an optional binary suffix: 512M, 8G, 1T, or plain bytes.
 double size_argument(const std::string& flag, const std::string& text) {
   const std::string units = "KMGT";
@@ -36,8 +34,6 @@ double size_argument(const std::string& flag, const std::string& text) {
                      "'");
   return *v * scale;
 }
-
-}  // namespace
 
 const std::vector<std::string>& run_flags() {
   static const std::vector<std::string> flags{"-o",        "--output", "--set",     "--max-points", "--max-memory",

@@ -12,21 +12,18 @@
 #include <string_view>
 
 #include "kernels/geom/error.h"
+#include "kernels/io/output_file.h"
 
 extern char** environ;
 
 namespace selfsim::interp {
 
-pid_t spawn_selfsim(const std::string& exe, const std::vector<std::string>& args, const std::filesystem::path& log) {
-  int fd = -1;
+pid_t spawn_selfsim(const std::string& exe, const std::vector<std::string>& args, const std::filesystem::path& root,
+                    const std::filesystem::path& log) {
+  const int fd = log.empty() ? -1 : io::open_log(root, log);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  if (!log.empty()) {
-    fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0644);
-    if (fd < 0) {
-      posix_spawn_file_actions_destroy(&actions);
-      throw Error("cannot write '" + log.string() + "': " + std::strerror(errno));
-    }
+  if (fd >= 0) {
     posix_spawn_file_actions_adddup2(&actions, fd, 1);
     posix_spawn_file_actions_adddup2(&actions, fd, 2);
   }

@@ -10,9 +10,11 @@
 
 namespace selfsim::interp {
 
-// Starts `exe` with `args` (after the program name); its stdout and stderr go to `log` (created or
-// truncated, never through a link) or, when `log` is empty, where ours go. Returns its pid; throws Error.
-pid_t spawn_selfsim(const std::string& exe, const std::vector<std::string>& args, const std::filesystem::path& log);
+// Starts `exe` with `args` (after the program name); its stdout and stderr go to root/log (created or
+// truncated through the confined writer's folders, output_file.h: never through a link) or, when `log` is
+// empty, where ours go. Returns its pid; throws Error.
+pid_t spawn_selfsim(const std::string& exe, const std::vector<std::string>& args, const std::filesystem::path& root,
+                    const std::filesystem::path& log = {});
 
 // The environment variable that tells a child whose parent it should stop with.
 inline constexpr const char* stop_with_variable = "SELFSIM_STOP_WITH";

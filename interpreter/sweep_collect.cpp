@@ -13,6 +13,7 @@
 #include "interpreter/http_server.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/parse_text.h"
+#include "interpreter/preview_child.h"
 #include "interpreter/sweep.h"
 #include "kernels/geom/lower_case.h"
 #include "kernels/io/output_file.h"
@@ -177,9 +178,7 @@ int collect_sweep(const SweepConfig& c, const SweepPlan& plan, const std::vector
   for (const auto& [leaf, have] : outputs)
     if (lower_case(std::filesystem::path(leaf).extension().string()) == ".svg")
       svg_stems.insert(std::filesystem::path(leaf).stem().string());
-  PreviewConfig previews;
-  previews.quiet = true;
-  std::vector<std::string> preview_leaves;
+  std::vector<std::string> preview_files, preview_names, preview_leaves;
   for (const auto& [leaf, have] : outputs) {
     if (!c.sheet) break;
     const std::filesystem::path p(leaf);
@@ -195,15 +194,19 @@ int collect_sweep(const SweepConfig& c, const SweepPlan& plan, const std::vector
     } else if (previewable(ext) && !svg_stems.contains(p.stem().string())) {
       for (std::size_t i = 0; i < n; ++i)
         if (have[i]) {
-          previews.files.push_back((out / plan.runs[i].folder / leaf).string());
-          previews.pngs.push_back(out / preview_name(plan.runs[i].folder, leaf));
+          preview_files.push_back((out / plan.runs[i].folder / leaf).string());
+          preview_names.push_back(preview_name(plan.runs[i].folder, leaf));
         }
       preview_leaves.push_back(leaf);
     }
   }
-  if (!previews.files.empty()) {
-    if (preview_command(previews) != 0)
-      std::fprintf(stderr, "selfsim: warning: some previews could not be drawn; their cells say so\n");
+  if (!preview_files.empty()) {
+    // Their folders first, confined (a link on the way is an error naming it, as for any write), then the
+    // pictures by a child under the runs' limits (preview_child.h), writing through the same writer.
+    for (const std::string& name : preview_names) io::make_folder(out, std::filesystem::path(name).parent_path());
+    const int code = PreviewChild(c.run, out, preview_files, preview_names).wait();
+    if (interrupted.load()) return 130;
+    if (code != 0) std::fprintf(stderr, "selfsim: warning: some previews could not be drawn; their cells say so\n");
     for (const std::string& leaf : preview_leaves) {
       const std::vector<bool>& have = outputs[leaf];
       std::vector<std::string> images(n);

@@ -90,9 +90,9 @@ std::vector<int> run_all(const SweepConfig& c, const SweepPlan& plan, int jobs) 
       const SweepRun& run = plan.runs[next];
       // The folder is the run's alone: what an earlier sweep left there must not reach this one's sheets.
       std::filesystem::remove_all(out / run.folder);
-      std::filesystem::create_directories(out / run.folder);
-      const pid_t pid =
-          spawn_selfsim(exe, run_arguments(each, run, out / run.folder, threads), out / run.folder / "selfsim.log");
+      io::make_folder(out, run.folder);  // confined: a link planted meanwhile is refused, not followed
+      const pid_t pid = spawn_selfsim(exe, run_arguments(each, run, out / run.folder, threads), out,
+                                      std::filesystem::path(run.folder) / "selfsim.log");
       live[pid] = {next++, std::chrono::steady_clock::now()};
     }
     if (live.empty()) break;
@@ -130,6 +130,7 @@ void check_sweep_folders(const SweepConfig& c, const SweepPlan& plan) {
   const std::filesystem::path& out = c.run.out_dir;
   std::vector<std::string> ours{"previews", "slurm"};
   for (const SweepRun& run : plan.runs) ours.push_back(run.folder);
+  for (const SweepRun& run : plan.runs) ours.push_back("previews/" + run.folder);  // each folder on the way
   // A link where a folder of the sweep goes would lead its writes out of the output folder; a file there
   // would stop the sweep halfway. Both are refused before anything starts.
   for (const std::string& name : ours) {

@@ -123,7 +123,7 @@ int write_job_lists(const SweepConfig& c, const SweepPlan& plan, const std::stri
           shell_word(j.list_path).c_str(), shell_word(j.list_path).c_str(), j.collect.c_str());
   }
   if (c.slurm.empty()) return 0;
-  std::filesystem::create_directories(out / "slurm");
+  io::make_folder(out, "slurm");  // confined, as every write: a link there is refused
   io::write_whole(out, c.slurm, j.array_text);
   io::write_whole(out, j.collect_script, j.collect_text);
   const std::string array = shell_word((out / c.slurm).string()), after = shell_word((out / j.collect_script).string());

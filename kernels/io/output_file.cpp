@@ -216,6 +216,48 @@ void rename_file(const std::filesystem::path& root, const std::filesystem::path&
         (err == EISDIR || err == ENOTEMPTY ? std::string("a folder of that name is in the way") : std::strerror(err)));
 }
 
+// The folder of `rel` (relative, inside root, no '..') opened confined, and its leaf; throws Error.
+static std::pair<int, std::string> open_parent(const std::filesystem::path& root, const std::filesystem::path& rel) {
+  const std::filesystem::path n = rel.lexically_normal();
+  if (n.empty() || n.is_absolute() || *n.begin() == ".." || !n.has_filename() || n.filename() == "..")
+    throw Error("path '" + rel.string() + "' is outside the output folder");
+  return {open_folder(root, n.parent_path()), n.filename().string()};
+}
+
+void move_file(const std::filesystem::path& root, const std::filesystem::path& from, const std::filesystem::path& to) {
+  const auto [source, from_leaf] = open_parent(root, from);
+  int target = -1;
+  try {
+    target = open_parent(root, to).first;
+  } catch (...) {
+    ::close(source);
+    throw;
+  }
+  const int result = ::renameat(source, from_leaf.c_str(), target, to.filename().c_str());
+  const int err = errno;
+  ::close(source);
+  ::close(target);
+  if (result != 0)
+    throw Error(
+        "cannot write '" + (root / to).string() + "': " +
+        (err == EISDIR || err == ENOTEMPTY ? std::string("a folder of that name is in the way") : std::strerror(err)));
+}
+
+void make_folder(const std::filesystem::path& root, const std::filesystem::path& folder) {
+  ::close(open_folder(root, folder.lexically_normal()));
+}
+
+int open_log(const std::filesystem::path& root, const std::filesystem::path& name) {
+  const auto [dir, leaf] = open_parent(root, name);
+  const int fd = ::openat(dir, leaf.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0644);
+  const int err = errno;
+  ::close(dir);
+  if (fd < 0)
+    throw Error("cannot write '" + (root / name).string() +
+                "': " + (err == ELOOP ? std::string("it is a symbolic link") : std::strerror(err)));
+  return fd;
+}
+
 void remove_temporaries() noexcept {
   std::lock_guard lock(temporaries_mutex);
   for (const auto& [dir, name] : temporaries) ::unlinkat(dir, name.c_str(), 0);

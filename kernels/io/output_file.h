@@ -63,6 +63,18 @@ void remove_files(const std::filesystem::path& root, const std::filesystem::path
 void rename_file(const std::filesystem::path& root, const std::filesystem::path& folder, const std::string& from,
                  const std::string& to);
 
+// Moves the file root/from to root/to (both relative, each folder on the way opened as OutputFile's are; the
+// folders of `to` are created), replacing `to`: a run's staged files published into the output folder.
+void move_file(const std::filesystem::path& root, const std::filesystem::path& from, const std::filesystem::path& to);
+
+// Creates root/folder and the folders on the way as OutputFile does, refusing a link or file among them:
+// a sweep's run folders and previews/, checked before anything is written there.
+void make_folder(const std::filesystem::path& root, const std::filesystem::path& folder);
+
+// Opens root/name for writing as it goes (created or truncated; a log a child process writes into), its
+// folders confined as OutputFile's and the file itself never a link. Returns the descriptor (close-on-exec).
+int open_log(const std::filesystem::path& root, const std::filesystem::path& name);
+
 // Removes the named temporaries of every OutputFile still open: for a process ending without unwinding
 // (the watchdog). Anonymous temporaries need nothing.
 void remove_temporaries() noexcept;

@@ -1,5 +1,6 @@
 // preview_png.h forwarded to the rendering plugin (plugin.h), loaded on first use.
 #include "kernels/geom/plugin.h"
+#include "kernels/io/output_file.h"
 #include "kernels/plugins/render/render_table.h"
 
 namespace selfsim::io {
@@ -22,9 +23,13 @@ std::string render_preview_png(const Dataset& d, const std::string& title, Progr
   return render().render_preview_png(d, title, progress);
 }
 
-std::string write_preview_png(const Dataset& d, const std::string& title, const std::filesystem::path& folder,
+std::string write_preview_png(const Dataset& d, const std::string& title, const std::filesystem::path& root,
                               const std::string& name, Progress& progress) {
-  return render().write_preview_png(d, title, folder, name, progress);
+  const std::string png = render().render_preview_png(d, title, progress);
+  OutputFile file(root, name);  // every folder of `name` opened below root, never through a link
+  file.write(png);
+  file.commit();
+  return file.path();
 }
 
 }  // namespace selfsim::io

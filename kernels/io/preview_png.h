@@ -36,8 +36,10 @@ PreviewSize preview_size(const Dataset& d);
 // cannot be made names the package to install), a crash, or a hang (a time limit scaled to the size).
 std::string render_preview_png(const Dataset& d, const std::string& title, Progress& progress);
 
-// Renders d and writes it atomically (output_file.h) as `name` inside `folder`. Returns the path written.
-std::string write_preview_png(const Dataset& d, const std::string& title, const std::filesystem::path& folder,
+// Renders d and writes it atomically as root/name through the confined writer (output_file.h): `name` may
+// hold folders ("previews/level=1/a.vtp.png"), each created and opened below root, never through a link.
+// Returns the path written.
+std::string write_preview_png(const Dataset& d, const std::string& title, const std::filesystem::path& root,
                               const std::string& name, Progress& progress);
 
 }  // namespace selfsim::io

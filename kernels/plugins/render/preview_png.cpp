@@ -39,7 +39,6 @@
 #include "kernels/io/child_process.h"
 #include "kernels/io/dataset_pipe.h"
 #include "kernels/io/natural_field.h"
-#include "kernels/io/output_file.h"
 #include "kernels/io/read_error.h"
 #include "kernels/io/vtk_error_text.h"
 #include "kernels/plugins/render/preview_scene.h"
@@ -385,15 +384,6 @@ std::string render_preview_png(const Dataset& d, const std::string& title, Progr
   }
   if (progress.cancelled()) throw Cancelled();
   return png;
-}
-
-std::string write_preview_png(const Dataset& d, const std::string& title, const std::filesystem::path& folder,
-                              const std::string& name, Progress& progress) {
-  const std::string png = render_preview_png(d, title, progress);
-  OutputFile file(folder, name);
-  file.write(png);
-  file.commit();
-  return file.path();
 }
 
 }  // namespace selfsim::io

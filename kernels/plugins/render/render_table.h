@@ -12,9 +12,8 @@ namespace selfsim {
 struct RenderTable {
   bool (*flat_dataset)(const io::Dataset&);
   io::PreviewSize (*preview_size)(const io::Dataset&);
+  // The PNG's bytes only: the file is written by the interpreter's one confined writer (preview_plugin.cpp).
   std::string (*render_preview_png)(const io::Dataset&, const std::string&, Progress&);
-  std::string (*write_preview_png)(const io::Dataset&, const std::string&, const std::filesystem::path&,
-                                   const std::string&, Progress&);
 };
 
 inline constexpr const char* render_plugin = "selfsim_render.so";

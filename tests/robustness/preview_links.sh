@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Preview PNGs go through the one confined writer (kernels/io/output_file.h), as `save` does: a link at any
+# folder on the way (previews/level=1 in a local sweep, previews under `sweep --collect`, a folder in
+# `preview --as`) is refused with a message naming it and a non-zero exit, and nothing appears where the
+# link points. The studio's .studio link is in studio_previews.py. Skips (77) without an X display or Xvfb
+# (before the fix, the PNGs were drawn and written through the links).
+# usage: preview_links.sh SELFSIM SOURCE_DIR
+selfsim=$1
+src=$2
+source "$src/tests/robustness/lib.sh"
+[ -n "${DISPLAY:-}" ] || command -v Xvfb >/dev/null || { echo "skipped: no X display and no Xvfb"; exit 77; }
+cd "$tmp" || exit 1
+mkdir outside
+cat >m.lua <<'LUA'
+local curves = require "selfsim.curves"
+local level = param("level", 1, { min = 1, max = 4 })
+save(develop(curves.dragon(), { levels = level, smooth = 1 }), "m.vtp")
+LUA
+nothing_outside() { [ -z "$(ls -A outside)" ]; }
+
+# A local sweep, a link at previews/level=1 (previews itself a real folder).
+mkdir -p sw/previews
+ln -s "$tmp/outside" sw/previews/level=1
+run_selfsim sweep m.lua -o sw --set level=1,2 -q
+check "sweep with a previews/level=1 link fails (got $code)" test "$code" != 0
+check "its message names the link: $(first_err)" grep -q "previews/level=1'.*link" "$tmp/err"
+check "nothing written through previews/level=1" nothing_outside
+
+# sweep --collect, previews itself a link (the runs made without sheets first).
+run_selfsim sweep m.lua -o co --set level=1,2 -q --no-sheet
+check "a sweep without sheets runs: $(first_err)" test "$code" = 0
+ln -s "$tmp/outside" co/previews
+run_selfsim sweep m.lua -o co --set level=1,2 --collect -q
+check "sweep --collect with a previews link fails (got $code)" test "$code" != 0
+check "its message names the link: $(first_err)" grep -q "co/previews'.*link" "$tmp/err"
+check "nothing written through previews" nothing_outside
+
+# The writer itself: `preview --as` with a link two folders down.
+mkdir -p pv/a
+ln -s "$tmp/outside" pv/a/b
+run_selfsim preview -o pv --as a/b/m.png co/level=1/m.vtp
+check "preview through a link fails (got $code)" test "$code" != 0
+check "its message names the link: $(first_err)" grep -q "pv/a/b'.*link" "$tmp/err"
+check "nothing written through a/b" nothing_outside
+run_selfsim preview -o pv --as a/c/m.png co/level=1/m.vtp
+check "preview --as into a new folder works: $(first_err)" test -s pv/a/c/m.png
+finish
