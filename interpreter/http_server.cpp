@@ -5,14 +5,15 @@
 #include <netinet/in.h>
 #include <poll.h>
 #include <sys/socket.h>
-#include <sys/time.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <tuple>
 
 #include "kernels/geom/error.h"
 
@@ -27,7 +28,7 @@ int hex_digit(char c) {
   return -1;
 }
 
-const char* reason(int status) {
+const char *reason(int status) {
   switch (status) {
     case 200:
       return "OK";
@@ -46,7 +47,7 @@ const char* reason(int status) {
 
 }  // namespace
 
-std::string url_path(const std::string& path) {
+std::string url_path(const std::string &path) {
   std::string s;
   for (unsigned char c : path) {
     if (std::isalnum(c) || std::string_view("-._~/=,").find(static_cast<char>(c)) != std::string_view::npos) {
@@ -95,14 +96,67 @@ std::optional<std::map<std::string, std::string>> query_values(std::string_view 
   return values;
 }
 
+namespace {
+
+// Limits that keep one client from holding the studio's memory or its loop.
+constexpr std::size_t max_head = 16384;                 // a request's head, in bytes
+constexpr std::size_t max_connections = 128;            // open at once; the oldest still-reading one makes room
+constexpr std::size_t turn_bytes = 1 << 20;             // sent to one client per loop turn, so others get theirs
+constexpr std::size_t file_piece = 64 << 10;            // read from a file at a time
+constexpr auto head_time = std::chrono::seconds(10);    // for the whole head to come in
+constexpr auto stall_time = std::chrono::seconds(5);    // an answer's client taking nothing of it
+constexpr auto answer_time = std::chrono::seconds(60);  // for the studio to answer (long polls: 20 s)
+
+using Clock = std::chrono::steady_clock;
+
+std::string answer_head(int status, const std::string &type, std::int64_t length) {
+  return "HTTP/1.1 " + std::to_string(status) + " " + reason(status) + "\r\nContent-Type: " + type +
+         "\r\nContent-Length: " + std::to_string(length) +
+         "\r\nCache-Control: no-store\r\nX-Content-Type-Options: "
+         "nosniff\r\nConnection: close\r\n\r\n";
+}
+
+bool token_char(unsigned char c) {
+  return std::isalnum(c) || std::string_view("!#$%&'*+-.^_`|~").find(static_cast<char>(c)) != std::string_view::npos;
+}
+
+}  // namespace
+
+std::size_t http_head_end(std::string_view data) {
+  for (std::size_t at = data.find('\n'); at != std::string_view::npos; at = data.find('\n', at + 1)) {
+    if (at + 1 < data.size() && data[at + 1] == '\n') return at + 2;
+    if (at + 2 < data.size() && data[at + 1] == '\r' && data[at + 2] == '\n') return at + 3;
+  }
+  return std::string_view::npos;
+}
+
 std::optional<HttpRequest> parse_http_request(std::string_view head) {
-  const std::size_t line_end = head.find("\r\n");
-  if (line_end == std::string_view::npos) return std::nullopt;
-  const std::string_view line = head.substr(0, line_end);
-  const std::size_t a = line.find(' '), b = line.rfind(' ');
-  if (a == std::string_view::npos || b <= a || !line.substr(b + 1).starts_with("HTTP/1.")) return std::nullopt;
+  // Lines end in LF, with or without a CR before it; any other control byte (a
+  // bare CR, a NUL) makes the request bad rather than being read one way here
+  // and another way elsewhere.
+  std::vector<std::string_view> lines;
+  for (std::size_t at = 0; at < head.size();) {
+    std::size_t end = head.find('\n', at);
+    if (end == std::string_view::npos) end = head.size();
+    std::string_view line = head.substr(at, end - at);
+    if (line.ends_with('\r')) line.remove_suffix(1);
+    if (line.empty()) break;  // the end of the head
+    for (unsigned char c : line)
+      if ((c < 0x20 && c != '\t') || c == 0x7f) return std::nullopt;
+    lines.push_back(line);
+    at = end + 1;
+  }
+  if (lines.empty()) return std::nullopt;
+  // METHOD SP target SP HTTP/1.x, exactly.
+  const std::string_view line = lines[0];
+  const std::size_t a = line.find(' '), b = a == std::string_view::npos ? a : line.find(' ', a + 1);
+  if (a == 0 || b == std::string_view::npos || line.find(' ', b + 1) != std::string_view::npos) return std::nullopt;
+  const std::string_view version = line.substr(b + 1);
+  if (version != "HTTP/1.1" && version != "HTTP/1.0") return std::nullopt;
   HttpRequest r;
   r.method = std::string(line.substr(0, a));
+  for (unsigned char c : r.method)
+    if (!token_char(c)) return std::nullopt;
   const std::string_view target = line.substr(a + 1, b - a - 1);
   if (target.empty() || target[0] != '/') return std::nullopt;
   const std::size_t q = target.find('?');
@@ -110,34 +164,55 @@ std::optional<HttpRequest> parse_http_request(std::string_view head) {
   if (!path) return std::nullopt;
   r.path = *path;
   if (q != std::string_view::npos) r.query = std::string(target.substr(q + 1));
-  for (std::size_t at = line_end + 2; at < head.size();) {
-    const std::size_t end = head.find("\r\n", at);
-    const std::string_view h = head.substr(at, end == std::string_view::npos ? std::string_view::npos : end - at);
-    // Header names are case-insensitive; a second Host makes the request bad (which one would count?).
+  bool seen_host = false, seen_origin = false, seen_site = false;
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const std::string_view h = lines[i];
+    // Header names are case-insensitive tokens right before the colon: "Origin
+    // :" or a folded line could be read as another header than the one a check
+    // looks at, so they are refused.
     const std::size_t colon = h.find(':');
-    if (colon != std::string_view::npos) {
-      std::string name(h.substr(0, colon));
-      for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-      std::string_view v = h.substr(colon + 1);
-      while (!v.empty() && v.front() == ' ') v.remove_prefix(1);
-      while (!v.empty() && v.back() == ' ') v.remove_suffix(1);
-      if (name == "host") {
-        if (!r.host.empty()) return std::nullopt;
-        r.host = std::string(v);
-      } else if (name == "origin") {
-        r.origin = std::string(v);
-      } else if (name == "sec-fetch-site") {
-        r.fetch_site = std::string(v);
-      }
+    if (colon == 0 || colon == std::string_view::npos) return std::nullopt;
+    std::string name(h.substr(0, colon));
+    for (char &c : name) {
+      if (!token_char(static_cast<unsigned char>(c))) return std::nullopt;
+      c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     }
-    if (end == std::string_view::npos) break;
-    at = end + 2;
+    std::string_view v = h.substr(colon + 1);
+    while (!v.empty() && (v.front() == ' ' || v.front() == '\t')) v.remove_prefix(1);
+    while (!v.empty() && (v.back() == ' ' || v.back() == '\t')) v.remove_suffix(1);
+    // The headers the studio's checks read count only when there is exactly
+    // one, with a value: with two, a check could read one and a browser or
+    // proxy have meant the other.
+    for (auto [header, seen, field] :
+         {std::tuple{"host", &seen_host, &r.host}, std::tuple{"origin", &seen_origin, &r.origin},
+          std::tuple{"sec-fetch-site", &seen_site, &r.fetch_site}})
+      if (name == header) {
+        if (*seen || v.empty()) return std::nullopt;
+        *seen = true;
+        *field = std::string(v);
+      }
   }
   return r;
 }
 
-HttpListener::HttpListener(int port) {
-  fd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0);  // accept never waits
+struct HttpServer::Connection {
+  enum class Stage { reading, answering, writing };
+  Id id = 0;
+  int fd = -1;
+  bool local = false;
+  Stage stage = Stage::reading;
+  std::string in;        // the head as it came so far
+  std::string out;       // bytes of the answer read and not yet sent
+  std::size_t sent = 0;  // of out
+  int file = -1;         // the rest of the answer, where it is a file
+  std::int64_t file_at = 0, file_left = 0;
+  Clock::time_point since, deadline;  // opened; the limit of the current stage
+  std::size_t slot = 0;               // in the poll set, or npos when not polled
+};
+
+HttpServer::HttpServer(int port) {
+  fd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC | SOCK_NONBLOCK,
+                 0);  // accept never waits
   if (fd_ < 0) throw Error(std::string("cannot open a socket: ") + std::strerror(errno));
   const int yes = 1;
   ::setsockopt(fd_, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
@@ -145,80 +220,177 @@ HttpListener::HttpListener(int port) {
   addr.sin_family = AF_INET;
   addr.sin_port = htons(static_cast<std::uint16_t>(port));
   addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);  // this machine only: never another address
-  if (::bind(fd_, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0 || ::listen(fd_, 16) != 0) {
+  if (::bind(fd_, reinterpret_cast<sockaddr *>(&addr), sizeof addr) != 0 || ::listen(fd_, 64) != 0) {
     const std::string why = std::strerror(errno);
     ::close(fd_);
     throw Error("cannot listen on 127.0.0.1:" + std::to_string(port) + ": " + why);
   }
   socklen_t len = sizeof addr;
-  ::getsockname(fd_, reinterpret_cast<sockaddr*>(&addr), &len);
+  ::getsockname(fd_, reinterpret_cast<sockaddr *>(&addr), &len);
   port_ = ntohs(addr.sin_port);
 }
 
-HttpListener::~HttpListener() {
+HttpServer::~HttpServer() {
+  for (Connection &c : open_) close(c);
   if (fd_ >= 0) ::close(fd_);
 }
 
-bool HttpListener::accept_into(std::vector<Connection>& open) {
-  sockaddr_in peer{};
-  socklen_t len = sizeof peer;
-  Connection c;
-  c.fd = ::accept4(fd_, reinterpret_cast<sockaddr*>(&peer), &len, SOCK_CLOEXEC | SOCK_NONBLOCK);
-  if (c.fd < 0) return false;
-  c.local = peer.sin_family == AF_INET && ntohl(peer.sin_addr.s_addr) == INADDR_LOOPBACK;
-  c.deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-  // An answer may wait at most 2 s for a client that does not read it.
-  const timeval send_limit{2, 0};
-  ::setsockopt(c.fd, SOL_SOCKET, SO_SNDTIMEO, &send_limit, sizeof send_limit);
-  if (open.size() >= 64) {  // the oldest quiet connection makes room
-    ::close(open.front().fd);
-    open.erase(open.begin());
-  }
-  open.push_back(std::move(c));
-  return true;
+void HttpServer::close(Connection &c) {
+  if (c.fd >= 0) ::close(c.fd);
+  if (c.file >= 0) ::close(c.file);
+  c.fd = c.file = -1;
 }
 
-std::optional<HttpRequest> HttpListener::read_more(Connection& c) {
+HttpServer::Connection *HttpServer::find(Id id) {
+  for (Connection &c : open_)
+    if (c.id == id && c.fd >= 0) return &c;
+  return nullptr;
+}
+
+void HttpServer::add_poll(std::vector<pollfd> &p) {
+  std::erase_if(open_, [](const Connection &c) { return c.fd < 0; });
+  listen_slot_ = p.size();
+  p.push_back({fd_, POLLIN, 0});
+  for (Connection &c : open_) {
+    c.slot = std::string::npos;  // an answer being made waits on the studio, not
+                                 // on its socket
+    if (c.stage == Connection::Stage::answering) continue;
+    c.slot = p.size();
+    p.push_back({c.fd, static_cast<short>(c.stage == Connection::Stage::reading ? POLLIN : POLLOUT), 0});
+  }
+}
+
+void HttpServer::accept_waiting() {
+  for (int i = 0; i < 64; ++i) {  // a flood of connections still leaves the loop its turn
+    sockaddr_in peer{};
+    socklen_t len = sizeof peer;
+    const int fd = ::accept4(fd_, reinterpret_cast<sockaddr *>(&peer), &len, SOCK_CLOEXEC | SOCK_NONBLOCK);
+    if (fd < 0) return;
+    std::erase_if(open_, [](const Connection &c) { return c.fd < 0; });
+    if (open_.size() >= max_connections) {
+      // Room is made by the oldest connection still sending its request (a
+      // slowloris), else by the answer whose client has taken the least lately;
+      // an answer the studio is making is never dropped.
+      auto victim = std::find_if(open_.begin(), open_.end(),
+                                 [](const Connection &c) { return c.stage == Connection::Stage::reading; });
+      if (victim == open_.end())
+        for (auto it = open_.begin(); it != open_.end(); ++it)
+          if (it->stage == Connection::Stage::writing && (victim == open_.end() || it->deadline < victim->deadline))
+            victim = it;
+      if (victim == open_.end()) {
+        ::close(fd);
+        continue;
+      }
+      close(*victim);
+      open_.erase(victim);
+    }
+    Connection c;
+    c.id = next_id_++;
+    c.fd = fd;
+    c.local = peer.sin_family == AF_INET && ntohl(peer.sin_addr.s_addr) == INADDR_LOOPBACK;
+    c.since = Clock::now();
+    c.deadline = c.since + head_time;
+    c.slot = std::string::npos;
+    open_.push_back(std::move(c));
+  }
+}
+
+void HttpServer::read_request(Connection &c, std::vector<Incoming> &complete) {
   char buf[4096];
   for (;;) {
     const ssize_t n = ::read(c.fd, buf, sizeof buf);
     if (n > 0) {
-      c.head.append(buf, static_cast<std::size_t>(n));
-      if (c.head.size() > 16384) break;
+      c.in.append(buf, static_cast<std::size_t>(n));
+      if (c.in.size() > max_head) break;
       continue;
     }
+    if (n < 0 && errno == EINTR) continue;
     if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) break;
-    ::close(c.fd);  // closed by the client, or an error
-    c.fd = -1;
-    return std::nullopt;
+    return close(c);  // closed by the client before its request was whole, or an error
   }
-  const std::size_t end = c.head.find("\r\n\r\n");
-  if (end == std::string::npos && c.head.size() <= 16384) return std::nullopt;  // more to come
-  std::optional<HttpRequest> r =
-      end == std::string::npos ? std::nullopt : parse_http_request(c.head.substr(0, end + 2));
-  if (!r) {
-    http_respond(c.fd, 400, "text/plain", "bad request\n");
-    c.fd = -1;
-  }
-  return r;
+  const std::size_t end = http_head_end(c.in);
+  if (end == std::string::npos && c.in.size() <= max_head) return;  // more to come
+  std::optional<HttpRequest> r = end == std::string::npos || end > max_head
+                                     ? std::nullopt
+                                     : parse_http_request(std::string_view(c.in).substr(0, end));
+  c.in.clear();
+  c.stage = Connection::Stage::answering;
+  c.deadline = Clock::now() + answer_time;
+  if (!r) return respond(c.id, 400, "text/plain", "bad request\n");
+  complete.push_back({c.id, c.local, std::move(*r)});
 }
 
-void http_respond(int fd, int status, const std::string& type, std::string_view body) {
-  // Blocking from here, so SO_SNDTIMEO bounds how long a client that does not read can hold the answer.
-  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
-  const std::string head =
-      "HTTP/1.1 " + std::to_string(status) + " " + reason(status) + "\r\nContent-Type: " + type +
-      "\r\nContent-Length: " + std::to_string(body.size()) +
-      "\r\nCache-Control: no-store\r\nX-Content-Type-Options: nosniff\r\nConnection: close\r\n\r\n";
-  for (std::string_view part : {std::string_view(head), body}) {
-    while (!part.empty()) {
-      const ssize_t n = ::send(fd, part.data(), part.size(), MSG_NOSIGNAL);
+void HttpServer::write_answer(Connection &c) {
+  std::size_t budget = turn_bytes;
+  while (budget > 0) {
+    if (c.sent == c.out.size()) {
+      c.out.clear();
+      c.sent = 0;
+      if (c.file_left == 0) return close(c);  // all sent
+      c.out.resize(static_cast<std::size_t>(std::min<std::int64_t>(c.file_left, file_piece)));
+      const ssize_t n = ::pread(c.file, c.out.data(), c.out.size(), c.file_at);
       if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) break;  // the client went away, or did not read for 2 s (SO_SNDTIMEO)
-      part.remove_prefix(static_cast<std::size_t>(n));
+      if (n <= 0)
+        return close(c);  // the file shrank or failed: the client sees the
+                          // answer cut short
+      c.out.resize(static_cast<std::size_t>(n));
+      c.file_at += n;
+      c.file_left -= n;
     }
+    const std::size_t want = std::min(c.out.size() - c.sent, budget);
+    const ssize_t n = ::send(c.fd, c.out.data() + c.sent, want, MSG_NOSIGNAL | MSG_DONTWAIT);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) return;  // its buffer is full: poll says when not
+    if (n <= 0) return close(c);                                     // the client went away
+    c.sent += static_cast<std::size_t>(n);
+    budget -= static_cast<std::size_t>(n);
+    c.deadline = Clock::now() + stall_time;  // it took something: it may take its time with the rest
   }
-  ::close(fd);
+}
+
+std::vector<HttpServer::Incoming> HttpServer::step(const std::vector<pollfd> &p) {
+  std::vector<Incoming> complete;
+  for (Connection &c : open_) {
+    if (c.fd < 0 || c.slot >= p.size() || p[c.slot].fd != c.fd || p[c.slot].revents == 0) continue;
+    if (c.stage == Connection::Stage::reading)
+      read_request(c, complete);
+    else if (c.stage == Connection::Stage::writing)
+      write_answer(c);
+  }
+  if (listen_slot_ < p.size() && p[listen_slot_].fd == fd_ && (p[listen_slot_].revents & POLLIN)) accept_waiting();
+  const auto now = Clock::now();
+  for (Connection &c : open_)
+    if (c.fd >= 0 && c.deadline <= now) close(c);  // a head not whole in time, or an answer not taken
+  std::erase_if(open_, [](const Connection &c) { return c.fd < 0; });
+  return complete;
+}
+
+void HttpServer::respond(Id id, int status, const std::string &type, std::string_view body) {
+  Connection *c = find(id);
+  if (!c || c->stage != Connection::Stage::answering) return;  // closed meanwhile, or answered
+  c->out = answer_head(status, type, static_cast<std::int64_t>(body.size()));
+  c->out += body;
+  start_writing(*c);
+}
+
+void HttpServer::respond_file(Id id, const std::string &type, int file, std::int64_t size) {
+  Connection *c = find(id);
+  if (!c || c->stage != Connection::Stage::answering) {
+    ::close(file);
+    return;
+  }
+  c->out = answer_head(200, type, size);
+  c->file = file;
+  c->file_at = 0;
+  c->file_left = size;
+  start_writing(*c);
+}
+
+void HttpServer::start_writing(Connection &c) {
+  c.sent = 0;
+  c.stage = Connection::Stage::writing;
+  c.deadline = Clock::now() + stall_time;
+  write_answer(c);  // most answers fit the socket's buffer at once
 }
 
 }  // namespace selfsim::interp

@@ -22,10 +22,8 @@
 #include "interpreter/http_server.h"
 #include "interpreter/live_run.h"
 #include "interpreter/lua_support.h"
-#include "interpreter/preview_child.h"
 #include "kernels/geom/lower_case.h"
 #include "kernels/io/json_text.h"
-#include "kernels/io/output_file.h"
 
 namespace selfsim::interp {
 
@@ -144,7 +142,8 @@ struct Studio {
 // link swapped in meanwhile is refused too), never
 // '..', and only a regular file with one name (a hard link could name a file
 // from anywhere).
-void serve_output(int fd, const Studio &s, const std::string &rel) {
+void serve_output(HttpServer &http, HttpServer::Id id, const Studio &s,
+                  const std::string &rel) {
   const std::filesystem::path p(rel);
   bool ok =
       !rel.empty() && p.is_relative() && rel.find('\\') == std::string::npos;
@@ -170,19 +169,11 @@ void serve_output(int fd, const Studio &s, const std::string &rel) {
   if (!ok) {
     if (dir >= 0)
       ::close(dir);
-    return http_respond(fd, 404, "text/plain", "no such file\n");
+    return http.respond(id, 404, "text/plain", "no such file\n");
   }
-  std::string body(static_cast<std::size_t>(st.st_size), '\0');
-  std::size_t got = 0;
-  while (got < body.size()) {
-    const ssize_t n = ::read(dir, body.data() + got, body.size() - got);
-    if (n <= 0)
-      break;
-    got += static_cast<std::size_t>(n);
-  }
-  ::close(dir);
-  body.resize(got);
-  http_respond(fd, 200, content_type(rel), body);
+  // Sent from the open file as the client takes it: a large file held in
+  // memory, or a slow client holding the loop, is what this avoids.
+  http.respond_file(id, content_type(rel), dir, st.st_size);
 }
 
 } // namespace
@@ -201,13 +192,7 @@ int studio_command(const RunConfig &config, int port) {
   s.check(s.values);
   FileWatcher watcher(recipe_folders(config, "studio"), config.out_dir);
   LiveRun live(config, true);
-  // The previews' folder: a link there is refused now, as the confined writer
-  // refuses it at every write.
-  io::make_folder(config.out_dir, previews_folder);
-  std::unique_ptr<PreviewChild>
-      drawing; // the previews of `drawn`, the last good run, being drawn
-  LiveResult drawn;
-  HttpListener http(port);
+  HttpServer http(port);
   const char *scripts = std::getenv("SELFSIM_SCRIPTS");
   const std::filesystem::path page =
       std::filesystem::path(scripts ? scripts : SELFSIM_SCRIPTS_DIR) /
@@ -218,22 +203,7 @@ int studio_command(const RunConfig &config, int port) {
       shown_text(config.out_dir.string()).c_str());
   std::fflush(stdout);
 
-  // A good run is shown once its previews are drawn (or could not be, or were
-  // stopped by the next run).
-  const auto show = [&](const LiveResult &r) {
-    s.running = false;
-    ++s.version;
-    s.files = r.files;
-    s.seconds = r.seconds;
-    s.shown_generation = s.generation;
-    s.error.clear();
-  };
   auto start = [&] {
-    if (drawing) { // the previews of the run before: stopped, its files shown
-                   // as they are
-      drawing.reset();
-      show(drawn);
-    }
     ++s.generation;
     ++s.version;
     s.running = false;
@@ -242,11 +212,12 @@ int studio_command(const RunConfig &config, int port) {
     s.running = true;
   };
   start();
-  std::vector<std::pair<int, std::chrono::steady_clock::time_point>>
+  std::vector<std::pair<HttpServer::Id, std::chrono::steady_clock::time_point>>
       parked; // long polls waiting
   long answered = s.version;
   // One request: its answer, or its connection parked as a long poll.
-  auto answer = [&](const int fd, const bool local, const HttpRequest &q) {
+  auto answer = [&](const HttpServer::Id id, const bool local,
+                    const HttpRequest &q) {
     const std::string port_text = std::to_string(http.port());
     // Only this machine, by its own names: a page elsewhere cannot reach in
     // through DNS rebinding, nor make the browser send a request for it (an
@@ -258,15 +229,15 @@ int studio_command(const RunConfig &config, int port) {
                          q.fetch_site == "cross-site" ||
                          q.fetch_site == "same-site";
     if (!local || (q.host != ours && q.host != also) || foreign) {
-      http_respond(fd, 403, "text/plain",
+      http.respond(id, 403, "text/plain",
                    "the studio answers only to its own page at http://" + ours +
                        "/\n");
     } else if (q.method != "GET") {
-      http_respond(fd, 405, "text/plain", "GET only\n");
+      http.respond(id, 405, "text/plain", "GET only\n");
     } else if (q.path == "/") {
-      http_respond(fd, 200, "text/html; charset=utf-8", file_text(page));
+      http.respond(id, 200, "text/html; charset=utf-8", file_text(page));
     } else if (q.path == "/params") {
-      http_respond(fd, 200, "application/json", s.params_json_text());
+      http.respond(id, 200, "application/json", s.params_json_text());
     } else if (q.path == "/state") {
       // A long poll: /state?since=V answers when the state is no longer version
       // V (or after 20 s), so the page hears of a finished run at once without
@@ -275,9 +246,9 @@ int studio_command(const RunConfig &config, int port) {
       if (since && since->contains("since") &&
           since->at("since") == std::to_string(s.version) && parked.size() < 32)
         parked.push_back(
-            {fd, std::chrono::steady_clock::now() + std::chrono::seconds(20)});
+            {id, std::chrono::steady_clock::now() + std::chrono::seconds(20)});
       else
-        http_respond(fd, 200, "application/json", s.state_json());
+        http.respond(id, 200, "application/json", s.state_json());
     } else if (q.path == "/run") {
       try {
         const auto given = query_values(q.query);
@@ -287,75 +258,65 @@ int studio_command(const RunConfig &config, int port) {
         for (const auto &[k, v] : *given)
           s.values[k] = v;
         start();
-        http_respond(fd, 200, "application/json",
+        http.respond(id, 200, "application/json",
                      "{\"generation\": " + std::to_string(s.generation) +
                          "}\n");
       } catch (const Error &e) {
-        http_respond(fd, 400, "application/json",
+        http.respond(id, 400, "application/json",
                      "{\"error\": " + io::json_string(e.what()) + "}\n");
       }
     } else if (q.path.starts_with("/out/")) {
-      serve_output(fd, s, q.path.substr(5));
+      serve_output(http, id, s, q.path.substr(5));
     } else {
-      http_respond(fd, 404, "text/plain", "not found\n");
+      http.respond(id, 404, "text/plain", "not found\n");
     }
   };
-  std::vector<HttpListener::Connection> open; // requests still coming in
   while (!interrupted.load()) {
-    std::vector<pollfd> p{{http.fd(), POLLIN, 0},
-                          {watcher.fd(), POLLIN, 0},
-                          {live.fd(), POLLIN, 0}};
-    for (const auto &c : open)
-      p.push_back({c.fd, POLLIN, 0});
-    p.push_back({drawing ? drawing->fd() : -1, POLLIN,
-                 0}); // last: the connections' places stay
+    std::vector<pollfd> p{{watcher.fd(), POLLIN, 0}, {live.fd(), POLLIN, 0}};
+    http.add_poll(
+        p); // its socket and every connection's, none waiting on another
     if (::poll(p.data(), p.size(), 250) < 0)
       continue;
     if (LiveResult r; live.finished(r)) {
+      s.running = false;
+      ++s.version;
       if (r.code == 0) {
         // 3D results as `selfsim preview` draws them, into the output folder's
-        // .studio/, by a child process under the run's limits: the loop goes on
-        // answering meanwhile (preview_child.h). A result that is also an SVG
-        // (curve.svg beside curve.vtp) is shown once, as the SVG.
+        // .studio/. A result that is also an SVG (curve.svg beside curve.vtp)
+        // is shown once, as the SVG.
         std::set<std::string> svgs;
         for (const std::string &f : r.files)
           if (lower_case(std::filesystem::path(f).extension().string()) ==
               ".svg")
             svgs.insert(std::filesystem::path(f).stem().string());
-        std::vector<std::string> files, names;
+        PreviewConfig previews;
+        previews.quiet = true;
         for (const std::string &f : r.files)
           if (previewable(f) &&
               !svgs.contains(std::filesystem::path(f).stem().string())) {
-            files.push_back((config.out_dir / f).string());
-            names.push_back(std::string(previews_folder) + "/" + f + ".png");
+            previews.files.push_back((config.out_dir / f).string());
+            previews.pngs.push_back(config.out_dir / previews_folder /
+                                    (f + ".png"));
           }
-        try {
-          if (!files.empty())
-            drawing = std::make_unique<PreviewChild>(config, config.out_dir,
-                                                     files, names);
-        } catch (const Error &e) {
-          std::fprintf(stderr, "selfsim: no previews: %s\n", e.what());
+        if (!previews.files.empty()) {
+          preview_command(previews);
+          for (int sig : {SIGINT, SIGTERM, SIGHUP})
+            sigaction(sig, &sa, nullptr); // the display server's are gone
         }
-        if (drawing)
-          drawn = r;
-        else
-          show(r);
+        s.files = r.files;
+        s.seconds = r.seconds;
+        s.shown_generation = s.generation;
+        s.error.clear();
       } else {
-        s.running = false;
-        ++s.version;
         s.error = r.log.substr(0, r.log.find('\n'));
         if (s.error.empty())
           s.error = "the run failed (exit " + std::to_string(r.code) + ")";
         s.error_generation = s.generation;
       }
     }
-    if (int code = 0; drawing && drawing->finished(code)) {
-      drawing.reset();
-      show(drawn);
-    }
     const bool back =
         watcher.restore(); // a folder deleted and brought back (git checkout)
-    if ((p[1].revents & POLLIN) || back) {
+    if ((p[0].revents & POLLIN) || back) {
       if (const std::string changed =
               back ? "(a folder, back)" : watcher.take();
           !changed.empty()) {
@@ -378,39 +339,20 @@ int studio_command(const RunConfig &config, int port) {
         }
       }
     }
-    if (p[0].revents & POLLIN)
-      while (http.accept_into(open)) {
-      }
+    for (const HttpServer::Incoming &in : http.step(p))
+      answer(in.id, in.local, in.request);
     const auto now = std::chrono::steady_clock::now();
-    for (std::size_t i = 0; i < open.size(); ++i) {
-      HttpListener::Connection &c = open[i];
-      if (i + 3 < p.size() && (p[i + 3].revents & (POLLIN | POLLHUP | POLLERR)))
-        if (const std::optional<HttpRequest> q = HttpListener::read_more(c)) {
-          answer(c.fd, c.local, *q);
-          c.fd = -1;
-        }
-      if (c.fd >= 0 && c.deadline <= now) { // nothing complete in 10 s
-        ::close(c.fd);
-        c.fd = -1;
-      }
-    }
-    std::erase_if(open,
-                  [](const HttpListener::Connection &c) { return c.fd < 0; });
     // Answer the parked long polls when the state changed, or when they have
     // waited long enough.
     for (auto it = parked.begin(); it != parked.end();)
       if (s.version != answered || it->second <= now) {
-        http_respond(it->first, 200, "application/json", s.state_json());
+        http.respond(it->first, 200, "application/json", s.state_json());
         it = parked.erase(it);
       } else {
         ++it;
       }
     answered = s.version;
   }
-  for (const auto &[fd, deadline] : parked)
-    ::close(fd);
-  for (const auto &c : open)
-    ::close(c.fd);
   return 130;
 }
 
