@@ -5,8 +5,8 @@
 # usage: check_watch.sh SELFSIM SOURCE_DIR
 # shellcheck source=tests/cli/test_lib.sh
 source "$(dirname "$0")/test_lib.sh"
-pid= pid2=
-trap 'for p in $pid $pid2; do kill -9 $p 2>/dev/null; done; rm -rf "$tmp"' EXIT
+pid='' pid2=''
+trap 'for w in $pid $pid2; do kill -9 "$w" 2>/dev/null; done; rm -rf "$tmp"' EXIT
 cd "$tmp" || exit 1
 # until COMMAND: retries for up to 20 s.
 until_ok() {
@@ -16,7 +16,7 @@ until_ok() {
 # Whether two SVGs draw the same (their provenance comments name different recipes).
 same_drawing() { cmp -s <(grep -v selfsim_provenance "$1") <(grep -v selfsim_provenance "$2"); }
 # Whether the watcher has a run going (its own child, not any selfsim on the machine).
-slow_run_started() { [ -n "$(children $pid out/.selfsim-next)" ]; }
+slow_run_started() { [ -n "$(children "$pid" out/.selfsim-next)" ]; }
 # Writes a file as editors do: a temporary renamed over it.
 save_as() { printf '%s\n' "$2" >".$1.new" && mv ".$1.new" "$1"; }
 
@@ -73,7 +73,7 @@ grep -qF "another studio or --watch is using the output folder" err2.txt || fail
 save_as r.lua 'local t = os.clock()
 while os.clock() - t < 60 do end'
 until_ok slow_run_started || fail "the slow run did not start"
-run=$(children $pid out/.selfsim-next)
+run=$(children "$pid" out/.selfsim-next)
 kill -INT $pid
 code=0
 wait $pid || code=$?
