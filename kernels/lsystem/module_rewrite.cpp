@@ -369,20 +369,6 @@ class Deriver {
   std::size_t work_ = 0, written_ = 0, next_check_ = check_every, next_written_ = check_every;
 };
 
-struct TextSink : ModuleSink {
-  std::string text;
-  double max_modules;
-  double count = 0;
-  int level;
-  void module(std::uint8_t s, std::span<const double> args) override {
-    text += module_text(s, args);
-    // Parameters print up to 24 bytes each: the text is bounded too, not only the count.
-    if (++count > max_modules || static_cast<double>(text.size()) > 8 * max_modules)
-      throw Error("level " + std::to_string(level) + " has more than " + count_text(max_modules) + " modules (or " +
-                  count_text(8 * max_modules) + " bytes of text), over the limit for a string");
-  }
-};
-
 }  // namespace
 
 void rewrite_modules(const Grammar& g, int level, ModuleSink& sink, const ModuleLimits& limits, Progress& progress,
@@ -395,15 +381,6 @@ void rewrite_modules(const Grammar& g, int level, ModuleSink& sink, const Module
     d.level_by_level(level, sink);
   else
     d.depth_first(level, sink);
-}
-
-std::string module_string_text(const Grammar& g, int level, double max_modules, Progress& progress) {
-  TextSink sink;
-  sink.max_modules = max_modules;
-  sink.level = level;
-  // A string is small: its derivation may hold and do no more than its text could be.
-  rewrite_modules(g, level, sink, {.work = 64 * max_modules, .held = max_modules}, progress);
-  return std::move(sink.text);
 }
 
 }  // namespace selfsim::lsystem
