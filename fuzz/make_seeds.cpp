@@ -2,7 +2,8 @@
 // and .svg files written by selfsim's own writers (io::save). Run once and commit the output:
 //   build-fuzz/fuzz/fuzz_make_seeds fuzz/corpus
 // (The recipe target's seeds are hand-written recipes in fuzz/corpus/recipe/, plus examples/ and
-// tests/errors/, which fuzz/run.sh adds.)
+// tests/errors/, which fuzz/run.sh adds. The .vdb seeds with active tiles are OpenVDB's own files, written
+// by tests/robustness/vdb_tiles.py with python3-openvdb, so that no seed program links OpenVDB.)
 #include <cmath>
 #include <cstdio>
 #include <filesystem>

@@ -28,6 +28,17 @@ def cube(side, value=None, background=None, at=(0, 0, 0)):
     return g
 
 
+def mixed():
+    """Active values at three levels side by side along x: a tile of 128^3 voxels (a level-2 node's),
+    beside it one of 8^3 (a level-1 node's), beside that 4^3 voxels of a leaf; voxel 1/64. One region
+    from x = -1 to 1 + 12/64, its box's y and z from -1 to 1 at the big tile."""
+    g = cube(128)
+    bg = g.background
+    g.fill((128, 0, 0), (135, 7, 7), -bg, True)
+    g.fill((136, 0, 0), (139, 3, 3), -bg, True)
+    return g
+
+
 def sphere_with_tiles():
     """The hostile test's file: a sphere's level set (radius 1, 40 voxels) whose inside is filled with
     active tiles, OpenVDB's own fill(..., active=True): 64 tiles of 8^3 voxels."""
@@ -59,6 +70,7 @@ files = {
     "tiles_level1.vdb": lambda: cube(16),  # 8 tiles of a level-1 internal node
     "tiles_level2.vdb": lambda: cube(128),  # 1 tile of a level-2 internal node
     "tiles_root.vdb": lambda: cube(4096),  # 1 root tile: 2^36 voxels
+    "tiles_mixed.vdb": mixed,
     "sphere_tiles.vdb": sphere_with_tiles,
     # Positive inside, negative outside; one root tile, so that the file is small.
     "inside_out.vdb": lambda: cube(4096, value=0.001, background=-0.001),

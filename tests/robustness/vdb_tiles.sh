@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # .vdb level sets with active tiles, made by OpenVDB itself (vdb_tiles.py, python3-openvdb): a cube held
-# by tiles of a level-1 internal node (8^3 voxels each) and by one tile of a level-2 node (128^3), and a
-# sphere filled with 64 active tiles, read by volume.vdb, load, info and preview as their surfaces and
+# by tiles of a level-1 internal node (8^3 voxels each) and by one tile of a level-2 node (128^3), both
+# kinds beside a leaf's voxels in one grid, and a sphere filled with 64 active tiles, read by volume.vdb, load, info and preview as their surfaces and
 # voxels; a root tile (2^36 voxels) refused by the budget before anything is meshed or voxelised; grids
 # inside out or far from the origin refused saying so. Skips (77) without python3-openvdb.
 # usage: vdb_tiles.sh SELFSIM SOURCE_DIR
@@ -27,6 +27,11 @@ for _, f in ipairs { { "tiles_level1.vdb", 16 }, { "tiles_level2.vdb", 128 } } d
     local c = math.max(math.abs(p[1]), math.abs(p[2]), math.abs(p[3]))
     assert(c < 1 + 1e-5 and c > 1 - 1 / across, name .. " point " .. i .. " at " .. c)
   end
+end
+-- Tiles of both internal levels and a leaf's voxels side by side: one region, the three blocks' box.
+local mixed = volume.vdb("tiles_mixed.vdb"):bbox()
+for axis, want in ipairs { { -1, 1 + 12 / 64 }, { -1, 1 }, { -1, 1 } } do
+  assert(math.abs(mixed.min[axis] - want[1]) < 1e-5 and math.abs(mixed.max[axis] - want[2]) < 1e-5, "mixed " .. axis)
 end
 -- Grown inside the level-1 cube with its walls measured on its voxels (the tiles made voxels): every
 -- point stays inside.
