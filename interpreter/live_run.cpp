@@ -96,6 +96,7 @@ void LiveRun::start(const std::map<std::string, std::string>& sets) {
   std::error_code ec;
   std::filesystem::remove_all(staging_, ec);
   std::filesystem::create_directories(base_.out_dir);  // deleted meanwhile: made again
+  io::make_folder(base_.out_dir, staging_name);        // a real folder, not a link planted in its place
   SweepRun one;
   one.sets = sets;
   std::vector<std::string> args = run_arguments(base_, one, staging_, base_.threads);

@@ -114,9 +114,11 @@ for attempt in range(1, 6):  # a preview that ends before it is seen is drawn ag
             if len(a) > 1 and a[1] == "preview":
                 try:
                     os.kill(c, signal.SIGSTOP)  # held mid-drawing: "during" is certain
-                    preview = c
                 except OSError:
-                    pass
+                    continue
+                # Held, unless it had already ended (a zombie takes the signal without stopping).
+                if until(lambda: stopped(c) or not alive(c), 10) and stopped(c):
+                    preview = c
         status, body = get(port, "/state") if preview is None else (None, b"")
         if preview is None and status == 200 and b'"running": false' in body:
             break  # this run's previews are done: try again

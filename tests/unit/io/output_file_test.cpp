@@ -1,6 +1,7 @@
 #include "kernels/io/output_file.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <fstream>
 
@@ -101,4 +102,36 @@ TEST(OutputFile, AFolderInTheWayIsAnError) {
 TEST(OutputFile, OverlongNamesAreErrors) {
   TempDir d;
   EXPECT_THROW(io::OutputFile(d.path, std::string(300, 'a') + ".svg"), Error);
+}
+
+// The rest of what selfsim writes goes through the same confined folders: a sweep's folders (make_folder),
+// a child's log (open_log), a staged file published (move_file). A link anywhere on the way is refused.
+TEST(OutputFile, FoldersLogsAndMovesRefuseLinksOnTheWay) {
+  TempDir d;
+  fs::create_directories(d.path / "out/real");
+  fs::create_directories(d.path / "elsewhere");
+  fs::create_directory_symlink(d.path / "elsewhere", d.path / "out/real/link");
+  fs::create_symlink(d.path / "elsewhere/log.txt", d.path / "out/log.txt");
+  EXPECT_THROW(io::make_folder(d.path / "out", "real/link/deeper"), Error);
+  EXPECT_THROW(::close(io::open_log(d.path / "out", "real/link/run.log")), Error);
+  EXPECT_THROW(::close(io::open_log(d.path / "out", "log.txt")), Error);  // the file itself a link
+  {
+    io::OutputFile f(d.path / "out", "staged/a.svg");
+    f.write(std::string_view("a"));
+    f.commit();
+  }
+  EXPECT_THROW(io::move_file(d.path / "out", "staged/a.svg", "real/link/a.svg"), Error);
+  EXPECT_THROW(io::move_file(d.path / "out", "staged/a.svg", "../a.svg"), Error);
+  EXPECT_TRUE(names_in(d.path / "elsewhere").empty());
+  EXPECT_TRUE(fs::is_regular_file(d.path / "out/staged/a.svg"));  // nothing moved
+
+  io::make_folder(d.path / "out", "made/on/the/way");
+  EXPECT_TRUE(fs::is_directory(d.path / "out/made/on/the/way"));
+  const int fd = io::open_log(d.path / "out", "made/run.log");
+  EXPECT_EQ(::write(fd, "x", 1), 1);
+  ::close(fd);
+  EXPECT_EQ(read(d.path / "out/made/run.log"), "x");
+  io::move_file(d.path / "out", "staged/a.svg", "made/on/a.svg");
+  EXPECT_EQ(read(d.path / "out/made/on/a.svg"), "a");
+  EXPECT_FALSE(fs::exists(d.path / "out/staged/a.svg"));
 }
