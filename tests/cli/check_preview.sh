@@ -88,6 +88,22 @@ check "no file: usage exit 2" test "$code" = 2
 run_selfsim preview "$tmp/in/curve.vtp" --bogus
 check "unknown option: usage exit 2" test "$code" = 2
 
+# The run's limits (the studio and sweeps pass theirs): --max-memory too small for the renderer and a
+# --timeout long past are one line each and leave no PNG; bad values are usage errors naming the flag.
+run_selfsim preview "$tmp/in/mesh.vtp" -o "$tmp/lim" --max-memory 16M
+check "--max-memory 16M: exit 1 ($(first_err))" test "$code" = 1
+check "--max-memory 16M: one line" test "$(wc -l <"$tmp/err")" = 1
+run_selfsim preview "$tmp/in/mesh.vtp" -o "$tmp/lim" --timeout 0.000001
+check "--timeout reached: exit 1" test "$code" = 1
+check "--timeout reached: message" grep -q "^selfsim preview: --timeout of 1e-06 s reached" "$tmp/err"
+check "no PNG past the limits" test ! -e "$tmp/lim/mesh.png"
+run_selfsim preview "$tmp/in/mesh.vtp" --max-memory 1K
+check "--max-memory 1K: usage error naming it" grep -q "^selfsim: --max-memory expects a size" "$tmp/err"
+run_selfsim preview "$tmp/in/mesh.vtp" --timeout -1
+check "--timeout -1: usage error naming it" grep -q -- "--timeout" "$tmp/err"
+run_selfsim preview --as only.png
+check "--as without a file: usage exit 2" test "$code" = 2
+
 # No display and no Xvfb on PATH.
 mkdir -p "$tmp/bin"
 env -u DISPLAY PATH="$tmp/bin" "$selfsim" preview "$tmp/in/curve.vtp" -o "$tmp/nox" >"$tmp/out" 2>"$tmp/err"
