@@ -2,7 +2,7 @@
 """Writes .vdb level sets made with OpenVDB's own Python module (python3-openvdb), for vdb_tiles.sh and the
 committed test files: regions held by active tiles at every level of a float grid's tree (a tile of 8^3
 voxels in a level-1 internal node, 128^3 in a level-2 one, 4096^3 at the root), as Houdini and Blender
-write them, and grids that are wrong in ways the reader names (inside out, far from the origin).
+write them, and grids that are wrong in ways the reader names (inside out, far from the world or the index origin).
 
 usage: vdb_tiles.py DIR [NAME...]   (every file when no NAME is given)
 """
@@ -77,6 +77,8 @@ files = {
     "inside_out_sphere.vdb": inside_out_sphere,
     "far_blobs.vdb": lambda: far_blobs(4096),
     "far_small_blobs.vdb": lambda: far_blobs(8),
+    # A root tile past index 2^30, its transform bringing it back around the world origin.
+    "far_index.vdb": lambda: cube(4096, at=(2**30 + 4096, 0, 0)),
 }
 
 if __name__ == "__main__":

@@ -84,7 +84,7 @@ refused 'volume.vdb("tiles_root.vdb")' \
   --max-points 1e12
 # Grids wrong in a way the mesh would only show as crossings: said as what is wrong with the grid.
 refused 'volume.vdb("inside_out_sphere.vdb")' "cannot read 'inside_out_sphere.vdb': grid 'sphere' is inside out"
-refused 'load("far_small_blobs.vdb")' "cannot read 'far_small_blobs.vdb': grid 'cube' lies 536870919 voxels from index"
+refused 'load("far_small_blobs.vdb")' "cannot read 'far_small_blobs.vdb': grid 'cube' lies 536870919 voxels from the origin"
 
 if command -v Xvfb >/dev/null; then
   run_selfsim preview "$tmp/sphere_tiles.vdb" -o "$tmp/previews"

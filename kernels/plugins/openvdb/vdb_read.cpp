@@ -166,10 +166,12 @@ void send_info(PipeOut& out, openvdb::io::File& file) {
   }
 }
 
-// The farthest a grid's voxels may lie from its index origin, and its surface from the world origin, in
-// voxels: volumeToMesh's positions are single-precision floats (24 bits), which resolve 1/16 of a voxel
-// out to 2^20 voxels; beyond that a surface's points snap together and its polygons cross.
-constexpr double farthest_voxels = 1 << 20;
+// How far out a grid may reach. Its surface's positions come back as single-precision floats (24 bits),
+// which resolve an eighth of a voxel out to 2^21 voxels from the world origin; farther, its points snap
+// together and its polygons cross. Its integer index coordinates (32 bits) overflow in OpenVDB's own
+// arithmetic near 2^31: 2^30 leaves room for a root tile's 4096 voxels and the band around it.
+constexpr double farthest_world_voxels = 1 << 21;
+constexpr double farthest_index = 1 << 30;
 
 // A grid's value as the float it is ("-0.3", not "-0.30000001192093").
 std::string float_text(double v) {
@@ -204,26 +206,32 @@ void check_grid(const openvdb::FloatGrid& grid, bool fog) {
     any = true;
   }
   if (!any) return;
-  double index = 0, world = 0;
-  openvdb::Coord farthest;
+  const openvdb::Vec3d size = grid.voxelSize();
+  const double voxel = std::min({size[0], size[1], size[2]});
+  double index = 0, world = 0;  // the farthest, in voxels
+  openvdb::Coord far_index, far_world;
   for (const openvdb::Coord& c : outermost) {
     const openvdb::Vec3d w = grid.indexToWorld(c);
     for (int k = 0; k < 3; ++k) {
-      if (std::abs(static_cast<double>(c[k])) > index) farthest = c;
-      index = std::max(index, std::abs(static_cast<double>(c[k])));
-      world = std::max(world, std::abs(w[k]));
+      if (std::abs(static_cast<double>(c[k])) > index) index = std::abs(static_cast<double>(c[k])), far_index = c;
+      if (std::abs(w[k]) / voxel > world) world = std::abs(w[k]) / voxel, far_world = c;
     }
   }
-  const openvdb::Vec3d size = grid.voxelSize();
-  world /= std::min({size[0], size[1], size[2]});
-  if (!(index <= farthest_voxels && world <= farthest_voxels))
-    throw Error(name + " lies " + count_text(std::round(std::max(index, world))) + " voxels from " +
-                (index > farthest_voxels ? "index (0, 0, 0) (its voxels reach (" + std::to_string(farthest[0]) + ", " +
-                                               std::to_string(farthest[1]) + ", " + std::to_string(farthest[2]) + "))"
-                                         : std::string("the world origin")) +
-                ", beyond the " + count_text(farthest_voxels) +
+  const auto coord_text = [](const openvdb::Coord& c) {
+    return "(" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " + std::to_string(c[2]) + ")";
+  };
+  if (!(world <= farthest_world_voxels)) {
+    const openvdb::Vec3d w = grid.indexToWorld(far_world);
+    throw Error(name + " lies " + count_text(std::round(world)) + " voxels from the origin (its voxel at index " +
+                coord_text(far_world) + " is at (" + number_text(w[0]) + ", " + number_text(w[1]) + ", " +
+                number_text(w[2]) + ")), beyond the " + count_text(farthest_world_voxels) +
                 " within which single-precision positions resolve its voxels; move it nearer the origin and save it "
                 "again");
+  }
+  if (!(index <= farthest_index))
+    throw Error(name + " reaches index " + coord_text(far_index) + ", beyond the " + count_text(farthest_index) +
+                " voxels from index (0, 0, 0) within which OpenVDB's integer coordinates do not overflow; move its "
+                "voxels nearer index (0, 0, 0) (its transform keeps where they lie) and save it again");
   // Just beyond the outermost voxels is outside: a grid inside there is inside out (its values negated, its
   // background left as it was), whatever its background says.
   const auto access = grid.getConstAccessor();
