@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The studio's previews are drawn like a run: by a child `selfsim preview` with the run's --timeout and
 --max-memory, never inside the studio's loop. While a preview is being drawn (held with SIGSTOP, so "during"
-is certain rather than timed) the studio answers other requests; Ctrl-C to the studio alone then ends it and
+is certain rather than timed) the studio answers other requests; Ctrl-C or SIGTERM to the studio alone then ends it and
 the preview, leaving no lock, run log, staging folder or partial PNG in the output folder. Then a `.studio`
 link: refused at the start with its name, nothing written where it points. The waits are bounds against a
 hang, never timings: every assertion is about order or content. Skips (77) without an X display or Xvfb.
@@ -100,63 +100,65 @@ def stopped(pid):
         return False
 
 
-# 1. A preview being drawn does not hold the page loop, and runs under the run's limits.
-studio, port, line = start_studio("--timeout", "120")
-check(port is not None, "the studio says where it listens: " + line)
-preview = None
-for attempt in range(1, 6):  # a preview that ends before it is seen is drawn again for another value
-    if attempt > 1:
-        get(port, f"/run?n={attempt}")
-    end = time.monotonic() + 120
-    while preview is None and time.monotonic() < end and studio.poll() is None:
-        for c in children(studio.pid):
-            a = argv(c)
-            if len(a) > 1 and a[1] == "preview":
-                try:
-                    os.kill(c, signal.SIGSTOP)  # held mid-drawing: "during" is certain
-                except OSError:
-                    continue
-                # Held, unless it had already ended (a zombie takes the signal without stopping).
-                if until(lambda: stopped(c) or not alive(c), 10) and stopped(c):
-                    preview = c
-        status, body = get(port, "/state") if preview is None else (None, b"")
-        if preview is None and status == 200 and b'"running": false' in body:
-            break  # this run's previews are done: try again
-        time.sleep(0.002)
+# 1. A preview being drawn does not hold the page loop, and runs under the run's limits; 2. Ctrl-C or
+# SIGTERM to the studio alone, the preview still held: everything ends and the folder is clean.
+for stop in (signal.SIGINT, signal.SIGTERM):
+    studio, port, line = start_studio("--timeout", "120")
+    check(port is not None, "the studio says where it listens: " + line)
+    preview = None
+    for attempt in range(1, 6):  # a preview that ends before it is seen is drawn again for another value
+        if attempt > 1:
+            get(port, f"/run?n={attempt}")
+        end = time.monotonic() + 120
+        while preview is None and time.monotonic() < end and studio.poll() is None:
+            for c in children(studio.pid):
+                a = argv(c)
+                if len(a) > 1 and a[1] == "preview":
+                    try:
+                        os.kill(c, signal.SIGSTOP)  # held mid-drawing: "during" is certain
+                    except OSError:
+                        continue
+                    # Held, unless it had already ended (a zombie takes the signal without stopping).
+                    if until(lambda: stopped(c) or not alive(c), 10) and stopped(c):
+                        preview = c
+            status, body = get(port, "/state") if preview is None else (None, b"")
+            if preview is None and status == 200 and b'"running": false' in body:
+                break  # this run's previews are done: try again
+            time.sleep(0.002)
+        if preview is not None:
+            break
+    check(preview is not None, "the studio draws its previews in a child `selfsim preview`")
     if preview is not None:
-        break
-check(preview is not None, "the studio draws its previews in a child `selfsim preview`")
-if preview is not None:
-    a = argv(preview)
-    check("--max-memory" in a and a[a.index("--timeout") + 1] == "120" if "--timeout" in a else False,
-          "the preview runs under the run's --timeout and --max-memory: " + " ".join(a))
-    status, body = get(port, "/params")
-    check(status == 200 and b'"parameters"' in body, f"/params answered while a preview is drawn: {status}")
-    status, body = get(port, "/state")
-    check(status == 200 and b'"running": true' in body, f"/state answered (still drawing) meanwhile: {status} {body!r}")
-    check(stopped(preview), "the preview was still being drawn when those answers came")
-    helpers = [c for c in children(preview)]  # Xvfb, the renderer's child
-    # 2. Ctrl-C to the studio alone, the preview still held: everything ends and the folder is clean.
-    studio.send_signal(signal.SIGINT)
-    try:
-        code = studio.wait(60)
-    except subprocess.TimeoutExpired:
+        a = argv(preview)
+        check("--max-memory" in a and a[a.index("--timeout") + 1] == "120" if "--timeout" in a else False,
+              "the preview runs under the run's --timeout and --max-memory: " + " ".join(a))
+        status, body = get(port, "/params")
+        check(status == 200 and b'"parameters"' in body, f"/params answered while a preview is drawn: {status}")
+        status, body = get(port, "/state")
+        check(status == 200 and b'"running": true' in body, f"/state answered (still drawing) meanwhile: {status} {body!r}")
+        check(stopped(preview), "the preview was still being drawn when those answers came")
+        helpers = [c for c in children(preview)]  # Xvfb, the renderer's child
+        studio.send_signal(stop)
+        try:
+            code = studio.wait(60)
+        except subprocess.TimeoutExpired:
+            studio.kill()
+            code = None
+        check(code == 130, f"{stop.name} during a preview ends the studio with 130, got {code}")
+        check(until(lambda: not alive(preview), 30) is not None or not alive(preview), "the preview ended with the studio")
+        for h in helpers:
+            check(until(lambda: not alive(h), 30) is not None or not alive(h), f"the preview's helper {argv(h)} ended")
+        left = []
+        for root, dirs, files in os.walk(out):
+            for name in dirs + files:
+                if name.startswith(".selfsim") or ".part-" in name:
+                    left.append(os.path.join(root, name))
+        check(not left, f"nothing of the studio or the preview is left behind: {left}")
+        check(os.path.isfile(os.path.join(out, "mesh.vtp")), "the run's own file stays")
+    if studio.poll() is None:
         studio.kill()
-        code = None
-    check(code == 130, f"Ctrl-C during a preview ends the studio with 130, got {code}")
-    check(until(lambda: not alive(preview), 30) is not None or not alive(preview), "the preview ended with the studio")
-    for h in helpers:
-        check(until(lambda: not alive(h), 30) is not None or not alive(h), f"the preview's helper {argv(h)} ended")
-    left = []
-    for root, dirs, files in os.walk(out):
-        for name in dirs + files:
-            if name.startswith(".selfsim") or ".part-" in name:
-                left.append(os.path.join(root, name))
-    check(not left, f"nothing of the studio or the preview is left behind: {left}")
-    check(os.path.isfile(os.path.join(out, "mesh.vtp")), "the run's own file stays")
-if studio.poll() is None:
-    studio.kill()
-    studio.wait()
+        studio.wait()
+
 
 # 3. Left alone, the preview is drawn and shown; a `.studio` link swapped in afterwards is not written through.
 outside = os.path.join(tmp, "outside")
