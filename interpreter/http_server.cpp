@@ -28,7 +28,7 @@ int hex_digit(char c) {
   return -1;
 }
 
-const char *reason(int status) {
+const char* reason(int status) {
   switch (status) {
     case 200:
       return "OK";
@@ -47,7 +47,7 @@ const char *reason(int status) {
 
 }  // namespace
 
-std::string url_path(const std::string &path) {
+std::string url_path(const std::string& path) {
   std::string s;
   for (unsigned char c : path) {
     if (std::isalnum(c) || std::string_view("-._~/=,").find(static_cast<char>(c)) != std::string_view::npos) {
@@ -109,11 +109,10 @@ constexpr auto answer_time = std::chrono::seconds(60);  // for the studio to ans
 
 using Clock = std::chrono::steady_clock;
 
-std::string answer_head(int status, const std::string &type, std::int64_t length) {
+std::string answer_head(int status, const std::string& type, std::int64_t length) {
   return "HTTP/1.1 " + std::to_string(status) + " " + reason(status) + "\r\nContent-Type: " + type +
          "\r\nContent-Length: " + std::to_string(length) +
-         "\r\nCache-Control: no-store\r\nX-Content-Type-Options: "
-         "nosniff\r\nConnection: close\r\n\r\n";
+         "\r\nCache-Control: no-store\r\nX-Content-Type-Options: nosniff\r\nConnection: close\r\n\r\n";
 }
 
 bool token_char(unsigned char c) {
@@ -131,9 +130,8 @@ std::size_t http_head_end(std::string_view data) {
 }
 
 std::optional<HttpRequest> parse_http_request(std::string_view head) {
-  // Lines end in LF, with or without a CR before it; any other control byte (a
-  // bare CR, a NUL) makes the request bad rather than being read one way here
-  // and another way elsewhere.
+  // Lines end in LF, with or without a CR before it; any other control byte (a bare CR, a NUL) makes the
+  // request bad rather than being read one way here and another way elsewhere.
   std::vector<std::string_view> lines;
   for (std::size_t at = 0; at < head.size();) {
     std::size_t end = head.find('\n', at);
@@ -167,22 +165,20 @@ std::optional<HttpRequest> parse_http_request(std::string_view head) {
   bool seen_host = false, seen_origin = false, seen_site = false;
   for (std::size_t i = 1; i < lines.size(); ++i) {
     const std::string_view h = lines[i];
-    // Header names are case-insensitive tokens right before the colon: "Origin
-    // :" or a folded line could be read as another header than the one a check
-    // looks at, so they are refused.
+    // Header names are case-insensitive tokens right before the colon: "Origin :" or a folded line could be
+    // read as another header than the one a check looks at, so they are refused.
     const std::size_t colon = h.find(':');
     if (colon == 0 || colon == std::string_view::npos) return std::nullopt;
     std::string name(h.substr(0, colon));
-    for (char &c : name) {
+    for (char& c : name) {
       if (!token_char(static_cast<unsigned char>(c))) return std::nullopt;
       c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     }
     std::string_view v = h.substr(colon + 1);
     while (!v.empty() && (v.front() == ' ' || v.front() == '\t')) v.remove_prefix(1);
     while (!v.empty() && (v.back() == ' ' || v.back() == '\t')) v.remove_suffix(1);
-    // The headers the studio's checks read count only when there is exactly
-    // one, with a value: with two, a check could read one and a browser or
-    // proxy have meant the other.
+    // The headers the studio's checks read count only when there is exactly one, with a value: with two, a
+    // check could read one and a browser or proxy have meant the other.
     for (auto [header, seen, field] :
          {std::tuple{"host", &seen_host, &r.host}, std::tuple{"origin", &seen_origin, &r.origin},
           std::tuple{"sec-fetch-site", &seen_site, &r.fetch_site}})
@@ -206,13 +202,12 @@ struct HttpServer::Connection {
   std::size_t sent = 0;  // of out
   int file = -1;         // the rest of the answer, where it is a file
   std::int64_t file_at = 0, file_left = 0;
-  Clock::time_point since, deadline;  // opened; the limit of the current stage
-  std::size_t slot = 0;               // in the poll set, or npos when not polled
+  Clock::time_point deadline;  // the limit of the current stage
+  std::size_t slot = 0;        // in the poll set, or npos when not polled
 };
 
 HttpServer::HttpServer(int port) {
-  fd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC | SOCK_NONBLOCK,
-                 0);  // accept never waits
+  fd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0);  // accept never waits
   if (fd_ < 0) throw Error(std::string("cannot open a socket: ") + std::strerror(errno));
   const int yes = 1;
   ::setsockopt(fd_, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
@@ -220,40 +215,39 @@ HttpServer::HttpServer(int port) {
   addr.sin_family = AF_INET;
   addr.sin_port = htons(static_cast<std::uint16_t>(port));
   addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);  // this machine only: never another address
-  if (::bind(fd_, reinterpret_cast<sockaddr *>(&addr), sizeof addr) != 0 || ::listen(fd_, 64) != 0) {
+  if (::bind(fd_, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0 || ::listen(fd_, 64) != 0) {
     const std::string why = std::strerror(errno);
     ::close(fd_);
     throw Error("cannot listen on 127.0.0.1:" + std::to_string(port) + ": " + why);
   }
   socklen_t len = sizeof addr;
-  ::getsockname(fd_, reinterpret_cast<sockaddr *>(&addr), &len);
+  ::getsockname(fd_, reinterpret_cast<sockaddr*>(&addr), &len);
   port_ = ntohs(addr.sin_port);
 }
 
 HttpServer::~HttpServer() {
-  for (Connection &c : open_) close(c);
+  for (Connection& c : open_) close(c);
   if (fd_ >= 0) ::close(fd_);
 }
 
-void HttpServer::close(Connection &c) {
+void HttpServer::close(Connection& c) {
   if (c.fd >= 0) ::close(c.fd);
   if (c.file >= 0) ::close(c.file);
   c.fd = c.file = -1;
 }
 
-HttpServer::Connection *HttpServer::find(Id id) {
-  for (Connection &c : open_)
+HttpServer::Connection* HttpServer::find(Id id) {
+  for (Connection& c : open_)
     if (c.id == id && c.fd >= 0) return &c;
   return nullptr;
 }
 
-void HttpServer::add_poll(std::vector<pollfd> &p) {
-  std::erase_if(open_, [](const Connection &c) { return c.fd < 0; });
+void HttpServer::add_poll(std::vector<pollfd>& p) {
+  std::erase_if(open_, [](const Connection& c) { return c.fd < 0; });
   listen_slot_ = p.size();
   p.push_back({fd_, POLLIN, 0});
-  for (Connection &c : open_) {
-    c.slot = std::string::npos;  // an answer being made waits on the studio, not
-                                 // on its socket
+  for (Connection& c : open_) {
+    c.slot = std::string::npos;  // an answer being made waits on the studio, not on its socket
     if (c.stage == Connection::Stage::answering) continue;
     c.slot = p.size();
     p.push_back({c.fd, static_cast<short>(c.stage == Connection::Stage::reading ? POLLIN : POLLOUT), 0});
@@ -264,15 +258,14 @@ void HttpServer::accept_waiting() {
   for (int i = 0; i < 64; ++i) {  // a flood of connections still leaves the loop its turn
     sockaddr_in peer{};
     socklen_t len = sizeof peer;
-    const int fd = ::accept4(fd_, reinterpret_cast<sockaddr *>(&peer), &len, SOCK_CLOEXEC | SOCK_NONBLOCK);
+    const int fd = ::accept4(fd_, reinterpret_cast<sockaddr*>(&peer), &len, SOCK_CLOEXEC | SOCK_NONBLOCK);
     if (fd < 0) return;
-    std::erase_if(open_, [](const Connection &c) { return c.fd < 0; });
+    std::erase_if(open_, [](const Connection& c) { return c.fd < 0; });
     if (open_.size() >= max_connections) {
-      // Room is made by the oldest connection still sending its request (a
-      // slowloris), else by the answer whose client has taken the least lately;
-      // an answer the studio is making is never dropped.
+      // Room is made by the oldest connection still sending its request (a slowloris), else by the answer
+      // whose client has taken the least lately; an answer the studio is making is never dropped.
       auto victim = std::find_if(open_.begin(), open_.end(),
-                                 [](const Connection &c) { return c.stage == Connection::Stage::reading; });
+                                 [](const Connection& c) { return c.stage == Connection::Stage::reading; });
       if (victim == open_.end())
         for (auto it = open_.begin(); it != open_.end(); ++it)
           if (it->stage == Connection::Stage::writing && (victim == open_.end() || it->deadline < victim->deadline))
@@ -288,14 +281,13 @@ void HttpServer::accept_waiting() {
     c.id = next_id_++;
     c.fd = fd;
     c.local = peer.sin_family == AF_INET && ntohl(peer.sin_addr.s_addr) == INADDR_LOOPBACK;
-    c.since = Clock::now();
-    c.deadline = c.since + head_time;
+    c.deadline = Clock::now() + head_time;
     c.slot = std::string::npos;
     open_.push_back(std::move(c));
   }
 }
 
-void HttpServer::read_request(Connection &c, std::vector<Incoming> &complete) {
+void HttpServer::read_request(Connection& c, std::vector<Incoming>& complete) {
   char buf[4096];
   for (;;) {
     const ssize_t n = ::read(c.fd, buf, sizeof buf);
@@ -306,6 +298,7 @@ void HttpServer::read_request(Connection &c, std::vector<Incoming> &complete) {
     }
     if (n < 0 && errno == EINTR) continue;
     if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) break;
+    if (n == 0 && http_head_end(c.in) != std::string::npos) break;  // a whole request, then half-closed
     return close(c);  // closed by the client before its request was whole, or an error
   }
   const std::size_t end = http_head_end(c.in);
@@ -320,7 +313,7 @@ void HttpServer::read_request(Connection &c, std::vector<Incoming> &complete) {
   complete.push_back({c.id, c.local, std::move(*r)});
 }
 
-void HttpServer::write_answer(Connection &c) {
+void HttpServer::write_answer(Connection& c) {
   std::size_t budget = turn_bytes;
   while (budget > 0) {
     if (c.sent == c.out.size()) {
@@ -330,9 +323,7 @@ void HttpServer::write_answer(Connection &c) {
       c.out.resize(static_cast<std::size_t>(std::min<std::int64_t>(c.file_left, file_piece)));
       const ssize_t n = ::pread(c.file, c.out.data(), c.out.size(), c.file_at);
       if (n < 0 && errno == EINTR) continue;
-      if (n <= 0)
-        return close(c);  // the file shrank or failed: the client sees the
-                          // answer cut short
+      if (n <= 0) return close(c);  // the file shrank or failed: the client sees the answer cut short
       c.out.resize(static_cast<std::size_t>(n));
       c.file_at += n;
       c.file_left -= n;
@@ -348,9 +339,9 @@ void HttpServer::write_answer(Connection &c) {
   }
 }
 
-std::vector<HttpServer::Incoming> HttpServer::step(const std::vector<pollfd> &p) {
+std::vector<HttpServer::Incoming> HttpServer::step(const std::vector<pollfd>& p) {
   std::vector<Incoming> complete;
-  for (Connection &c : open_) {
+  for (Connection& c : open_) {
     if (c.fd < 0 || c.slot >= p.size() || p[c.slot].fd != c.fd || p[c.slot].revents == 0) continue;
     if (c.stage == Connection::Stage::reading)
       read_request(c, complete);
@@ -359,22 +350,22 @@ std::vector<HttpServer::Incoming> HttpServer::step(const std::vector<pollfd> &p)
   }
   if (listen_slot_ < p.size() && p[listen_slot_].fd == fd_ && (p[listen_slot_].revents & POLLIN)) accept_waiting();
   const auto now = Clock::now();
-  for (Connection &c : open_)
+  for (Connection& c : open_)
     if (c.fd >= 0 && c.deadline <= now) close(c);  // a head not whole in time, or an answer not taken
-  std::erase_if(open_, [](const Connection &c) { return c.fd < 0; });
+  std::erase_if(open_, [](const Connection& c) { return c.fd < 0; });
   return complete;
 }
 
-void HttpServer::respond(Id id, int status, const std::string &type, std::string_view body) {
-  Connection *c = find(id);
+void HttpServer::respond(Id id, int status, const std::string& type, std::string_view body) {
+  Connection* c = find(id);
   if (!c || c->stage != Connection::Stage::answering) return;  // closed meanwhile, or answered
   c->out = answer_head(status, type, static_cast<std::int64_t>(body.size()));
   c->out += body;
   start_writing(*c);
 }
 
-void HttpServer::respond_file(Id id, const std::string &type, int file, std::int64_t size) {
-  Connection *c = find(id);
+void HttpServer::respond_file(Id id, const std::string& type, int file, std::int64_t size) {
+  Connection* c = find(id);
   if (!c || c->stage != Connection::Stage::answering) {
     ::close(file);
     return;
@@ -386,7 +377,7 @@ void HttpServer::respond_file(Id id, const std::string &type, int file, std::int
   start_writing(*c);
 }
 
-void HttpServer::start_writing(Connection &c) {
+void HttpServer::start_writing(Connection& c) {
   c.sent = 0;
   c.stage = Connection::Stage::writing;
   c.deadline = Clock::now() + stall_time;

@@ -50,11 +50,13 @@ def start_studio():
     return p, int(m.group(1))
 
 
-def exchange(port, raw, timeout=15):
-    """Sends raw bytes, reads to the end: (status or None, body)."""
+def exchange(port, raw, timeout=15, half_close=False):
+    """Sends raw bytes (then closes its sending side, if asked), reads to the end: (status or None, body)."""
     s = socket.create_connection(("127.0.0.1", port), timeout=timeout)
     try:
         s.sendall(raw)
+        if half_close:
+            s.shutdown(socket.SHUT_WR)
         data = b""
         while True:
             chunk = s.recv(65536)
@@ -162,8 +164,12 @@ try:
     check(status in (400, 403), "a space before a header's colon refused (%s)" % status)
     status, _ = get(port, "/params", b"Origin:\r\n")
     check(status in (400, 403), "an empty Origin refused (%s)" % status)
+    status, _ = get(port, "/params", b"X-A: 1\rOrigin: http://evil.example\r\n")
+    check(status in (400, 403), "a bare CR inside a header line refused (%s)" % status)
     status, _ = get(port, "/params", b"Origin: %s\r\n" % ours)
     check(status == 200, "one Origin of our own is answered (%s)" % status)
+    status, _ = exchange(port, b"GET /params HTTP/1.1\r\nHost: 127.0.0.1:%d\r\n\r\n" % port, half_close=True)
+    check(status == 200, "a request whose client then closes its sending side is answered (%s)" % status)
 
     # --- Ctrl-C while a slow client is mid-transfer -----------------------------------------------------
     slow = SlowReader(port, "/out/blob.bin")
