@@ -39,6 +39,18 @@ def mixed():
     return g
 
 
+def filled():
+    """A block of 256^3 voxels off the nodes' alignment (from index 8): one tile of a level-2 node inside,
+    28,672 tiles of level-1 nodes around it. Its surface is its 6 x 256^2 outer faces (and the big tile's
+    faces, which the small tiles beside it hide from view but not from the prediction); the tiles' faces
+    all together would be 30 times more."""
+    g = vdb.FloatGrid(3.0)
+    g.gridClass = vdb.GridClass.LEVEL_SET
+    g.name = "block"
+    g.fill((8, 8, 8), (263, 263, 263), -3.0, True)
+    return g
+
+
 def sphere_with_tiles():
     """The hostile test's file: a sphere's level set (radius 1, 40 voxels) whose inside is filled with
     active tiles, OpenVDB's own fill(..., active=True): 64 tiles of 8^3 voxels."""
@@ -71,6 +83,7 @@ files = {
     "tiles_level2.vdb": lambda: cube(128),  # 1 tile of a level-2 internal node
     "tiles_root.vdb": lambda: cube(4096),  # 1 root tile: 2^36 voxels
     "tiles_mixed.vdb": mixed,
+    "tiles_filled.vdb": filled,
     "sphere_tiles.vdb": sphere_with_tiles,
     # Positive inside, negative outside; one root tile, so that the file is small.
     "inside_out.vdb": lambda: cube(4096, value=0.001, background=-0.001),

@@ -60,6 +60,12 @@ check "tiles read as their regions (exit $code: $(head -c 600 "$tmp/err"))" [ "$
 run_selfsim info "$tmp/sphere_tiles.vdb"
 check "info on the sphere with tiles" grep -q "class: level set" "$tmp/out"
 
+# A block filled with tiles weighs its outer faces, not every tile's: its 6 x 256^2 points and their
+# triangles fit 2e6 points (every tile's faces would make 33 million).
+echo 'load("tiles_filled.vdb")' >"$tmp/filled.lua"
+run_selfsim run "$tmp/filled.lua" -o "$tmp/out_filled" -q --max-points 2e6
+check "a block filled with tiles fits its surface's budget (exit $code: $(head -c 300 "$tmp/err"))" [ "$code" = 0 ]
+
 # A root tile: 2^36 voxels and a surface of 6 x 4096^2, refused at once by the budget.
 refused() {  # refused RECIPE_TEXT EXPECTED_TEXT [ARGS...]
   local text=$1 want=$2

@@ -249,23 +249,34 @@ void check_grid(const openvdb::FloatGrid& grid, bool fog) {
   }
 }
 
-// A grid's active tiles: how many, and the voxels on their faces (6 d^2 for a tile d voxels wide), at most
-// one point of volumeToMesh's surface each. (An inactive tile is not meshed.)
+// A grid's active tiles: how many, and the voxels on their faces that may be on its surface, at most one
+// point of volumeToMesh's each (an inactive tile is not meshed). A face is left out when just beyond it
+// lies a tile at least as large, or the background, on the same side of `iso`: aligned as the tree's
+// nodes are, that value covers the whole face, so no surface crosses it (the inside of a large shape
+// filled with tiles weighs only its outer faces).
 struct Tiles {
   std::uint64_t count = 0;
   double surface = 0;
 };
 
-Tiles active_tiles(const openvdb::FloatGrid& grid) {
+Tiles active_tiles(const openvdb::FloatGrid& grid, double iso) {
   Tiles t;
+  const auto access = grid.getConstAccessor();
   auto it = grid.cbeginValueOn();
   it.setMaxDepth(openvdb::FloatGrid::ValueOnCIter::LEAF_DEPTH - 1);  // tiles only, no leaf voxel
   for (; it; ++it) {
     openvdb::CoordBBox box;
     it.getBoundingBox(box);
     const double d = box.dim().x();
+    const bool below = *it < iso;
     ++t.count;
-    t.surface += 6 * d * d;
+    for (int face = 0; face < 6; ++face) {
+      openvdb::Coord beyond = box.min() + openvdb::Coord(static_cast<openvdb::Int32>(d / 2));
+      beyond[face / 2] = face % 2 ? box.max()[face / 2] + 1 : box.min()[face / 2] - 1;
+      const int depth = access.getValueDepth(beyond);  // -1: the background; 0: a root tile; 3: a voxel
+      const bool covered = depth <= static_cast<int>(it.getDepth()) && (access.getValue(beyond) < iso) == below;
+      if (!covered) t.surface += d * d;
+    }
   }
   return t;
 }
@@ -330,7 +341,7 @@ void send_surface(PipeOut& out, openvdb::io::File& file, const std::string& want
     what += " at 0";
   }
   check_grid(*grid, c == openvdb::GRID_FOG_VOLUME);
-  const Tiles tiles = active_tiles(*grid);
+  const Tiles tiles = active_tiles(*grid, iso);
   // A level set's own voxels (GridSamples) when asked, and when its transform is a uniform scale and
   // translation.
   const auto map = grid->transform().mapType();
