@@ -243,9 +243,9 @@ void check_grid(const openvdb::FloatGrid& grid, bool fog) {
       throw Error(name + " is inside out: just outside its active voxels it is " + float_text(value) + " (at index (" +
                   std::to_string(beyond[0]) + ", " + std::to_string(beyond[1]) + ", " + std::to_string(beyond[2]) +
                   ")), where " +
-                  (fog ? "a fog volume is dense inside and empty outside"
-                       : "a level set is negative inside and positive outside") +
-                  "; negate its values and save it again");
+                  (fog ? "a fog volume is dense inside and empty outside; make it 0 outside"
+                       : "a level set is negative inside and positive outside; negate its values") +
+                  " and save it again");
   }
 }
 
