@@ -18,26 +18,85 @@ namespace selfsim::print {
 
 namespace {
 
-// Where walls and gaps are measured: from every triangle's incentre along its normal. Not from the points:
-// a point on a sharp edge (a thickened sheet's rim) has no normal a ray can follow, and one along the
-// average runs so close beside a face that the grid's interpolation error reads it as outside at once. The
-// incentre is the point of a triangle farthest from its edges.
+// Where walls and gaps are measured: from points inside every triangle, along its normal. Not from the
+// mesh's points: a point on a sharp edge (a thickened sheet's rim) has no normal a ray can follow, and one
+// along the average runs so close beside a face that the grid's interpolation error reads it as outside at
+// once. A triangle no longer than `spacing` gives its incentre (its point farthest from its edges); a
+// longer one is halved across its longest edge until the halves are that small, each giving its incentre, so
+// a coarse CAD face (a wedge of 8 triangles) is measured as densely as a finely meshed one: one ray from a
+// long face's middle would miss a thin strip along its edge.
 struct Samples {
   std::vector<Vec3> points, normals;
+  std::vector<std::uint32_t> face;  // the triangle each point is on
+  std::vector<double> area;         // mm² of its triangle each point stands for
 };
 
-Samples samples_of(const Mesh& m, bool inward) {
-  Samples s;
-  s.points.reserve(m.faces());
-  s.normals.reserve(m.faces());
-  const double flip = inward ? -1 : 1;
+Vec3 incentre(Vec3 a, Vec3 b, Vec3 c) {
+  const double la = norm(c - b), lb = norm(a - c), lc = norm(b - a), sum = la + lb + lc;
+  return sum > 0 ? (1 / sum) * (la * a + lb * b + lc * c) : a;
+}
+
+// The halves of triangle abc (longest-edge bisection, which keeps their shapes: no slivers from slivers)
+// down to `spacing`, each one's incentre passed to `take` with its share of the area (halves halve it).
+template <class Take>
+std::size_t halves(Vec3 a, Vec3 b, Vec3 c, double share, double spacing, const Take& take) {
+  const double ab = norm(b - a), bc = norm(c - b), ca = norm(a - c);
+  const double longest = std::max({ab, bc, ca});
+  if (!(longest > spacing) || !std::isfinite(longest)) {
+    take(incentre(a, b, c), share);
+    return 1;
+  }
+  // Rotate so that ab is the longest edge, then split it at its midpoint m.
+  if (ab < longest && bc == longest) return halves(b, c, a, share, spacing, take);
+  if (ab < longest) return halves(c, a, b, share, spacing, take);
+  const Vec3 m = 0.5 * (a + b);
+  return halves(a, m, c, 0.5 * share, spacing, take) + halves(m, b, c, 0.5 * share, spacing, take);
+}
+
+// How many halves of abc sampling down to `spacing` makes, counting no further than `limit`.
+double count_halves(Vec3 a, Vec3 b, Vec3 c, double spacing, double limit) {
+  const double ab = norm(b - a), bc = norm(c - b), ca = norm(a - c);
+  const double longest = std::max({ab, bc, ca});
+  if (!(longest > spacing) || !std::isfinite(longest) || limit <= 1) return 1;
+  if (ab < longest && bc == longest) return count_halves(b, c, a, spacing, limit);
+  if (ab < longest) return count_halves(c, a, b, spacing, limit);
+  const Vec3 m = 0.5 * (a + b);
+  const double first = count_halves(a, m, c, spacing, limit - 1);
+  return first + count_halves(m, b, c, spacing, limit - first);
+}
+
+// How many points sampling every triangle down to `spacing` takes (or a number over `limit`).
+double sample_count(const Mesh& m, double spacing, double limit) {
+  double n = 0;
   for (const Triangle& t : m.triangles) {
+    n += count_halves(m.points[t[0]], m.points[t[1]], m.points[t[2]], spacing, limit - n);
+    if (n > limit) break;
+  }
+  return n;
+}
+
+// The points of a triangle halved are drawn in towards its incentre, at least `inset` from its edges (or
+// halfway to the incentre on a triangle narrower than that): a ray from a point right beside a convex edge
+// runs so close to the next face that the grid's interpolation error reads it as crossing at once.
+Samples samples_of(const Mesh& m, bool inward, double spacing, double inset) {
+  Samples s;
+  const double flip = inward ? -1 : 1;
+  for (std::size_t f = 0; f < m.faces(); ++f) {
+    const Triangle& t = m.triangles[f];
     const Vec3 a = m.points[t[0]], b = m.points[t[1]], c = m.points[t[2]];
-    const double la = norm(c - b), lb = norm(a - c), lc = norm(b - a), sum = la + lb + lc;
-    s.points.push_back(sum > 0 ? (1 / sum) * (la * a + lb * b + lc * c) : a);
     const Vec3 n = area_normal(m, t);
     const double length = norm(n);
-    s.normals.push_back(length > 0 && std::isfinite(length) ? (flip / length) * n : Vec3{});
+    const Vec3 normal = length > 0 && std::isfinite(length) ? (flip / length) * n : Vec3{};
+    const Vec3 centre = incentre(a, b, c);
+    const double perimeter = norm(b - a) + norm(c - b) + norm(a - c);
+    const double inradius = perimeter > 0 ? length / perimeter : 0;
+    const double shrink = inradius > 0 ? std::max(0.5, 1 - inset / inradius) : 1;
+    halves(a, b, c, 0.5 * length, spacing, [&](Vec3 p, double area) {
+      s.points.push_back(centre + shrink * (p - centre));
+      s.normals.push_back(normal);
+      s.face.push_back(static_cast<std::uint32_t>(f));
+      s.area.push_back(area);
+    });
   }
   return s;
 }
@@ -74,22 +133,32 @@ std::vector<double> at_points(const Mesh& m, const std::vector<double>& per_face
   return sum;
 }
 
-// The smallest value under `threshold`, where, and how many (and how much area) are under it.
-Spot spot_of(const Mesh& m, const std::vector<double>& values, const std::vector<Vec3>& where, double threshold) {
-  Spot s;
-  s.measured = true;
-  s.value = std::numeric_limits<double>::infinity();
+// The smallest value under `threshold`, where, and how many triangles (and how much of their area) are
+// under it.
+Spot spot_of(const Samples& s, const std::vector<double>& values, double threshold) {
+  Spot spot;
+  spot.measured = true;
+  spot.value = std::numeric_limits<double>::infinity();
+  std::size_t last = std::numeric_limits<std::size_t>::max();  // the last triangle counted under
   for (std::size_t i = 0; i < values.size(); ++i) {
     if (values[i] < threshold) {
-      ++s.under;
-      s.area_under += 0.5 * norm(area_normal(m, m.triangles[i]));
+      spot.area_under += s.area[i];
+      if (s.face[i] != last) ++spot.under;  // a triangle's points are consecutive
+      last = s.face[i];
     }
-    if (values[i] < s.value) {
-      s.value = values[i];
-      s.where = where[i];
+    if (values[i] < spot.value) {
+      spot.value = values[i];
+      spot.where = s.points[i];
     }
   }
-  return s;
+  return spot;
+}
+
+// Each triangle's value: the least of its points' (a thin strip along one edge of a coarse face shows).
+std::vector<double> at_faces(const Mesh& m, const Samples& s, const std::vector<double>& values) {
+  std::vector<double> out(m.faces(), std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < values.size(); ++i) out[s.face[i]] = std::min(out[s.face[i]], values[i]);
+  return out;
 }
 
 // The walls and gaps, on the distance grid of m (its parts as OpenVDB meshes them into one level set).
@@ -124,10 +193,20 @@ void measure(const Mesh& m, const PointBudget& budget, Progress& progress, Print
                 "--max-points)";
     return;
   }
+  // Points every `spacing` on each triangle: the nozzle's width, or a voxel if wider (a thin spot that fits
+  // between points is under about the nozzle's spot, no finding), sparser when that would be more points
+  // than the budget (or 2 million, the triangle budget: about the time a slicer's fine mesh takes) allows:
+  // the summary then says how sparse.
+  r.spacing = std::max(r.voxel, r.rules.nozzle);
+  const double most = std::max(static_cast<double>(m.faces()), std::min(2e6, 0.25 * (budget.left() - size)));
+  // Halves no longer than s have at most sqrt(3)/4 s² of area each: start where they surely exceed `most`.
+  if (sample_count(m, r.spacing, most) > most) r.spacing = std::max(r.spacing, std::sqrt(r.area / (0.433 * most)));
+  for (double n = sample_count(m, r.spacing, most); n > most; n = sample_count(m, r.spacing, most))
+    r.spacing *= std::max(1.25, std::sqrt(n / most));
   ProgressStage build(progress, 0.3, 0.7);
   const WallGrid grid(v, r.voxel, depth, budget, build, outside);
   r.error = grid.error();
-  const Samples s = samples_of(m, r.inward);
+  const Samples s = samples_of(m, r.inward, r.spacing, r.voxel);
   std::vector<double> wall(s.points.size()), gap(s.points.size());
   ProgressStage rays(progress, 0.7, 1);
   measure_rays(
@@ -135,17 +214,18 @@ void measure(const Mesh& m, const PointBudget& budget, Progress& progress, Print
       {.step = r.voxel / 2, .wall_cap = r.wall_cap, .gap_cap = r.gap_cap}, wall, gap, rays);
   if (!r.inward) {
     const std::vector<char> cavity = cavity_faces(m, progress);
-    for (std::size_t f = 0; f < gap.size(); ++f)
-      if (cavity[f]) gap[f] = r.gap_cap;
+    for (std::size_t i = 0; i < gap.size(); ++i)
+      if (cavity[s.face[i]]) gap[i] = r.gap_cap;
   }
-  r.wall = spot_of(m, wall, s.points, r.rules.min_wall);
-  r.gap = spot_of(m, gap, s.points, r.rules.min_gap);
+  r.wall = spot_of(s, wall, r.rules.min_wall);
+  r.gap = spot_of(s, gap, r.rules.min_gap);
   if (marked == nullptr) return;
+  std::vector<double> face_wall = at_faces(m, s, wall), face_gap = at_faces(m, s, gap);
   *marked = m;
-  marked->point_fields.set(real_field("wall", at_points(m, wall)));
-  marked->point_fields.set(real_field("gap", at_points(m, gap)));
-  marked->face_fields.set(real_field("wall", std::move(wall)));
-  marked->face_fields.set(real_field("gap", std::move(gap)));
+  marked->point_fields.set(real_field("wall", at_points(m, face_wall)));
+  marked->point_fields.set(real_field("gap", at_points(m, face_gap)));
+  marked->face_fields.set(real_field("wall", std::move(face_wall)));
+  marked->face_fields.set(real_field("gap", std::move(face_gap)));
 }
 
 void add_findings(PrintReport& r) {
@@ -159,7 +239,7 @@ void add_findings(PrintReport& r) {
   const auto places = [](std::size_t n) { return count_text(double(n)) + (n == 1 ? " place" : " places"); };
   // A crossing within the rays' first step is below what the grid resolves: said as "under" that step.
   const double step = r.voxel / 2;
-  const auto measured = [&](double v) { return v <= 0.5 * step ? "under " + mm_text(step) : mm_text(v); };
+  const auto measured = [&](double v) { return v <= 0.5 * step ? r.unresolved() : mm_text(v); };
   if (r.wall.measured && r.wall.under > 0 && !r.speck(r.wall))
     r.findings.push_back("walls thinner than " + mm_text(rules.min_wall) + " at " + places(r.wall.under) +
                          ", the thinnest " + measured(r.wall.value) + " at " + mm_point_text(r.wall.where));
@@ -193,16 +273,22 @@ std::string PrintReport::summary() const {
     // Under the threshold over less than the nozzle's spot: no finding, and said so.
     const std::string speck =
         this->speck(s) ? " on a " + area_text(s.area_under) + " speck, smaller than the nozzle's spot" : "";
-    if (s.value <= 0.5 * step) return "under " + mm_text(step) + speck;
+    if (s.value <= 0.5 * step) return unresolved() + speck;
     return (s.value >= cap ? ">= " : "") + mm_text(std::min(s.value, cap)) + speck;
   };
   std::string facts = size_text(box.size()) + ", " + count_text(double(triangles)) + " triangles";
   if (wall.measured) facts += ", walls " + at_least(wall, wall_cap) + ", gaps " + at_least(gap, gap_cap);
+  if (wall.measured && spacing > std::max(voxel, rules.nozzle) * (1 + 1e-9))
+    facts += ", measured every " + mm_text(spacing) + " (the point budget)";
   if (passes()) return "print check (" + rules.profile + "): passes: closed, " + facts;
   std::string out = "print check (" + rules.profile + "): " + std::to_string(findings.size()) +
                     (findings.size() == 1 ? " problem: " : " problems: ");
   for (std::size_t i = 0; i < findings.size(); ++i) out += (i == 0 ? "" : "; ") + findings[i];
   return out + " (" + facts + ")";
+}
+
+std::string PrintReport::unresolved() const {
+  return "under " + mm_text(voxel / 2) + " (finer than the distance grid's " + mm_text(voxel) + " voxel resolves)";
 }
 
 PrintReport check_print(const Mesh& m, const PrintRules& rules, const PointBudget& budget, Progress& progress,

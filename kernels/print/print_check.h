@@ -48,6 +48,7 @@ struct PrintReport {
   Spot wall, gap;
   double wall_cap = 0, gap_cap = 0;  // walls and gaps at least this wide read as this
   double voxel = 0, error = 0;       // the distance grid's voxel and interpolation error (mm)
+  double spacing = 0;                // mm: triangles are measured at points about this far apart
   std::string skipped;               // why walls and gaps were not measured (empty when they were)
   std::vector<std::string> findings;
 
@@ -60,6 +61,9 @@ struct PrintReport {
   // One line: "print check: passes (closed, 120 x 80 x 40 mm, 212,340 triangles, walls >= 0.92 mm, gaps >=
   // 0.41 mm)" or "print check: 2 problems: ...; ...".
   std::string summary() const;
+  // A wall or gap crossed within the rays' first step (half a voxel): "under 0.07 mm (finer than the
+  // distance grid's 0.13 mm voxel resolves)".
+  std::string unresolved() const;
 };
 
 // Checks m (in millimetres) against rules. With `marked`, also returns m with the point and face fields

@@ -28,6 +28,7 @@
 #include "kernels/geom/mesh_intersections.h"
 #include "kernels/geom/wall_grid.h"
 #include "kernels/plugins/openvdb/grid_frame.h"
+#include "kernels/plugins/openvdb/winding_sign.h"
 
 namespace selfsim {
 
@@ -284,9 +285,14 @@ WallGrid::WallGrid(const Volume& v, double voxel, double depth, const PointBudge
   data->grid = openvdb_call([&] {
     // A mesh's distances are measured from its triangles directly, as deep as asked: two voxels each side
     // when nothing deeper is asked (OpenVDB then skips widening the band, the costly step; beyond it the
-    // sign is still right everywhere).
-    if (!v.samples && v.kind == Volume::Kind::mesh)
-      return mesh_grid(*v.mesh, true, f, interrupt, band(voxel, outside), band(voxel, depth));
+    // sign is still right everywhere). Its unsigned distance, signed by its winding number (winding_sign.h):
+    // OpenVDB's own sign, and the "self-intersecting" voxels it then removes, fill gaps narrower than about
+    // 2.5 voxels, which would then read as no gap at all.
+    if (!v.samples && v.kind == Volume::Kind::mesh) {
+      Grid::Ptr g = mesh_grid(*v.mesh, false, f, interrupt, std::max(band(voxel, outside), band(voxel, depth)));
+      if (!progress.cancelled()) sign_by_winding(*g, *v.mesh, f, interrupt);
+      return g;
+    }
     const Grid::Ptr combined = v.samples ? samples_grid(*v.samples) : volume_level_set(v, f, interrupt);
     if (progress.cancelled()) throw Cancelled();
     return openvdb::tools::levelSetRebuild(*combined, 0.0f, outside_band(voxel, outside), band(voxel, depth), nullptr,
