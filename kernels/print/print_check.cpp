@@ -195,10 +195,11 @@ void measure(const Mesh& m, const PointBudget& budget, Progress& progress, Print
   }
   // Points every `spacing` on each triangle: the nozzle's width, or a voxel if wider (a thin spot that fits
   // between points is under about the nozzle's spot, no finding), sparser when that would be more points
-  // than the budget (or 2 million, the triangle budget: about the time a slicer's fine mesh takes) allows:
-  // the summary then says how sparse.
+  // than the budget allows (each point and its rays' readings hold about 80 bytes, five budget points) or
+  // 2 million (the triangle budget: the time a slicer's finest mesh takes): the summary then says how
+  // sparse. A mesh gets at least a point on every triangle, as many as it already holds.
   r.spacing = std::max(r.voxel, r.rules.nozzle);
-  const double most = std::max(static_cast<double>(m.faces()), std::min(2e6, 0.25 * (budget.left() - size)));
+  const double most = std::max(static_cast<double>(m.faces()), std::min(2e6, 0.2 * (budget.left() - size)));
   // Halves no longer than s have at most sqrt(3)/4 s² of area each: start where they surely exceed `most`.
   if (sample_count(m, r.spacing, most) > most) r.spacing = std::max(r.spacing, std::sqrt(r.area / (0.433 * most)));
   for (double n = sample_count(m, r.spacing, most); n > most; n = sample_count(m, r.spacing, most))

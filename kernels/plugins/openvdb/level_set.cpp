@@ -248,8 +248,10 @@ double WallGrid::size(const Volume& v, double voxel, double depth, double outsid
   part_corners(v, corners);
   // The parts' narrow bands (7 voxels across) or the file's voxels, and the rebuilt band (the depth inside,
   // and outside 3 voxels or more).
-  return tree_size(corners, parts_area(v), f, 7 + 1 + outside_band(voxel, outside) + band(voxel, depth)) +
-         (v.samples ? samples_size(*v.samples) : 0);
+  // A mesh's unsigned distance (WallGrid's constructor) is as wide outside as inside.
+  const double across = std::max(7.0 + 1 + outside_band(voxel, outside) + band(voxel, depth),
+                                 v.kind == Volume::Kind::mesh ? 1.0 + 2 * band(voxel, std::max(depth, outside)) : 0.0);
+  return tree_size(corners, parts_area(v), f, across) + (v.samples ? samples_size(*v.samples) : 0);
 }
 
 namespace {

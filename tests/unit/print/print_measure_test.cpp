@@ -1,7 +1,7 @@
-// What the print check measures is what is there: gaps narrower than a few voxels read their width (OpenVDB's
-// own sign fill closed them: two slabs 0.2 mm apart read "under 0.07 mm"), and a coarse CAD file's faces are
-// measured all over, not at one point each (a 20 degree wedge of 8 triangles passed although a strip of it
-// 2.3 mm wide is thinner than 0.8 mm).
+// What the print check measures is what is there: gaps narrower than a few voxels read their width
+// (OpenVDB's own sign fill closed them: two slabs 0.2 mm apart read "under 0.07 mm"; a sealed cavity read
+// as solid), and a coarse CAD file's faces are measured all over, not at one point each (a 20 degree wedge
+// of 8 triangles passed although a strip of it 2.3 mm wide is thinner than 0.8 mm).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -96,6 +96,18 @@ TEST(PrintMeasure, AGapFinerThanTheGridSaysSo) {
   const PrintReport r = check_print(slabs, PrintRules{}, PointBudget{}, no_progress());
   EXPECT_TRUE(mentions(r, "the narrowest under 0.07 mm (finer than the distance grid's 0.13 mm voxel resolves)"))
       << r.summary();
+}
+
+TEST(PrintMeasure, AHollowsThinShellIsThin) {
+  // A 10 mm cube hollowed to a 0.3 mm shell (the cavity's faces turned inwards). OpenVDB's sign read the
+  // sealed cavity as solid, and so the shell as 10 mm thick.
+  Mesh cavity = box_mesh({0.3, 0.3, 0.3}, {9.7, 9.7, 9.7});
+  for (Triangle& t : cavity.triangles) std::swap(t[1], t[2]);
+  const PrintReport r =
+      check_print(joined(box_mesh({0, 0, 0}, {10, 10, 10}), cavity), PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_TRUE(mentions(r, "walls thinner than 0.8 mm")) << r.summary();
+  EXPECT_NEAR(r.wall.value, 0.3, r.voxel / 5) << r.summary();
+  EXPECT_FALSE(mentions(r, "gaps narrower")) << r.summary();
 }
 
 TEST(PrintMeasure, ACoarseWedgeHasItsThinStrip) {
