@@ -78,8 +78,13 @@ double sample_count(const Mesh& m, double spacing, double limit) {
 // The points of a triangle halved are drawn in towards its incentre, at least `inset` from its edges (or
 // halfway to the incentre on a triangle narrower than that): a ray from a point right beside a convex edge
 // runs so close to the next face that the grid's interpolation error reads it as crossing at once.
-Samples samples_of(const Mesh& m, bool inward, double spacing, double inset) {
+Samples samples_of(const Mesh& m, bool inward, double spacing, double inset, double count) {
   Samples s;
+  const auto n = static_cast<std::size_t>(count);
+  s.points.reserve(n);
+  s.normals.reserve(n);
+  s.face.reserve(n);
+  s.area.reserve(n);
   const double flip = inward ? -1 : 1;
   for (std::size_t f = 0; f < m.faces(); ++f) {
     const Triangle& t = m.triangles[f];
@@ -102,9 +107,9 @@ Samples samples_of(const Mesh& m, bool inward, double spacing, double inset) {
 }
 
 // Faces of closed shells that face inwards inside the solid: a sealed cavity's walls (their enclosed volume
-// is negative). OpenVDB's signed distance takes its sign from a flood fill in from outside, so it reads a
-// cavity as solid: a ray from a cavity's wall into it would read a gap of nothing. Those gaps are not
-// measured (the cavity is empty space a printer walls in, not a gap that fuses).
+// is negative). The distance grid reads a cavity as empty (winding_sign.h), so a ray from a cavity's wall
+// would read its width as a gap. Those gaps are not measured (the cavity is empty space a printer walls in,
+// not a gap that fuses).
 std::vector<char> cavity_faces(const Mesh& m, Progress& progress) {
   const std::vector<std::uint32_t> piece = face_components(m, progress);
   std::vector<double> volume;
@@ -200,14 +205,17 @@ void measure(const Mesh& m, const PointBudget& budget, Progress& progress, Print
   // sparse. A mesh gets at least a point on every triangle, as many as it already holds.
   r.spacing = std::max(r.voxel, r.rules.nozzle);
   const double most = std::max(static_cast<double>(m.faces()), std::min(2e6, 0.2 * (budget.left() - size)));
-  // Halves no longer than s have at most sqrt(3)/4 s² of area each: start where they surely exceed `most`.
-  if (sample_count(m, r.spacing, most) > most) r.spacing = std::max(r.spacing, std::sqrt(r.area / (0.433 * most)));
-  for (double n = sample_count(m, r.spacing, most); n > most; n = sample_count(m, r.spacing, most))
-    r.spacing *= std::max(1.25, std::sqrt(n / most));
+  double n = sample_count(m, r.spacing, most);
+  if (n > most) {
+    // Halves no longer than s have at most sqrt(3)/4 s² of area each: any finer spacing would surely make
+    // more than `most`. From there a quarter wider at a time.
+    r.spacing = std::max(r.spacing, std::sqrt(r.area / (0.433 * most)));
+    while ((n = sample_count(m, r.spacing, most)) > most) r.spacing *= 1.25;
+  }
   ProgressStage build(progress, 0.3, 0.7);
   const WallGrid grid(v, r.voxel, depth, budget, build, outside);
   r.error = grid.error();
-  const Samples s = samples_of(m, r.inward, r.spacing, r.voxel);
+  const Samples s = samples_of(m, r.inward, r.spacing, r.voxel, n);
   std::vector<double> wall(s.points.size()), gap(s.points.size());
   ProgressStage rays(progress, 0.7, 1);
   measure_rays(

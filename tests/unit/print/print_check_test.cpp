@@ -143,7 +143,7 @@ TEST(PrintCheck, ASolidThinAllOverIsNoSpeck) {
 
 TEST(PrintCheck, ASealedCavityIsNoGap) {
   // A 20 mm cube hollowed by a 10 mm cavity (its faces turned inwards): walls 5 mm, no gap anywhere. The
-  // distance grid reads the cavity as solid; its walls' gaps are not measured.
+  // cavity's walls' gaps (its width) are not measured.
   Mesh cavity = box_mesh({5, 5, 5}, {15, 15, 15});
   for (Triangle& t : cavity.triangles) std::swap(t[1], t[2]);
   const PrintReport r =

@@ -1,7 +1,7 @@
 // What the print check measures is what is there: gaps narrower than a few voxels read their width
-// (OpenVDB's own sign fill closed them: two slabs 0.2 mm apart read "under 0.07 mm"; a sealed cavity read
-// as solid), and a coarse CAD file's faces are measured all over, not at one point each (a 20 degree wedge
-// of 8 triangles passed although a strip of it 2.3 mm wide is thinner than 0.8 mm).
+// (OpenVDB's own sign fill closed them: two slabs 0.2 mm apart read "under 0.07 mm"), and a coarse CAD
+// file's faces are measured all over, not at one point each (a 20 degree wedge of 8 triangles passed
+// although a strip of it 2.3 mm wide is thinner than 0.8 mm).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -99,8 +99,8 @@ TEST(PrintMeasure, AGapFinerThanTheGridSaysSo) {
 }
 
 TEST(PrintMeasure, AHollowsThinShellIsThin) {
-  // A 10 mm cube hollowed to a 0.3 mm shell (the cavity's faces turned inwards). OpenVDB's sign read the
-  // sealed cavity as solid, and so the shell as 10 mm thick.
+  // A 10 mm cube hollowed to a 0.3 mm shell (the cavity's faces turned inwards): the winding number reads
+  // the sealed cavity as empty, so the shell is measured to it.
   Mesh cavity = box_mesh({0.3, 0.3, 0.3}, {9.7, 9.7, 9.7});
   for (Triangle& t : cavity.triangles) std::swap(t[1], t[2]);
   const PrintReport r =
