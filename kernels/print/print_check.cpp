@@ -53,15 +53,18 @@ std::size_t halves(Vec3 a, Vec3 b, Vec3 c, double share, double spacing, const T
   return halves(a, m, c, 0.5 * share, spacing, take) + halves(m, b, c, 0.5 * share, spacing, take);
 }
 
-// How many halves of abc sampling down to `spacing` makes, counting no further than `limit`.
+// How many halves of abc sampling down to `spacing` makes: exactly, or some number over `limit` once the
+// count passes it (counting no further).
 double count_halves(Vec3 a, Vec3 b, Vec3 c, double spacing, double limit) {
   const double ab = norm(b - a), bc = norm(c - b), ca = norm(a - c);
   const double longest = std::max({ab, bc, ca});
-  if (!(longest > spacing) || !std::isfinite(longest) || limit <= 1) return 1;
+  if (!(longest > spacing) || !std::isfinite(longest)) return 1;
+  if (limit < 2) return 2;  // halved: two at least
   if (ab < longest && bc == longest) return count_halves(b, c, a, spacing, limit);
   if (ab < longest) return count_halves(c, a, b, spacing, limit);
   const Vec3 m = 0.5 * (a + b);
-  const double first = count_halves(a, m, c, spacing, limit - 1);
+  const double first = count_halves(a, m, c, spacing, limit - 1);  // the other half takes one at least
+  if (first > limit - 1) return first + 1;
   return first + count_halves(m, b, c, spacing, limit - first);
 }
 

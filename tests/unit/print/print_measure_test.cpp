@@ -12,6 +12,7 @@
 
 #include "kernels/geom/box_mesh.h"
 #include "kernels/geom/volume.h"
+#include "kernels/geom/wall_grid.h"
 #include "kernels/print/print_check.h"
 
 using namespace selfsim;
@@ -127,4 +128,25 @@ TEST(PrintMeasure, ACoarseWedgeHasItsThinStrip) {
   const PrintReport cube = check_print(box_mesh({0, 0, 0}, {20, 20, 20}), PrintRules{}, PointBudget{}, no_progress());
   EXPECT_TRUE(cube.passes()) << cube.summary();
   EXPECT_EQ(cube.wall.under, 0u) << cube.summary();
+}
+
+TEST(PrintMeasure, PointsSpreadWiderWithinTheBudget) {
+  // A 30 mm cube at points a nozzle's width apart takes over 100,000 points; a budget leaving room for the
+  // grid and 10,000 points (five budget points each) spreads them wider, and the summary says so.
+  const Mesh cube = box_mesh({0, 0, 0}, {30, 30, 30});
+  Volume v;
+  v.kind = Volume::Kind::mesh;
+  v.mesh = std::make_shared<const Mesh>(cube);
+  v.bounds = cube.bbox();
+  PointBudget budget;
+  budget.limit = WallGrid::size(v, 0.4 / 3, 0, 0) + 5 * 10000;
+  const PrintReport r = check_print(cube, PrintRules{}, budget, no_progress());
+  EXPECT_TRUE(r.wall.measured);
+  EXPECT_GT(r.spacing, 1.0) << r.summary();
+  EXPECT_NE(r.summary().find("mm (the point budget)"), std::string::npos) << r.summary();
+  EXPECT_TRUE(r.passes()) << r.summary();
+  // With room, a nozzle's width apart, and nothing said.
+  const PrintReport roomy = check_print(cube, PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_DOUBLE_EQ(roomy.spacing, 0.4);
+  EXPECT_EQ(roomy.summary().find("point budget"), std::string::npos) << roomy.summary();
 }
