@@ -7,8 +7,8 @@
 --   selfsim run examples/develop_prints.lua
 --   selfsim run examples/develop_prints.lua --set dragon=8 --set resolution=2   -- quicker drafts
 local curves = require "selfsim.curves"
-local size = param("size", 100)       -- mm spanned by level 0
-local top = param("top", 2)           -- mm thick at level 0 (3 folds the arrowhead's sheet: develop warns)
+local size = param("size", 100.0)       -- mm spanned by level 0
+local top = param("top", 2.0)           -- mm thick at level 0 (3 folds the arrowhead's sheet: develop warns)
 local finest = param("finest", 0.8)   -- mm thick at the finest level
 local resolution = param("resolution", 4)
 

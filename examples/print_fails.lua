@@ -7,7 +7,7 @@
 local curves = require "selfsim.curves"
 local sheet = develop(curves.dragon(), { levels = param("levels", 6), smooth = param("smooth", 2),
                                          corner_shift = 0.2 })
-sheet = solid.size(sheet, param("size", 60))
+sheet = solid.size(sheet, param("size", 60.0))
 local thin = solid.thicken(sheet, { thickness = param("thickness", 0.3) })
 local report, checked = solid.check(thin, { profile = "fdm" })
 print(report.passes and "passes" or "fails:")

@@ -16,13 +16,13 @@ local hexagon = {}
 for i = 0, 5 do hexagon[#hexagon + 1] = { math.cos(math.pi * i / 3), math.sin(math.pi * i / 3) } end
 local c = exclusion.curve { region = polygon(hexagon), start = polygon { {-.4,-.3}, {.4,-.3}, {0,.4} },
                             radius = 0.15, factor = 0.8, levels = levels }
-c = solid.size(c, param("size", 60))
+c = solid.size(c, param("size", 60.0))
 local method = param("method", "grid")
 local options = { radius = param("radius", 0.8), method = method }
 if method == "rings" then
   options.sides, options.by, options.taper = param("sides", 16), "level", param("taper", 0.9)
 else
-  options.voxel = param("voxel", 0)   -- the grid's, mm; 0 for a quarter of the radius
+  options.voxel = param("voxel", 0.0)   -- the grid's, mm; 0 for a quarter of the radius
 end
 local pendant = solid.tube(c, options)
 save(pendant, "pendant.3mf")

@@ -4,7 +4,7 @@
 --   selfsim run examples/print_relief.lua
 local curves = require "selfsim.curves"
 local flake = curves.koch_snowflake():curve { level = param("level", 3) }
-flake = solid.size(flake, param("size", 60))
-local relief = solid.relief(flake, { height = param("height", 3), base = param("base", 1.5) })
+flake = solid.size(flake, param("size", 60.0))
+local relief = solid.relief(flake, { height = param("height", 3.0), base = param("base", 1.5) })
 save(relief, "snowflake.3mf")
 save(relief, "snowflake.stl")

@@ -19,9 +19,9 @@ if steps > 0 then
   local ok, smoothed = pcall(solid.smooth, s, { steps = steps })
   if ok then s = smoothed else print("not smoothed: " .. tostring(smoothed)) end
 end
-s = solid.size(s, param("size", 80))   -- after smoothing, which shrinks a crumpled surface a little
-local solid_surface = solid.thicken(s, { thickness = param("thickness", 1), method = "grid",
-                                        adaptivity = param("adaptivity", 0), check = false })
+s = solid.size(s, param("size", 80.0))   -- after smoothing, which shrinks a crumpled surface a little
+local solid_surface = solid.thicken(s, { thickness = param("thickness", 1.0), method = "grid",
+                                        adaptivity = param("adaptivity", 0.0), check = false })
 local triangles = param("triangles", 0)   -- 0: not decimated
 if triangles > 0 then solid_surface = solid.decimate(solid_surface, { triangles = triangles }) end
 local report, checked = solid.check(solid_surface, { profile = "fdm" })

@@ -146,7 +146,8 @@ void check_param_value(const ParamSpec& s, const std::string& text) {
     // An integer parameter reaches the recipe as a Lua integer or not at all: 2.5 and 1e1 are refused
     // here, where --set, a sweep's values and the studio's controls all pass, not later at a kernel's line.
     if (s.type == ParamSpec::Type::integer && !parse_text<long long>(text))
-      throw Error(set + "'" + s.name + "' is an integer parameter: expected a whole number such as " + s.default_text);
+      throw Error(set + "'" + s.name + "' is an integer parameter: expected a whole number such as " + s.default_text +
+                  " (a default written " + s.default_text + ".0 takes any number)");
     if ((s.min && *v < *s.min) || (s.max && *v > *s.max))
       throw Error(set + "'" + s.name + "' must be " + range_text(s));
   } else if (!s.choices.empty()) {

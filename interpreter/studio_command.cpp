@@ -155,6 +155,7 @@ int studio_command(const RunConfig& config, int port) {
   s.params = read_params(config);
   s.check(s.values);
   FileWatcher watcher(recipe_folders(config, "studio"), config.out_dir);
+  watcher.follow(config.recipe);  // the recipe may become a link (or point elsewhere) while watched
   LiveRun live(config, true);
   // The previews' folder: a link there is refused now, as the confined writer refuses it at every write.
   io::make_folder(config.out_dir, previews_folder);

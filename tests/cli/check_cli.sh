@@ -90,16 +90,18 @@ contains "$tmp/out" "points: 2" "the first file stays"
 [ "$(ls -A "$tmp/twice")" = "a.vtp" ] || { echo "FAIL: saving twice left $(ls -A "$tmp/twice")"; failures=$((failures + 1)); }
 
 # Warnings and numbers: ABOP's 3D symbols draw a 3D curve, or are named once when dimension = 2 forces the
-# 2D turtle; a number default takes any number.
+# 2D turtle; a default written with a point takes any number, a whole default only whole numbers.
 cat >"$tmp/abop.lua" <<'LUA'
 local g = lsystem { axiom = "A", rules = { A = "F[&FA]/////[&FA]" }, angle = 22.5 }
 local flat = lsystem { axiom = "A", rules = { A = "F[&FA]/////[&FA]" }, angle = 22.5, dimension = 2 }
-print(g:curve(2), flat:curve(2):paths(), param("angle", 60))
+print(g:curve(2), flat:curve(2):paths(), param("angle", 60.0), param("count", 60))
 LUA
 expect 0 "3D symbols only warn" -- "$selfsim" run "$tmp/abop.lua" -o "$tmp/abop" --set angle=22.5
 contains "$tmp/out" "Curve3(" "3D symbols draw a Curve3"
 contains "$tmp/err" "the 2D turtle ignores the 3D turtle commands '&', '/'" "3D symbols warning"
 contains "$tmp/out" "22.5" "a number default takes 22.5"
+expect 1 "a whole default refuses 22.5" -- "$selfsim" run "$tmp/abop.lua" -o "$tmp/abop" --set count=22.5
+contains "$tmp/err" "abop.lua:3: param: --set count=22.5: 'count' is an integer parameter: expected a whole number such as 60 (a default written 60.0 takes any number)" "a whole default refuses 22.5"
 
 # Meshes: info tells a closed surface from an open one, diff names the first differing cell.
 cat >"$tmp/tet.lua" <<'LUA'
