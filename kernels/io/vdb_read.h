@@ -5,6 +5,7 @@
 // fork). Every failure is one line, "cannot read 'FILE': REASON".
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -57,5 +58,17 @@ struct VdbReadOptions {
 // Grids that would mesh wrongly are refused with what is wrong with them: a level set inside out (negative
 // outside), one so far from its index or world origin that single-precision positions lose its voxels.
 VdbSurface read_vdb_surface(const std::filesystem::path& file, const VdbReadOptions& opt = {});
+
+// What reading a grid may take in memory, judged from its metadata before any voxel is read, in a file of
+// `file_bytes`: the memory it declares, or 4 bytes for each voxel it declares, whichever is more, so that
+// declaring little memory does not hide a count of voxels. Only as many voxels as the file has room for in
+// leaves are charged (each leaf of 512 voxels is written with at least its 64-byte mask: 8 a file byte):
+// an active tile holds its voxels in one value, and is weighed once read (a 300-byte file's 2^36-voxel
+// root tile is no memory). A file that understates both is stopped by the reading child's memory limit.
+inline std::uint64_t vdb_reading_bytes(std::uint64_t declared_bytes, std::uint64_t declared_voxels,
+                                       std::uint64_t file_bytes) {
+  const std::uint64_t leaf_voxels = 8 * std::min(file_bytes, std::uint64_t{1} << 58);
+  return std::max(declared_bytes, 4 * std::min(declared_voxels, leaf_voxels));
+}
 
 }  // namespace selfsim::io

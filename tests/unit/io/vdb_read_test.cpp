@@ -92,6 +92,20 @@ TEST(VdbRead, BadFilesAreOneLineErrors) {
       }
 }
 
+// The memory a grid is judged to take before its voxels are read: a declared memory smaller than its voxels
+// take does not hide them (it did: a file declaring 1 byte skipped the voxel count), while a tile's voxels,
+// more than the file has room for in leaves, are not charged as memory.
+TEST(VdbRead, ReadingBytesFromDeclaredMemoryVoxelsAndFileSize) {
+  const std::uint64_t mib = std::uint64_t{1} << 20;
+  EXPECT_EQ(vdb_reading_bytes(1, 256 * mib, 64 * mib), 1024 * mib);           // leaves' voxels under a lying memory
+  EXPECT_EQ(vdb_reading_bytes(0, 256 * mib, 64 * mib), 1024 * mib);           // no memory declared
+  EXPECT_EQ(vdb_reading_bytes(2048 * mib, 256 * mib, 64 * mib), 2048 * mib);  // more memory than voxels
+  // A root tile (2^36 voxels) in a 300-byte file: only the 2,400 voxels its leaves could hold.
+  EXPECT_EQ(vdb_reading_bytes(1, std::uint64_t{1} << 36, 300), 4u * 2400);
+  // No overflow, whatever the counts.
+  EXPECT_EQ(vdb_reading_bytes(0, ~std::uint64_t{0}, ~std::uint64_t{0}), std::uint64_t{1} << 63);
+}
+
 TEST(VdbRead, TruncatedFileIsAnError) {
   const std::filesystem::path whole = sphere_vdb(), cut = temp("cut.vdb");
   std::ifstream in(whole, std::ios::binary);
