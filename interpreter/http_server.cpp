@@ -16,17 +16,11 @@
 #include <tuple>
 
 #include "kernels/geom/error.h"
+#include "kernels/io/hex_digit.h"
 
 namespace selfsim::interp {
 
 namespace {
-
-int hex_digit(char c) {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-  return -1;
-}
 
 const char* reason(int status) {
   switch (status) {
@@ -68,7 +62,7 @@ std::optional<std::string> url_decoded(std::string_view text, bool query) {
       s += ' ';
     } else if (text[i] == '%') {
       if (i + 2 >= text.size()) return std::nullopt;
-      const int hi = hex_digit(text[i + 1]), lo = hex_digit(text[i + 2]);
+      const int hi = io::hex_digit(text[i + 1]), lo = io::hex_digit(text[i + 2]);
       if (hi < 0 || lo < 0) return std::nullopt;
       s += static_cast<char>(hi * 16 + lo);
       i += 2;

@@ -1,11 +1,11 @@
 #include "kernels/io/colour.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <utility>
 
 #include "kernels/geom/lower_case.h"
+#include "kernels/io/hex_digit.h"
 
 namespace selfsim::io {
 
@@ -168,12 +168,6 @@ const std::vector<std::pair<std::string, std::uint32_t>>& named() {
 
 Rgb from_bits(std::uint32_t bits) {
   return {((bits >> 16) & 255) / 255.0, ((bits >> 8) & 255) / 255.0, (bits & 255) / 255.0};
-}
-
-int hex_digit(char c) {
-  if (c >= '0' && c <= '9') return c - '0';
-  c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return c >= 'a' && c <= 'f' ? c - 'a' + 10 : -1;
 }
 
 }  // namespace

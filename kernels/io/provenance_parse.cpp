@@ -8,19 +8,13 @@
 #include <string>
 
 #include "kernels/geom/error.h"
+#include "kernels/io/hex_digit.h"
 #include "kernels/io/provenance.h"
 #include "kernels/io/read_error.h"
 
 namespace selfsim::io {
 
 namespace {
-
-int hex_digit(char c) {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-  return -1;
-}
 
 void put_utf8(std::string& out, std::uint32_t c) {
   if (c < 0x800) {

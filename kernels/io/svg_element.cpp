@@ -4,6 +4,7 @@
 
 #include "kernels/geom/error.h"
 #include "kernels/geom/lower_case.h"
+#include "kernels/io/hex_digit.h"
 #include "kernels/io/read_error.h"
 #include "kernels/io/xml_text.h"
 
@@ -51,10 +52,8 @@ std::optional<std::string> property(const SvgTag& tag, const std::optional<std::
 }
 
 int digit_value(char c, bool hex) {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (hex && c >= 'a' && c <= 'f') return c - 'a' + 10;
-  if (hex && c >= 'A' && c <= 'F') return c - 'A' + 10;
-  return -1;
+  if (hex) return hex_digit(c);
+  return c >= '0' && c <= '9' ? c - '0' : -1;
 }
 
 void put_utf8(std::string& s, unsigned long code) {
