@@ -7,31 +7,12 @@ are answered, a repeated Host, Origin or Sec-Fetch-Site is refused. The waits ar
 never timings: every assertion is about order or content.
 
 usage: studio_clients.py SELFSIM"""
-import os, re, shutil, signal, socket, subprocess, sys, tempfile, threading, time
+import os, shutil, signal, socket, sys, tempfile, threading, time
+
+import studio_lib
+from studio_lib import check, exchange, finish, get, until
 
 selfsim = sys.argv[1]
-passed = failed = 0
-
-
-def check(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-    else:
-        failed += 1
-        print("FAIL: " + what, flush=True)
-
-
-def until(condition, seconds=60):
-    end = time.monotonic() + seconds
-    while time.monotonic() < end:
-        value = condition()
-        if value:
-            return value
-        time.sleep(0.05)
-    return None
-
-
 tmp = tempfile.mkdtemp()
 recipe = os.path.join(tmp, "r.lua")
 with open(recipe, "w") as f:
@@ -40,40 +21,11 @@ out = os.path.join(tmp, "out")
 
 
 def start_studio():
-    p = subprocess.Popen([selfsim, "studio", recipe, "--port", "0", "-o", out], stdout=subprocess.PIPE,
-                         stderr=subprocess.STDOUT, text=True)
-    line = p.stdout.readline()
-    m = re.search(r"127\.0\.0\.1:(\d+)", line)
-    if not m:
+    p, port, line = studio_lib.start_studio(selfsim, recipe, out)
+    if port is None:
         print("FAIL: the studio did not say where it listens: " + line + p.stdout.read())
         sys.exit(1)
-    return p, int(m.group(1))
-
-
-def exchange(port, raw, timeout=15, half_close=False):
-    """Sends raw bytes (then closes its sending side, if asked), reads to the end: (status or None, body)."""
-    s = socket.create_connection(("127.0.0.1", port), timeout=timeout)
-    try:
-        s.sendall(raw)
-        if half_close:
-            s.shutdown(socket.SHUT_WR)
-        data = b""
-        while True:
-            chunk = s.recv(65536)
-            if not chunk:
-                break
-            data += chunk
-    except OSError:
-        pass
-    finally:
-        s.close()
-    m = re.match(rb"HTTP/1\.1 (\d+) ", data)
-    head, _, body = data.partition(b"\r\n\r\n")
-    return (int(m.group(1)) if m else None), body
-
-
-def get(port, path, extra=b""):
-    return exchange(port, b"GET %s HTTP/1.1\r\nHost: 127.0.0.1:%d\r\n%s\r\n" % (path.encode(), port, extra))
+    return p, port
 
 
 class SlowReader(threading.Thread):
@@ -201,5 +153,4 @@ finally:
         studio.kill()
         studio.wait()
     shutil.rmtree(tmp, ignore_errors=True)
-print("%d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+finish()

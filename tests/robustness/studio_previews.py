@@ -7,33 +7,15 @@ link: refused at the start with its name, nothing written where it points. The w
 hang, never timings: every assertion is about order or content. Skips (77) without an X display or Xvfb.
 
 usage: studio_previews.py SELFSIM"""
-import os, re, shutil, signal, socket, subprocess, sys, tempfile, time
+import os, re, shutil, signal, subprocess, sys, tempfile, time
+
+import studio_lib
+from studio_lib import check, finish, get, until
 
 selfsim = sys.argv[1]
 if not os.environ.get("DISPLAY") and not shutil.which("Xvfb"):
     print("skipped: no X display and no Xvfb")
     sys.exit(77)
-passed = failed = 0
-
-
-def check(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-    else:
-        failed += 1
-        print("FAIL: " + what, flush=True)
-
-
-def until(condition, seconds=60, step=0.05):
-    end = time.monotonic() + seconds
-    while time.monotonic() < end:
-        value = condition()
-        if value:
-            return value
-        time.sleep(step)
-    return None
-
 
 tmp = tempfile.mkdtemp()
 recipe = os.path.join(tmp, "r.lua")
@@ -45,26 +27,7 @@ out = os.path.join(tmp, "out")
 
 
 def start_studio(*extra):
-    p = subprocess.Popen([selfsim, "studio", recipe, "--port", "0", "-o", out, *extra], stdout=subprocess.PIPE,
-                         stderr=subprocess.STDOUT, text=True)
-    line = p.stdout.readline()
-    m = re.search(r"127\.0\.0\.1:(\d+)", line)
-    return p, (int(m.group(1)) if m else None), line
-
-
-def get(port, path):
-    """(status, body) of GET path; None for status when no answer came within the bound."""
-    try:
-        s = socket.create_connection(("127.0.0.1", port), timeout=30)
-        s.sendall(b"GET %s HTTP/1.1\r\nHost: 127.0.0.1:%d\r\n\r\n" % (path.encode(), port))
-        data = b""
-        while chunk := s.recv(65536):
-            data += chunk
-        s.close()
-    except OSError:
-        return None, b""
-    m = re.match(rb"HTTP/1\.1 (\d+) ", data)
-    return (int(m.group(1)) if m else None), data.partition(b"\r\n\r\n")[2]
+    return studio_lib.start_studio(selfsim, recipe, out, *extra)
 
 
 def children(pid):
@@ -206,5 +169,4 @@ check(".studio" in text and "link" in text, "the message names the link: " + tex
 check(os.listdir(outside) == [], f"nothing written through the link: {os.listdir(outside)}")
 
 shutil.rmtree(tmp, ignore_errors=True)
-print(f"{passed} passed, {failed} failed")
-sys.exit(0 if failed == 0 else 1)
+finish()
