@@ -117,8 +117,10 @@ class Expression::Compiler {
     code_[at].index = static_cast<std::uint32_t>(code_.size() - right_start);
     if (!left_folded) return false;
 
-    // A constant left operand either decides the result, or leaves it to the right one alone.
+    // A constant left operand either decides the result, or leaves it to the right one alone. One that is
+    // not finite (sqrt(-1), exp(1000)) decides nothing: it stays, for eval to refuse as run refuses it.
     const double left = code_[start].value;
+    if (!std::isfinite(left)) return false;
     if (jump == Code::AndJump ? left == 0 : left != 0) {
       const std::size_t left_column = columns_[start];
       truncate(start);

@@ -66,20 +66,19 @@ double Expression::run(const Op* pc, const Op* end, const double* args) {
     const double a = below[--n];
     top = f(a, top);
   };
-  // Comparisons, logic, min, max and pow can turn a NaN into an ordinary number (NaN != 0 is 1, fmin drops
-  // it, pow(NaN, 0) is 1), which eval's check of the result would then miss: a condition computed from
-  // sqrt(-1) would silently hold. Their operands are checked instead, as a NaN result is.
-  const auto defined = [](double a) {
-    if (std::isnan(a)) [[unlikely]]
-      throw EvalError("a value it computes is not a number");
-    return a;
-  };
-  const auto unary_defined = [&](auto f) { top = f(defined(top)); };
-  const auto binary_defined = [&](auto f) {
-    const double a = defined(below[--n]);
-    top = f(a, defined(top));
+  // Many operations turn a value that is not finite into an ordinary number: comparisons and logic (NaN != 0
+  // is 1, exp(1000) > 5 is 1), min and max (which drop a NaN, and min(inf, 3) is 3), pow (pow(NaN, 0) is 1),
+  // exp(-inf), atan(inf), atan2 and x / inf. eval's check of the result would then miss it, and a condition
+  // computed from sqrt(-1) or exp(1000 * x) would silently hold. So every value is checked before any
+  // operation reads it or pushes it down: at the head of each step, `top` is the value the previous step
+  // made (the first step sees the finite dummy), and every value in `below` was checked as `top` before it
+  // went there. Only the last value is left for eval, which reports it as the result.
+  const auto check = [](double a) {
+    if (!std::isfinite(a)) [[unlikely]]
+      throw EvalError(std::isnan(a) ? "a value it computes is not a number" : "a value it computes is infinite");
   };
   for (; pc != end; ++pc) {
+    check(top);
     switch (pc->code) {
       case Code::Const:
         push(pc->value);
@@ -91,10 +90,10 @@ double Expression::run(const Op* pc, const Op* end, const double* args) {
         unary([](double a) { return -a; });
         break;
       case Code::Not:
-        unary_defined([](double a) { return a == 0 ? 1.0 : 0.0; });
+        unary([](double a) { return a == 0 ? 1.0 : 0.0; });
         break;
       case Code::Truth:
-        unary_defined([](double a) { return a != 0 ? 1.0 : 0.0; });
+        unary([](double a) { return a != 0 ? 1.0 : 0.0; });
         break;
       case Code::Sin:
         unary(sin_degrees);
@@ -147,37 +146,37 @@ double Expression::run(const Op* pc, const Op* end, const double* args) {
         binary([](double a, double b) { return a / b; });
         break;
       case Code::Pow:
-        binary_defined([](double a, double b) { return std::pow(a, b); });
+        binary([](double a, double b) { return std::pow(a, b); });
         break;
       case Code::Eq:
-        binary_defined([](double a, double b) { return a == b ? 1.0 : 0.0; });
+        binary([](double a, double b) { return a == b ? 1.0 : 0.0; });
         break;
       case Code::Ne:
-        binary_defined([](double a, double b) { return a != b ? 1.0 : 0.0; });
+        binary([](double a, double b) { return a != b ? 1.0 : 0.0; });
         break;
       case Code::Lt:
-        binary_defined([](double a, double b) { return a < b ? 1.0 : 0.0; });
+        binary([](double a, double b) { return a < b ? 1.0 : 0.0; });
         break;
       case Code::Le:
-        binary_defined([](double a, double b) { return a <= b ? 1.0 : 0.0; });
+        binary([](double a, double b) { return a <= b ? 1.0 : 0.0; });
         break;
       case Code::Gt:
-        binary_defined([](double a, double b) { return a > b ? 1.0 : 0.0; });
+        binary([](double a, double b) { return a > b ? 1.0 : 0.0; });
         break;
       case Code::Ge:
-        binary_defined([](double a, double b) { return a >= b ? 1.0 : 0.0; });
+        binary([](double a, double b) { return a >= b ? 1.0 : 0.0; });
         break;
       case Code::Min:
-        binary_defined([](double a, double b) { return std::fmin(a, b); });
+        binary([](double a, double b) { return std::fmin(a, b); });
         break;
       case Code::Max:
-        binary_defined([](double a, double b) { return std::fmax(a, b); });
+        binary([](double a, double b) { return std::fmax(a, b); });
         break;
       case Code::Atan2:
         binary([](double y, double x) { return std::atan2(y, x) * kDegreesPerRadian; });
         break;
       case Code::AndJump:
-        if (defined(top) == 0) {
+        if (top == 0) {
           top = 0;  // also turns -0 into 0
           pc += pc->index;
         } else {
@@ -185,7 +184,7 @@ double Expression::run(const Op* pc, const Op* end, const double* args) {
         }
         break;
       case Code::OrJump:
-        if (defined(top) != 0) {
+        if (top != 0) {
           top = 1;
           pc += pc->index;
         } else {

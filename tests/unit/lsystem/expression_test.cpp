@@ -147,7 +147,7 @@ TEST(Expression, NotFiniteResultThrows) {
   EXPECT_EQ(eval_error("sqrt(x)", {-1, 0, 0}), "result is not a number");
   EXPECT_EQ(eval_error("log(x)", {-1, 0, 0}), "result is not a number");
   EXPECT_EQ(eval_error("exp(1000)"), "result is infinite");
-  EXPECT_EQ(eval_error("-exp(x)", {1000, 0, 0}), "result is infinite");
+  EXPECT_EQ(eval_error("-exp(x)", {1000, 0, 0}), "a value it computes is infinite");  // not the result itself
   EXPECT_EQ(eval_error("log(0)"), "result is infinite");
   EXPECT_EQ(eval_error("tan(90)"), "result is infinite");
   EXPECT_EQ(value("sqrt(x)", {2.25, 0, 0}), 1.5);
@@ -164,9 +164,61 @@ TEST(Expression, NaNOnTheWayThrows) {
   EXPECT_EQ(eval_error("0 || sqrt(x)", {-1, 0, 0}), nan);
   EXPECT_EQ(eval_error("min(sqrt(x), 1)", {-1, 0, 0}), nan);
   EXPECT_EQ(eval_error("pow(sqrt(x), 0)", {-1, 0, 0}), nan);
+  // Constant expressions too, which are folded when compiled (a constant left side of && or || decides).
+  EXPECT_EQ(eval_error("sqrt(-1) || 0"), nan);
+  EXPECT_EQ(eval_error("sqrt(-1) && 1"), nan);
+  EXPECT_EQ(eval_error("min(sqrt(-1), 1)"), nan);
   // What a NaN would not have decided is not evaluated: || and && skip their right side as before.
   EXPECT_EQ(value("1 || sqrt(x)", {-1, 0, 0}), 1);
   EXPECT_EQ(value("0 && sqrt(x) > 1", {-1, 0, 0}), 0);
+}
+
+// An infinite value met on the way is an error like a NaN, wherever an operation would turn it into an
+// ordinary number: every operator and function is tried with an infinite operand (exp(x) with x = 1000), in
+// constant expressions (folded when compiled) as with parameters.
+TEST(Expression, InfiniteOnTheWayThrows) {
+  const std::string inf = "a value it computes is infinite";
+  for (const std::string big : {"exp(x)", "exp(1000)", "(x * 1e306)"}) {
+    for (const std::string text : {"B > 5",
+                                   "B >= 5",
+                                   "B < 5",
+                                   "B <= 5",
+                                   "B == B",
+                                   "B != 0",
+                                   "!B",
+                                   "B && 1",
+                                   "0 || B",
+                                   "-B < 0",
+                                   "min(B, 3)",
+                                   "max(-B, 3)",
+                                   "pow(B, 0)",
+                                   "pow(2, -B)",
+                                   "pow(1, B)",
+                                   "exp(-B)",
+                                   "atan(B)",
+                                   "atan2(1, B)",
+                                   "atan2(B, B)",
+                                   "1 / B",
+                                   "1 / (B + 1)",
+                                   "sin(B) * 0",
+                                   "floor(B) - ceil(B)",
+                                   "abs(B) > sqrt(B)",
+                                   "log(B) < 0",
+                                   "acos(B) != 1",
+                                   "asin(B) != 1",
+                                   "tan(B) == 1",
+                                   "cos(B) > 2"}) {
+      std::string e = text;
+      for (std::size_t at; (at = e.find('B')) != std::string::npos;) e.replace(at, 1, big);
+      EXPECT_EQ(eval_error(e, {1000, 0, 0}), inf) << e;
+    }
+  }
+  // 1 / 0 names its own cause; log(0) is -inf, and exp of it 0.
+  EXPECT_EQ(eval_error("exp(log(x))", {0, 0, 0}), inf);
+  EXPECT_EQ(eval_error("min(exp(x), 3) == 3", {1000, 0, 0}), inf);
+  // Large but finite values on the way are ordinary numbers.
+  EXPECT_EQ(value("min(exp(x), 3)", {700, 0, 0}), 3);
+  EXPECT_EQ(value("1 / (x * 1e300)", {1e8, 0, 0}), 1 / (1e8 * 1e300));
 }
 
 TEST(Expression, AnglesAreDegrees) {
