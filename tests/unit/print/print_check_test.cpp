@@ -9,26 +9,12 @@
 
 #include "kernels/geom/box_mesh.h"
 #include "kernels/geom/error.h"
+#include "print_fixtures.h"
 
 using namespace selfsim;
 using namespace selfsim::print;
-
-namespace {
-
-Mesh joined(const Mesh& a, const Mesh& b) {
-  Mesh m = a;
-  const auto n = static_cast<std::uint32_t>(a.points.size());
-  m.points.insert(m.points.end(), b.points.begin(), b.points.end());
-  for (Triangle t : b.triangles) m.triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
-  return m;
-}
-
-bool mentions(const PrintReport& r, const std::string& words) {
-  return std::any_of(r.findings.begin(), r.findings.end(),
-                     [&](const std::string& f) { return f.find(words) != std::string::npos; });
-}
-
-}  // namespace
+using print_fixtures::joined;
+using print_fixtures::mentions;
 
 TEST(PrintCheck, ACubePasses) {
   const PrintReport r = check_print(box_mesh({0, 0, 0}, {20, 20, 20}), PrintRules{}, PointBudget{}, no_progress());

@@ -14,19 +14,14 @@
 #include "kernels/geom/volume.h"
 #include "kernels/geom/wall_grid.h"
 #include "kernels/print/print_check.h"
+#include "print_fixtures.h"
 
 using namespace selfsim;
 using namespace selfsim::print;
+using print_fixtures::joined;
+using print_fixtures::mentions;
 
 namespace {
-
-Mesh joined(const Mesh& a, const Mesh& b) {
-  Mesh m = a;
-  const auto n = static_cast<std::uint32_t>(a.points.size());
-  m.points.insert(m.points.end(), b.points.begin(), b.points.end());
-  for (Triangle t : b.triangles) m.triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
-  return m;
-}
 
 // A prism whose cross-section is an isosceles triangle with a 20 degree apex, `depth` mm from its apex edge
 // (along x) to its back and `length` mm long (along y): 8 triangles. It is thinner than 0.8 mm within
@@ -65,11 +60,6 @@ Mesh subdivided(Mesh m, int levels) {
     m.triangles = std::move(finer);
   }
   return m;
-}
-
-bool mentions(const PrintReport& r, const std::string& words) {
-  return std::any_of(r.findings.begin(), r.findings.end(),
-                     [&](const std::string& f) { return f.find(words) != std::string::npos; });
 }
 
 }  // namespace
