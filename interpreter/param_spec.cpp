@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <set>
+#include <string_view>
 
 #include "interpreter/options_reader.h"
 #include "interpreter/parse_text.h"
@@ -33,6 +34,22 @@ std::string range_text(const ParamSpec& s) {
   if (s.min && s.max) return "in [" + number_text(*s.min) + ", " + number_text(*s.max) + "]";
   if (s.min) return "at least " + number_text(*s.min);
   return "at most " + number_text(*s.max);
+}
+
+// Whether `v` is a value a Lua integer holds exactly: whole, and within [-2^63, 2^63).
+bool whole_in_range(double v) {
+  constexpr double kLimit = 9223372036854775808.0;  // 2^63
+  return std::floor(v) == v && v >= -kLimit && v < kLimit;
+}
+
+// "--set level=99999999999999999999" is written as a whole number (digits after an optional minus, the
+// form from_chars reads) that is too large for an integer, not a fraction.
+bool written_whole(std::string_view text) {
+  if (!text.empty() && text.front() == '-') text.remove_prefix(1);
+  if (text.empty()) return false;
+  for (const char c : text)
+    if (c < '0' || c > '9') return false;
+  return true;
 }
 
 std::string choices_text(const std::vector<std::string>& choices) {
@@ -120,6 +137,14 @@ ParamSpec read_param_spec(lua_State* L, const std::string& name, int def, int op
   if (s.min && s.max && *s.min > *s.max)
     throw Error("'" + name + "': min " + number_text(*s.min) + " is above max " + number_text(*s.max));
   if (s.step && !(*s.step > 0)) throw Error("'" + name + "': step must be > 0, got " + number_text(*s.step));
+  // An integer parameter takes whole numbers only (check_param_value), so a fractional step or bound would
+  // make the studio's control offer values (1.5 from min = 0.5) that are then refused: refuse it here.
+  if (s.type == ParamSpec::Type::integer)
+    for (const auto& [key, field] : numbers)
+      if (*field && !whole_in_range(**field))
+        throw Error("'" + name + "' is an integer parameter: its " + key + " must be " +
+                    (std::floor(**field) == **field ? "within the integer range" : "a whole number") + ", got " +
+                    number_text(**field) + " (a default written " + s.default_text + ".0 takes any number)");
   if (is_number(s.type) && (s.min || s.max)) {
     const double v = *parse_text<double>(s.default_text);
     if ((s.min && v < *s.min) || (s.max && v > *s.max))
@@ -145,11 +170,18 @@ void check_param_value(const ParamSpec& s, const std::string& text) {
     if (!v) throw Error(set + "expected a finite number");
     // An integer parameter reaches the recipe as a Lua integer or not at all: 2.5 and 1e1 are refused
     // here, where --set, a sweep's values and the studio's controls all pass, not later at a kernel's line.
-    if (s.type == ParamSpec::Type::integer && !parse_text<long long>(text))
-      throw Error(set + "'" + s.name + "' is an integer parameter: expected a whole number such as " + s.default_text +
-                  " (a default written " + s.default_text + ".0 takes any number)");
-    if ((s.min && *v < *s.min) || (s.max && *v > *s.max))
-      throw Error(set + "'" + s.name + "' must be " + range_text(s));
+    const bool outside = (s.min && *v < *s.min) || (s.max && *v > *s.max);
+    if (s.type == ParamSpec::Type::integer && !parse_text<long long>(text)) {
+      // A whole number too large for a Lua integer is out of range, not a fraction: its declared range
+      // (within the integer range, see read_param_spec) says so where it has one on that side.
+      if (!written_whole(text))
+        throw Error(set + "'" + s.name + "' is an integer parameter: expected a whole number such as " +
+                    s.default_text + " (a default written " + s.default_text + ".0 takes any number)");
+      if (!outside)
+        throw Error(set + "'" + s.name + "' is an integer parameter: " + text +
+                    " is outside the integer range [-9223372036854775808, 9223372036854775807]");
+    }
+    if (outside) throw Error(set + "'" + s.name + "' must be " + range_text(s));
   } else if (!s.choices.empty()) {
     for (const std::string& c : s.choices)
       if (c == text) return;
