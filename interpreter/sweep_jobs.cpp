@@ -69,10 +69,20 @@ JobLists job_lists(const SweepConfig& c, const SweepPlan& plan, const std::strin
   j.collect = words(collect_arguments(c, exe, out, recipe));
   if (c.slurm.empty()) return j;
   // sbatch reads #SBATCH lines itself, not through a shell: a path is double-quoted (a space would end
-  // it) and its '%' doubled (sbatch expands %j, %a, ... there).
+  // it) and its '%' doubled (Slurm expands %j, %a, ... in it, and %% to %). A '\' cannot be written at
+  // all: sbatch's parser reads it as an escape, even inside quotes, and Slurm expands no %a in a file name
+  // that still holds one (written '\\'; sbatch(1), "filename pattern"), so every array task would write the
+  // one log. It is refused, as a '"' (which would end the quoting) and a line break are.
   const std::string folder = (out / "slurm").string();
-  if (folder.find_first_of("\"\n\r") != std::string::npos)
-    throw UsageError("--slurm: the output folder's path holds a '\"' or a line break, which an #SBATCH line cannot");
+  if (const std::size_t at = folder.find_first_of("\"\\\n\r"); at != std::string::npos) {
+    const char ch = folder[at];
+    throw UsageError(std::string("--slurm: the output folder's path holds ") +
+                     (ch == '"'    ? "a '\"', which would end the quoted file name of an #SBATCH --output line"
+                      : ch == '\\' ? "a '\\', which Slurm reads in an #SBATCH --output file name as an escape that "
+                                     "turns off its %a (every array task would write one log)"
+                                   : "a line break, which an #SBATCH line cannot") +
+                     ": choose another output folder with -o");
+  }
   std::string logs;
   for (char ch : folder) logs += ch == '%' ? std::string("%%") : std::string(1, ch);
   auto output = [&](const std::string& leaf) { return "#SBATCH --output=\"" + logs + "/" + leaf + "\"\n"; };

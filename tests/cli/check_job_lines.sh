@@ -77,6 +77,48 @@ for flag in --jobs-file --slurm; do
   grep -qF "selfsim: --set 'v=a\\nb,c' holds a line break" e.txt || fail "message: $(cat e.txt)"
 done
 [ -e nl1 ] || [ -e nl2 ] && fail "a refused job list wrote its output folder"
+# The output folder in the scripts' #SBATCH --output lines, which sbatch reads itself: Slurm expands %j, %a,
+# ... in a file name and reads %% as %, so each '%' is doubled (quotes, '#' and spaces sit inside the quoting).
+here=$(pwd -P)
+pct=$'p %j 100% \'q\' #x'
+"$selfsim" sweep "$recipe" -o "$pct" --set v=a,b --slurm s.sbatch >o.txt 2>e.txt ||
+  fail "--slurm with a '%' in the output folder: $(cat e.txt)"
+logs="$here/$(printf '%s' "$pct" | sed 's/%/%%/g')/slurm"
+grep -qxF "#SBATCH --output=\"$logs/run-%a.out\"" "$pct/s.sbatch" ||
+  fail "the array's log line: $(grep SBATCH "$pct/s.sbatch")"
+grep -qxF "#SBATCH --output=\"$logs/collect.out\"" "$pct/collect-s.sbatch" ||
+  fail "the collect job's log line: $(grep SBATCH "$pct/collect-s.sbatch")"
+# sbatch -v prints the options it read from the script before it tries to reach a controller (here one that
+# is not there: a port nothing listens on, 1 s a try), so its own reading of the line is checked where it is
+# installed (Slurm's expansion of %% on a node is checked by cli.slurm).
+if command -v sbatch >/dev/null; then
+  port=$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+  printf '%s\n' ClusterName=joblines SlurmctldHost=localhost "SlurmctldPort=$port" AuthType=auth/none \
+    CredType=cred/none MessageTimeout=1 TCPTimeout=1 'NodeName=localhost CPUs=1' \
+    'PartitionName=p Nodes=localhost Default=YES' >slurm.conf
+  SLURM_CONF=$here/slurm.conf timeout 60 sbatch -v --test-only "$pct/s.sbatch" >sbatch.txt 2>&1 </dev/null
+  if grep -q '^sbatch: end of defined options' sbatch.txt; then
+    [ "$(sed -n 's/^sbatch: output *: //p' sbatch.txt)" = "$logs/run-%a.out" ] ||
+      fail "sbatch read the log line as: $(grep 'output' sbatch.txt)"
+  else
+    echo "note: sbatch printed no options here, so only the line's text was checked: $(tail -1 sbatch.txt)"
+  fi
+else
+  echo "note: sbatch not installed; the #SBATCH lines were checked as text only"
+fi
+# A '\' is an escape to sbatch and, in a file name, turns off Slurm's %a (every task would write one log),
+# and a '"' would end the quoting: an output folder holding either is refused for --slurm before anything is
+# written, naming what it holds; --jobs-file alone takes them.
+for bad in 'b\s' 'b"q'; do
+  "$selfsim" sweep "$recipe" -o "$bad" --set v=a,b --slurm s.sbatch >o.txt 2>e.txt
+  [ $? = 2 ] || fail "--slurm: an output folder holding ${bad:1:1} should be refused"
+  grep -qF "selfsim: --slurm: the output folder's path holds a '${bad:1:1}', which" e.txt ||
+    fail "--slurm, ${bad:1:1}: $(cat e.txt)"
+  [ -e "$bad" ] && fail "--slurm: a refused output folder holding ${bad:1:1} was written"
+  "$selfsim" sweep "$recipe" -o "$bad" --set v=a,b --jobs-file jobs.txt >o.txt 2>e.txt ||
+    fail "--jobs-file with ${bad:1:1} in the output folder: $(cat e.txt)"
+done
+
 # A sweep run here passes them as arguments, with no shell: both reach their runs whole.
 "$selfsim" run $'n\nl/r.lua' -o loc --set $'v=a\nb,c' -q || fail "a local sweep with line breaks"
 [ "$(head -2 loc/v=a_b/selfsim.log)" = $'v=[a\nb]' ] || fail "the value with a line break reached its run whole"

@@ -177,5 +177,20 @@ for dir in lo/level=*; do
   sed "s|\"$tmp/lo/$run\"|\"$tmp/sl/$run\"|" "$dir/view.py" | cmp -s - "sl/$run/view.py" || fail "sl/$run/view.py differs"
 done
 
+# An output folder holding %j and %a: its #SBATCH lines double each '%', which Slurm reads back as one, so
+# every log lands in that very folder (not in one named after the job or the task, which does not exist).
+pct='p%j%a'
+"$selfsim" sweep d.lua -o "$pct" --set level=2,3 --slurm s.sbatch >out.txt 2>err.txt || fail "sweep -o $pct: $(cat err.txt)"
+submit=$(sed -n 's/^  submit: //p' out.txt)
+bash -c "$submit; echo \"array \$jid\"" >submit.txt 2>&1 || fail "submitting $pct: $(cat submit.txt)"
+array=$(sed -n 's/^array //p' submit.txt)
+collect=$(sed -n 's/^Submitted batch job //p' submit.txt)
+if [ -z "$array" ] || [ -z "$collect" ]; then fail "job ids of $pct: $(cat submit.txt)"; fi
+wait_for 60 jobs_gone || fail "$pct: jobs still queued: $(squeue 2>&1)"
+[ "$(state "$array")" = "JobState=COMPLETED " ] || fail "$pct: array job: $(state "$array")"
+[ "$(state "$collect")" = "JobState=COMPLETED " ] || fail "$pct: collect job: $(state "$collect")"
+for f in run-0.out run-1.out collect.out; do [ -f "$pct/slurm/$f" ] || fail "no $pct/slurm/$f: $(ls "$pct/slurm")"; done
+[ -f "$pct/sheet_c.svg" ] || fail "$pct: the collect job wrote no sheet_c.svg"
+
 echo "$failures failures"
 [ "$failures" = 0 ]
