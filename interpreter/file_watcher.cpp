@@ -2,11 +2,13 @@
 
 #include <poll.h>
 #include <sys/inotify.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <deque>
 
 #include "kernels/geom/error.h"
 
@@ -21,20 +23,58 @@ bool same_folder(const std::filesystem::path& a, const std::filesystem::path& b)
   return std::filesystem::equivalent(a, b, ec);
 }
 
-// The folders holding `file` and each link on the way to what it finally names (a link to a link, in
-// another folder: changing the middle one changes the recipe too). Stops after 40 links (a loop).
-std::vector<std::filesystem::path> link_chain_folders(const std::filesystem::path& file) {
-  std::vector<std::filesystem::path> folders;
-  std::filesystem::path p = std::filesystem::absolute(file);
-  for (int hop = 0; hop < 40; ++hop) {
-    folders.push_back(p.parent_path());
+// One name met on the way from a path to what it names: the folder it is in (a path with no link in it) and
+// whether it is a link.
+struct Step {
+  std::filesystem::path folder;
+  std::string name;
+  bool link = false;
+};
+
+// The names of `path`, without the empty and "." ones (a trailing slash, "a/./b").
+std::deque<std::string> names_of(const std::filesystem::path& path) {
+  std::deque<std::string> names;
+  for (const std::filesystem::path& c : path.relative_path())
+    if (!c.empty() && c != ".") names.push_back(c.string());
+  return names;
+}
+
+// The way from `file` (absolute) to what it finally names, resolved a name at a time as the kernel resolves
+// it: a link at the file or at any folder on its path is read and its target walked in its place. Stops at a
+// missing name (it is on the way: its creation is a change) and after 40 links, the kernel's limit (a loop:
+// the links met so far are on the way, so re-pointing one ends the loop and is seen). `last` is the folder
+// where the final name is (or would be), empty when the walk stopped before it.
+std::vector<Step> way_to(const std::filesystem::path& file, std::filesystem::path& last) {
+  std::vector<Step> way;
+  std::deque<std::string> left = names_of(file);
+  std::filesystem::path at = file.root_path();  // resolved so far
+  int links = 0;
+  last.clear();
+  while (!left.empty()) {
+    const std::string name = left.front();
+    left.pop_front();
+    if (name == "..") {  // the parent of what `at` is, not of the link that led there (as the kernel does)
+      at = at.parent_path();
+      continue;
+    }
+    struct stat st {};
+    const bool exists = ::lstat((at / name).c_str(), &st) == 0;
+    const bool link = exists && S_ISLNK(st.st_mode);
+    way.push_back({at, name, link});
+    if (left.empty() && !link) last = at;
+    if (!exists) break;
+    if (!link) {
+      at /= name;
+      continue;
+    }
     std::error_code ec;
-    if (!std::filesystem::is_symlink(std::filesystem::symlink_status(p, ec))) break;
-    const std::filesystem::path target = std::filesystem::read_symlink(p, ec);
-    if (ec) break;
-    p = target.is_absolute() ? target : p.parent_path() / target;
+    const std::filesystem::path target = std::filesystem::read_symlink(at / name, ec);
+    if (ec || ++links > 40) break;
+    const std::deque<std::string> more = names_of(target);
+    left.insert(left.begin(), more.begin(), more.end());
+    if (target.is_absolute()) at = target.root_path();
   }
-  return folders;
+  return way;
 }
 
 // Whether `folder` is `outer` or inside it, by their real paths.
@@ -70,14 +110,22 @@ void FileWatcher::add(const std::filesystem::path& folder, int depth) {
   const int wd = ::inotify_add_watch(fd_, folder.c_str(), events | IN_ONLYDIR);
   if (wd < 0) throw Error("cannot watch '" + folder.string() + "': " + std::strerror(errno));
   watched_[wd] = folder;
+  alone_.erase(wd);  // watched for its links before: now for all its files
   std::error_code ec0;
-  real_.insert(std::filesystem::canonical(folder, ec0).string());
+  real_[std::filesystem::canonical(folder, ec0).string()] = wd;
   if (depth >= 3) return;
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
     const std::string name = entry.path().filename().string();
     if (name[0] != '.' && entry.is_directory(ec) && !entry.is_symlink(ec)) add(entry.path(), depth + 1);
   }
+}
+
+void FileWatcher::add_alone(const std::filesystem::path& folder) {
+  const int wd = ::inotify_add_watch(fd_, folder.c_str(), events | IN_ONLYDIR);
+  if (wd < 0) throw Error("cannot watch '" + folder.string() + "': " + std::strerror(errno));
+  if (watched_.emplace(wd, folder).second) alone_.insert(wd);  // else already watched for all its files
+  real_[folder.string()] = wd;
 }
 
 std::string FileWatcher::drain() {
@@ -93,12 +141,19 @@ std::string FileWatcher::drain() {
       at += static_cast<ssize_t>(sizeof(inotify_event) + e->len);
       if (e->mask & IN_IGNORED) {  // the folder itself was deleted or moved away
         if (const auto w = watched_.find(e->wd); w != watched_.end()) {
-          lost_.push_back(w->second);
+          // One watched for its links is watched again when a change brings it back on the way.
+          if (alone_.erase(e->wd) == 0) lost_.push_back(w->second);
           watched_.erase(w);
+          std::erase_if(real_, [&](const auto& r) { return r.second == e->wd; });
         }
         continue;
       }
-      if (e->len == 0 || (e->mask & IN_ISDIR) || side_file(e->name)) continue;
+      if (e->len == 0) continue;
+      // A name on the way to a followed file counts whatever it is (a folder, a hidden link); others count
+      // in folders watched for all their files, unless folders or an editor's side files.
+      const auto way = on_the_way_.find(e->wd);
+      const bool on_way = way != on_the_way_.end() && way->second.count(e->name) != 0;
+      if (!on_way && ((e->mask & IN_ISDIR) || side_file(e->name) || alone_.count(e->wd) != 0)) continue;
       ((e->mask & (IN_MOVED_FROM | IN_DELETE)) ? gone : written) = e->name;
     }
   }
@@ -107,22 +162,33 @@ std::string FileWatcher::drain() {
 }
 
 void FileWatcher::follow(const std::filesystem::path& file) {
-  followed_.push_back(file);
+  followed_.push_back(std::filesystem::absolute(file));
   refollow();
 }
 
 void FileWatcher::refollow() {
+  on_the_way_.clear();
   for (const std::filesystem::path& file : followed_) {
-    for (const std::filesystem::path& folder : link_chain_folders(file)) {
-      std::error_code ec;
-      const std::filesystem::path real = std::filesystem::canonical(folder, ec);
-      if (ec || real_.count(real.string()) != 0 || (!skip_.empty() && inside(real, skip_))) continue;
+    std::filesystem::path last;
+    const std::vector<Step> way = way_to(file, last);
+    // The folder holding what the path names is watched for all its files (modules beside the recipe);
+    // a folder holding a link or a missing name on the way, for those names only.
+    for (const Step& step : way) {
+      const bool all = step.folder == last;
+      const auto known = real_.find(step.folder.string());
+      if (known != real_.end() && (!all || alone_.count(known->second) == 0)) continue;
+      if ((!all && !step.link && std::filesystem::exists(step.folder / step.name)) ||
+          (!skip_.empty() && inside(step.folder, skip_)))
+        continue;  // a plain folder on the way: watched only where a link or the end is
       try {
-        add(real, 0);
-      } catch (const Error&) {  // not watchable (no permission): its edits go unseen, watching goes on
-        real_.insert(real.string());
+        all ? add(step.folder, 0) : add_alone(step.folder);
+      } catch (const Error&) {  // not watchable (no permission): its changes go unseen, watching goes on
+        real_[step.folder.string()] = -1;
       }
     }
+    for (const Step& step : way)
+      if (const auto known = real_.find(step.folder.string()); known != real_.end() && known->second >= 0)
+        on_the_way_[known->second].insert(step.name);
   }
 }
 

@@ -36,22 +36,28 @@ class FileWatcher {
   std::string take(std::chrono::milliseconds settle = std::chrono::milliseconds(30));
   // Watches again the folders that were deleted, where they exist again; true when one came back.
   bool restore();
-  // Watches also the folder of every link on the way from `file` to what it names, now and again after
-  // every change seen: a recipe that becomes a link while watched (an editor or stow replacing it by one)
-  // has its target's edits seen. Folders inside `skip` are left out (a run's writes are not changes).
+  // Watches also the folder of every link on the way from `file` to what it names: links at the file and at
+  // any folder on its path (`proj/current -> v2`), and in their targets, up to 40 links as the kernel allows
+  // (a loop stops there). Resolved again after every change seen, so a recipe that becomes a link or a folder
+  // link re-pointed while watched (an editor or stow replacing them) has its new target's edits seen. In a
+  // folder watched only for its links, only the names on the way count, hidden or not (`.config` folded by
+  // stow); other files there are no change. Folders inside `skip` are left out (a run's writes).
   void follow(const std::filesystem::path& file);
 
  private:
   void add(const std::filesystem::path& folder, int depth);
-  void refollow();      // watches the folders on the followed files' link chains not watched yet
+  void add_alone(const std::filesystem::path& folder);  // for the names on the way only (links_)
+  void refollow();      // watches the folders on the followed files' ways not watched yet
   std::string drain();  // the first counted change among the pending events, or empty
 
   int fd_ = -1;
   std::filesystem::path skip_;
-  std::map<int, std::filesystem::path> watched_;  // by watch descriptor
-  std::vector<std::filesystem::path> lost_;       // deleted or moved away (git checkout may bring them back)
-  std::vector<std::filesystem::path> followed_;   // files whose links are followed (follow())
-  std::set<std::string> real_;                    // the watched folders' canonical paths
+  std::map<int, std::filesystem::path> watched_;     // by watch descriptor
+  std::vector<std::filesystem::path> lost_;          // deleted or moved away (git checkout may bring them back)
+  std::vector<std::filesystem::path> followed_;      // absolute paths of the files whose ways are followed
+  std::map<std::string, int> real_;                  // the watched folders' canonical paths, their descriptors
+  std::set<int> alone_;                              // descriptors watched for the names on the way only
+  std::map<int, std::set<std::string>> on_the_way_;  // by descriptor: the names on a followed file's way
 };
 
 // Whether an editor's side file (hidden, backup, swap, vim's "4913" probe) rather than a source.

@@ -108,4 +108,30 @@ kill -INT $pid2
 wait $pid2
 pid2=
 
+# A folder on the way to the recipe is a link, re-pointed while watched (stow folds folders this way, a
+# `current` link moves to the next version): the run follows it, and edits in the new target start runs.
+# A link loop on the way fails its run with the loop named; watching goes on and follows the loop's repair.
+cd "$tmp" && mkdir -p fl/v2 fl/v3 fl/v4 && cd fl || exit 1
+printf 'local curves = require "selfsim.curves"\nsave(curves.dragon():curve(3), "c.svg")\n' >v2/r.lua
+printf 'local curves = require "selfsim.curves"\nsave(curves.dragon():curve(5), "c.svg")\n' >v3/r.lua
+printf 'local curves = require "selfsim.curves"\nsave(curves.dragon():curve(5), "c.svg")\n' >v4/r.lua
+ln -s v2 cur
+"$selfsim" run cur/r.lua --watch -o out >../log3.txt 2>../err3.txt &
+pid2=$!
+until_ok same_drawing out/c.svg ../ref3/c.svg || fail "the first run through a folder link: $(cat ../err3.txt)"
+ln -s v3 .cur.new && mv -T .cur.new cur
+until_ok same_drawing out/c.svg ../ref5/c.svg || fail "re-pointing a folder link on the way did not re-run"
+printf 'local curves = require "selfsim.curves"\nsave(curves.dragon():curve(7), "c.svg")\n' >v3/r.lua
+until_ok same_drawing out/c.svg ../ref7/c.svg || fail "an edit in the folder link's new target did not re-run"
+ln -s cur loop && ln -s loop .cur.new && mv -T .cur.new cur
+until_ok grep -qF "cannot open recipe 'cur/r.lua': Too many levels of symbolic links" ../err3.txt ||
+  fail "a link loop on the way is not named: $(cat ../err3.txt)"
+until_ok grep -qF "the run failed" ../err3.txt || fail "a link loop on the way: no failure line"
+kill -0 "$pid2" 2>/dev/null || fail "watching stopped at a link loop on the way"
+ln -s v4 .cur.new && mv -T .cur.new cur
+until_ok same_drawing out/c.svg ../ref5/c.svg || fail "repairing a link loop on the way did not re-run"
+kill -INT "$pid2"
+wait "$pid2"
+pid2=
+
 finish
