@@ -1,7 +1,8 @@
 // Fuzz target: the provenance parser (kernels/io/provenance_parse.cpp), which `selfsim info` and `selfsim
 // rerun` run on the record any file may carry. Only selfsim::Error may escape. A record that parses holds
 // no NUL in any string (a path cut at a NUL would run another file), and writing it again with
-// provenance_json reads back the same record (what selfsim writes, it reads whole).
+// provenance_json reads back the same record (what selfsim writes, it reads whole). Its seed is one
+// --seed takes (rerun passes it on).
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -34,6 +35,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!p) return 0;
   if (verbose) std::fprintf(stderr, "read: recipe of %zu bytes, %zu --set values\n", p->recipe.size(), p->sets.size());
   fuzz::require(!p->recipe.empty(), "a record without a recipe was accepted");
+  fuzz::require(p->seed >= 0, "a seed --seed would refuse was accepted");
   fuzz::require(no_nul(p->recipe) && no_nul(p->name) && no_nul(p->version) && no_nul(p->sha256), "a field holds a NUL");
   for (const auto& [k, v] : p->sets) fuzz::require(no_nul(k) && no_nul(v), "a --set key or value holds a NUL");
   std::optional<io::Provenance> again;

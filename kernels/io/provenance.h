@@ -24,9 +24,11 @@ struct Provenance {
 // One line of JSON. It never holds "--", so it can sit inside an XML comment.
 std::string provenance_json(const Provenance& p);
 
-// Parses provenance_json's text; nullopt for text of another shape. Throws Error naming the field when a
-// string is not strict JSON (a bad \u escape, a lone surrogate, a raw control character) or holds a NUL,
-// when a field is given twice, or when the seed is beyond 64 bits (provenance_parse.cpp).
+// Parses provenance_json's text; nullopt for text that does not begin with '{' (no record). Throws Error
+// naming the field and what was expected for anything else provenance_json would not write: a string that
+// is not strict JSON (a bad \u escape, a lone surrogate, a raw control character, raw bytes that are not
+// UTF-8) or holds a NUL, a value of another type, a field given twice, a seed outside [0, 2^63) (what
+// --seed takes), no recipe, a byte order mark (provenance_parse.cpp).
 std::optional<Provenance> parse_provenance(const std::string& json);
 
 // The provenance recorded in (or, for .stl, beside) the file; nullopt when there is none. Throws Error

@@ -1,8 +1,12 @@
 // Reading a provenance record back (parse_provenance). The record is only text in a file, so anyone may
 // have written it: strings are read strictly, as JSON defines them, and a string that JSON would refuse
-// (a bad \u escape, a lone surrogate, a raw control character) or that holds a NUL is an Error naming the
-// field. A NUL matters most: a path holding one would be cut there when it reaches the system (rerun ran
-// the recipe path cut at the NUL), and a key holding one is not the key the record seems to hold.
+// (a bad \u escape, a lone surrogate, a raw control character, raw bytes that are not UTF-8) or that holds
+// a NUL is an Error naming the field. A NUL matters most: a path holding one would be cut there when it
+// reaches the system (rerun ran the recipe path cut at the NUL), and a key holding one is not the key the
+// record seems to hold. Every other departure from what provenance_json writes (a number in "set", a seed
+// of 1.0 or -1) is an Error too, naming the field and what was expected: "records no recipe" for a record
+// that is there sent the reader looking for the wrong fault.
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -11,6 +15,7 @@
 #include "kernels/io/hex_digit.h"
 #include "kernels/io/provenance.h"
 #include "kernels/io/read_error.h"
+#include "kernels/io/utf8.h"
 
 namespace selfsim::io {
 
@@ -31,38 +36,45 @@ void put_utf8(std::string& out, std::uint32_t c) {
 }
 
 // A reader for exactly the JSON provenance_json writes: an object of strings, one object of strings and
-// one whole number. A shape it does not know gives nullopt (not a record); a malformed string, a field given
-// twice or a seed out of range throws Error naming the field.
+// one seed. Text that does not begin with '{' is no record (nullopt); once it does, the record is there,
+// and anything in it other than what selfsim writes throws Error naming the field and what was expected,
+// the values a run would refuse included (a seed outside [0, 2^63): rerun would pass it to --seed).
 class Parser {
  public:
   explicit Parser(const std::string& text) : t_(text) {}
 
   std::optional<Provenance> provenance() {
+    if (t_.compare(0, 3, "\xef\xbb\xbf") == 0)
+      throw Error("expected '{' at the start of the record, found a UTF-8 byte order mark (bytes EF BB BF)");
+    if (!eat('{')) return std::nullopt;
     Provenance p;
     std::map<std::string, bool> seen;
-    if (!eat('{')) return std::nullopt;
+    std::string last;  // the field before a missing ',' or '}'
     do {
       std::string key;
-      if (!string(key, "a key of the record") || !eat(':')) return std::nullopt;
-      if (seen[key]) throw Error("the field \"" + shown(key) + "\" is given twice");
+      need_string(key, "a key of the record");
+      const std::string field = "the field \"" + shown(key) + "\"";
+      need(':', "':' after the key \"" + shown(key) + "\"");
+      if (seen[key]) throw Error(field + " is given twice");
       seen[key] = true;
       if (key == "set") {
-        if (!eat('{')) return std::nullopt;
+        if (!eat('{')) throw Error(field + " is " + found() + ", not an object of strings");
         if (!eat('}')) {
           do {
             std::string k, v;
-            if (!string(k, "a key of \"set\"") || !eat(':')) return std::nullopt;
-            if (!string(v, "the \"set\" value of '" + shown(k) + "'")) return std::nullopt;
+            need_string(k, "a key of \"set\"");
+            need(':', "':' after the \"set\" key '" + shown(k) + "'");
+            need_string(v, "the \"set\" value of '" + shown(k) + "'");
             if (p.sets.count(k) != 0) throw Error("the \"set\" key '" + shown(k) + "' is given twice");
             p.sets[k] = v;
           } while (eat(','));
-          if (!eat('}')) return std::nullopt;
+          need('}', "',' or '}' after the last \"set\" value");
         }
       } else if (key == "seed") {
-        if (!seed(p.seed)) return std::nullopt;
+        p.seed = seed();
       } else {
         std::string value;
-        if (!string(value, "the field \"" + shown(key) + "\"")) return std::nullopt;
+        need_string(value, field);
         if (key == "selfsim")
           p.version = value;
         else if (key == "recipe")
@@ -72,8 +84,11 @@ class Parser {
         else if (key == "name")
           p.name = value;
       }
+      last = field;
     } while (eat(','));
-    if (!eat('}') || p.recipe.empty()) return std::nullopt;
+    need('}', "',' or '}' after " + last);
+    if (p.recipe.empty())
+      throw Error(seen["recipe"] ? "the field \"recipe\" is empty" : "the record has no field \"recipe\"");
     return p;
   }
 
@@ -90,25 +105,47 @@ class Parser {
     return false;
   }
 
-  // A whole number: an optional '-' and digits, within long long (JSON's grammar, no fraction or exponent).
-  bool seed(long long& out) {
+  // What stands at i_, for a message: the next JSON token as written, or "the end of the record".
+  std::string found() {
+    skip();
+    if (i_ >= t_.size()) return "the end of the record";
+    std::size_t end = i_ + 1;
+    if (t_[i_] == '"') {
+      while (end < t_.size() && t_[end] != '"') end += t_[end] == '\\' ? 2 : 1;
+      end = std::min(end + 1, t_.size());
+    } else if (std::string("{}[],:").find(t_[i_]) == std::string::npos) {
+      while (end < t_.size() && std::string("{}[],:\" \n\r\t").find(t_[end]) == std::string::npos) ++end;
+    }
+    return shown(t_.substr(i_, end - i_));
+  }
+
+  // `c`, or an Error saying what was `expected` and what is there instead.
+  void need(char c, const std::string& expected) {
+    if (!eat(c)) throw Error("expected " + expected + ", found " + found());
+  }
+
+  void need_string(std::string& out, const std::string& field) {
+    if (!string(out, field)) throw Error(field + " is " + found() + ", not a string");
+  }
+
+  // The seed: digits alone (JSON's grammar, no sign, fraction or exponent), below 2^63, as --seed takes it.
+  long long seed() {
     skip();
     const std::size_t start = i_;
-    const bool negative = i_ < t_.size() && t_[i_] == '-';
-    std::size_t end = negative ? i_ + 1 : i_;
+    std::size_t end = i_;
     while (end < t_.size() && t_[end] >= '0' && t_[end] <= '9') ++end;
-    if (end == start + (negative ? 1 : 0)) return false;
-    const unsigned long long limit = negative ? 9223372036854775808ull : 9223372036854775807ull;
+    const std::string refused =
+        "the field \"seed\" holds " + found() + ", not a whole number in [0, 2^63) (what --seed takes)";
+    if (end == start || (end < t_.size() && std::string(",} \n\r\t").find(t_[end]) == std::string::npos))
+      throw Error(refused);
     unsigned long long magnitude = 0;
-    for (i_ = negative ? start + 1 : start; i_ < end; ++i_) {
-      const unsigned d = static_cast<unsigned>(t_[i_] - '0');
-      if (magnitude > (limit - d) / 10)
-        throw Error("the field \"seed\" holds " + shown(t_.substr(start, end - start)) +
-                    ", beyond a 64-bit whole number");
+    for (std::size_t k = start; k < end; ++k) {
+      const unsigned d = static_cast<unsigned>(t_[k] - '0');
+      if (magnitude > (9223372036854775807ull - d) / 10) throw Error(refused + ": it is 2^63 or more");
       magnitude = magnitude * 10 + d;
     }
-    out = negative ? static_cast<long long>(0 - magnitude) : static_cast<long long>(magnitude);
-    return true;
+    i_ = end;
+    return static_cast<long long>(magnitude);
   }
 
   // Four hex digits after "\u" (at i_, which is left on the last digit); throws naming `field`.
@@ -139,6 +176,15 @@ class Parser {
       if (c < 0x20)
         throw Error(field + " holds a raw control character (byte " + std::to_string(c) +
                     "); JSON writes it as an escape");
+      if (c >= 0x80) {  // raw, it must be UTF-8: selfsim writes a byte of text that is not as \u0080-\u00ff
+        const std::size_t n = utf8_length(t_, i_);
+        if (n == 0)
+          throw Error(field + " holds a byte that is not UTF-8 (0x" + hex4(c).substr(2) +
+                      "); a record is UTF-8 and writes such a byte as an escape, \\u00" + hex4(c).substr(2));
+        out.append(t_, i_, n);
+        i_ += n - 1;
+        continue;
+      }
       if (c != '\\') {
         out += static_cast<char>(c);
         continue;

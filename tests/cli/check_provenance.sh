@@ -79,6 +79,18 @@ sed 's|/r.lua"|/r\\uzzzz.lua"|' out/c.svg >zzzz.svg
 grep -qF "the field \"recipe\" holds a bad escape '\\uzzzz' (\\u takes 4 hex digits)" err.txt ||
   fail "bad escape message: $(cat err.txt)"
 [ "$(wc -l <err.txt)" = 1 ] || fail "one line: $(cat err.txt)"
+# A value a run would refuse is refused at the record, naming the field (a seed of -1 reached --seed, and
+# rerun said only "the rerun failed", exit 1); a number in "set" is named, not called "records no recipe".
+sed 's|"seed": 3|"seed": -1|' out/c.svg >negative.svg
+"$selfsim" rerun negative.svg -o c5 >out.txt 2>err.txt
+[ $? = 2 ] || fail "rerun of a record with seed -1 should exit 2: $(cat out.txt err.txt)"
+grep -qF "negative.svg': its provenance record: the field \"seed\" holds -1, not a whole number in [0, 2^63)" err.txt ||
+  fail "seed -1 message: $(cat err.txt)"
+[ -e c5 ] && fail "a rerun with seed -1 ran"
+sed 's|"set": {"level": "5"}|"set": {"level": 5}|' out/c.svg >number.svg
+"$selfsim" info number.svg >/dev/null 2>err.txt
+[ $? = 2 ] || fail "info of a record with a number in set should exit 2"
+grep -qF "the \"set\" value of 'level' is 5, not a string" err.txt || fail "set number message: $(cat err.txt)"
 mkfifo fifo.svg
 timeout 10 "$selfsim" rerun fifo.svg >/dev/null 2>err.txt
 [ $? = 2 ] || fail "rerun of a FIFO should exit 2 at once"
