@@ -2,8 +2,10 @@
 
 #include <arpa/inet.h>
 #include <fcntl.h>
+#include <linux/sockios.h>
 #include <netinet/in.h>
 #include <poll.h>
+#include <sys/ioctl.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -97,8 +99,9 @@ constexpr std::size_t max_head = 16384;                 // a request's head, in 
 constexpr std::size_t max_connections = 128;            // open at once; the oldest still-reading one makes room
 constexpr std::size_t turn_bytes = 1 << 20;             // sent to one client per loop turn, so others get theirs
 constexpr std::size_t file_piece = 64 << 10;            // read from a file at a time
+constexpr std::size_t max_discard = 1 << 20;            // read and dropped after a request (a second one, a body)
 constexpr auto head_time = std::chrono::seconds(10);    // for the whole head to come in
-constexpr auto stall_time = std::chrono::seconds(5);    // an answer's client taking nothing of it
+constexpr auto stall_time = std::chrono::seconds(5);    // an answer's client taking nothing of it (or not closing)
 constexpr auto answer_time = std::chrono::seconds(60);  // for the studio to answer (long polls: 20 s)
 
 using Clock = std::chrono::steady_clock;
@@ -186,7 +189,9 @@ std::optional<HttpRequest> parse_http_request(std::string_view head) {
 }
 
 struct HttpServer::Connection {
-  enum class Stage { reading, answering, writing };
+  // draining: the whole answer is with the kernel and the sending side shut; what the client still sends is
+  // read and dropped until it closes, so the answer's queued tail is not lost to a reset.
+  enum class Stage { reading, answering, writing, draining };
   Id id = 0;
   int fd = -1;
   bool local = false;
@@ -196,6 +201,9 @@ struct HttpServer::Connection {
   std::size_t sent = 0;  // of out
   int file = -1;         // the rest of the answer, where it is a file
   std::int64_t file_at = 0, file_left = 0;
+  bool peer_closed = false;    // the client's sending side ended: nothing more to read
+  std::size_t discarded = 0;   // bytes read and dropped after the request
+  int unacked = 0;             // draining: answer bytes the client had not yet taken, at the last look
   Clock::time_point deadline;  // the limit of the current stage
   std::size_t slot = 0;        // in the poll set, or npos when not polled
 };
@@ -244,7 +252,11 @@ void HttpServer::add_poll(std::vector<pollfd>& p) {
     c.slot = std::string::npos;  // an answer being made waits on the studio, not on its socket
     if (c.stage == Connection::Stage::answering) continue;
     c.slot = p.size();
-    p.push_back({c.fd, static_cast<short>(c.stage == Connection::Stage::reading ? POLLIN : POLLOUT), 0});
+    // An answer going out also reads (and drops) what its client sends meanwhile, so the client's sending
+    // never stalls on a full buffer and nothing is left unread at the close.
+    short events = c.stage == Connection::Stage::writing ? POLLOUT : POLLIN;
+    if (c.stage == Connection::Stage::writing && !c.peer_closed) events |= POLLIN;
+    p.push_back({c.fd, events, 0});
   }
 }
 
@@ -262,7 +274,8 @@ void HttpServer::accept_waiting() {
                                  [](const Connection& c) { return c.stage == Connection::Stage::reading; });
       if (victim == open_.end())
         for (auto it = open_.begin(); it != open_.end(); ++it)
-          if (it->stage == Connection::Stage::writing && (victim == open_.end() || it->deadline < victim->deadline))
+          if ((it->stage == Connection::Stage::writing || it->stage == Connection::Stage::draining) &&
+              (victim == open_.end() || it->deadline < victim->deadline))
             victim = it;
       if (victim == open_.end()) {
         ::close(fd);
@@ -292,7 +305,10 @@ void HttpServer::read_request(Connection& c, std::vector<Incoming>& complete) {
     }
     if (n < 0 && errno == EINTR) continue;
     if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) break;
-    if (n == 0 && http_head_end(c.in) != std::string::npos) break;  // a whole request, then half-closed
+    if (n == 0 && http_head_end(c.in) != std::string::npos) {  // a whole request, then half-closed
+      c.peer_closed = true;
+      break;
+    }
     return close(c);  // closed by the client before its request was whole, or an error
   }
   const std::size_t end = http_head_end(c.in);
@@ -313,7 +329,7 @@ void HttpServer::write_answer(Connection& c) {
     if (c.sent == c.out.size()) {
       c.out.clear();
       c.sent = 0;
-      if (c.file_left == 0) return close(c);  // all sent
+      if (c.file_left == 0) return drain(c);  // all sent
       c.out.resize(static_cast<std::size_t>(std::min<std::int64_t>(c.file_left, file_piece)));
       const ssize_t n = ::pread(c.file, c.out.data(), c.out.size(), c.file_at);
       if (n < 0 && errno == EINTR) continue;
@@ -333,19 +349,66 @@ void HttpServer::write_answer(Connection& c) {
   }
 }
 
+bool HttpServer::discard_input(Connection& c) {
+  char buf[16384];
+  while (!c.peer_closed) {
+    const ssize_t n = ::read(c.fd, buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) return true;
+    if (n == 0) {
+      c.peer_closed = true;
+      break;
+    }
+    c.discarded += n > 0 ? static_cast<std::size_t>(n) : 0;
+    if (n < 0 || c.discarded > max_discard) {  // reset by the client, or sending without end
+      close(c);
+      return false;
+    }
+  }
+  if (c.stage == Connection::Stage::draining) close(c);  // it has closed after taking the answer: a clean end
+  return true;
+}
+
+void HttpServer::drain(Connection& c) {
+  // A close with input unread makes the kernel send a reset, which drops the answer's tail still queued
+  // for the client. So the sending side is shut (a FIN follows the answer) and the socket stays open for
+  // reading until the client closes, it sends over max_discard, or it stops taking the answer.
+  if (c.peer_closed) return close(c);  // all read already: a plain close ends cleanly
+  ::shutdown(c.fd, SHUT_WR);
+  c.stage = Connection::Stage::draining;
+  c.deadline = Clock::now() + stall_time;
+  if (::ioctl(c.fd, SIOCOUTQ, &c.unacked) != 0) c.unacked = 0;
+}
+
+bool HttpServer::still_taking(Connection& c) {
+  int unacked = 0;
+  if (c.stage != Connection::Stage::draining || ::ioctl(c.fd, SIOCOUTQ, &unacked) != 0) return false;
+  const bool taking = unacked > 0 && unacked < c.unacked;  // a slow client still reading the tail
+  c.unacked = unacked;
+  return taking;
+}
+
 std::vector<HttpServer::Incoming> HttpServer::step(const std::vector<pollfd>& p) {
   std::vector<Incoming> complete;
   for (Connection& c : open_) {
     if (c.fd < 0 || c.slot >= p.size() || p[c.slot].fd != c.fd || p[c.slot].revents == 0) continue;
-    if (c.stage == Connection::Stage::reading)
+    if (c.stage == Connection::Stage::reading) {
       read_request(c, complete);
-    else if (c.stage == Connection::Stage::writing)
-      write_answer(c);
+    } else if (c.stage == Connection::Stage::writing) {
+      if (discard_input(c)) write_answer(c);
+    } else if (c.stage == Connection::Stage::draining) {
+      discard_input(c);
+    }
   }
   if (listen_slot_ < p.size() && p[listen_slot_].fd == fd_ && (p[listen_slot_].revents & POLLIN)) accept_waiting();
   const auto now = Clock::now();
-  for (Connection& c : open_)
-    if (c.fd >= 0 && c.deadline <= now) close(c);  // a head not whole in time, or an answer not taken
+  for (Connection& c : open_)  // a head not whole in time, an answer not taken, a client not closing after it
+    if (c.fd >= 0 && c.deadline <= now) {
+      if (still_taking(c))
+        c.deadline = now + stall_time;
+      else
+        close(c);
+    }
   std::erase_if(open_, [](const Connection& c) { return c.fd < 0; });
   return complete;
 }

@@ -1,8 +1,9 @@
 // The studio's HTTP: a listening socket on 127.0.0.1 only, and one request per connection, answered and
-// closed. Small on purpose: one page, its state, its runs and the output folder's files, for one person's
-// browser on the same machine. Event-driven: every socket is non-blocking and the studio's one poll() waits
-// on all of them, so a client that sends slowly, reads slowly or does nothing holds up no other client and
-// never delays Ctrl-C; a file goes out piece by piece as its client takes it.
+// closed (anything the client sends after its request is read and dropped, within bounds, so the close
+// never resets the connection before the answer is through). Small on purpose: one page, its state, its runs and the
+// output folder's files, for one person's browser on the same machine. Event-driven: every socket is non-blocking and
+// the studio's one poll() waits on all of them, so a client that sends slowly, reads slowly or does nothing holds up no
+// other client and never delays Ctrl-C; a file goes out piece by piece as its client takes it.
 #pragma once
 
 #include <poll.h>
@@ -75,6 +76,10 @@ class HttpServer {
   void read_request(Connection& c, std::vector<Incoming>& complete);
   void start_writing(Connection& c);
   void write_answer(Connection& c);
+  // Reads and drops what the client sent after its request; false when that closed the connection.
+  bool discard_input(Connection& c);
+  void drain(Connection& c);         // the answer all queued: shut the sending side, read until the client closes
+  bool still_taking(Connection& c);  // draining, the client has taken more of the answer since the last look
   void close(Connection& c);
   int fd_ = -1, port_ = 0;
   std::size_t listen_slot_ = 0;
