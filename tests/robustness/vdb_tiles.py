@@ -69,6 +69,15 @@ def inside_out_sphere():
     return g
 
 
+def inside_inactive():
+    """An active tile of 8^3 voxels at -background beside an inactive one at -background (along +x): the
+    inside goes on into inactive values, as a level set's inside does. Not inside out: its active values
+    never cross to the outside, and negating them would truly invert it."""
+    g = cube(8)
+    g.fill((8, 0, 0), (15, 7, 7), -g.background, False)
+    return g
+
+
 def far_blobs(side):
     """Two cubes of tiles at index -2^29 and +2^29 (voxel 1), where single-precision positions are 64
     voxels apart: `side` 8 (level-1 tiles) or 4096 (root tiles: a file of a few hundred bytes)."""
@@ -88,6 +97,7 @@ files = {
     # Positive inside, negative outside; one root tile, so that the file is small.
     "inside_out.vdb": lambda: cube(4096, value=0.001, background=-0.001),
     "inside_out_sphere.vdb": inside_out_sphere,
+    "inside_inactive.vdb": inside_inactive,
     "far_blobs.vdb": lambda: far_blobs(4096),
     "far_small_blobs.vdb": lambda: far_blobs(8),
     # A root tile past index 2^30, its transform bringing it back around the world origin.

@@ -90,6 +90,12 @@ refused 'volume.vdb("tiles_root.vdb")' \
   --max-points 1e12
 # Grids wrong in a way the mesh would only show as crossings: said as what is wrong with the grid.
 refused 'volume.vdb("inside_out_sphere.vdb")' "cannot read 'inside_out_sphere.vdb': grid 'sphere' is inside out"
+# An active tile inside beside an inactive one inside: not inside out (negating it, as that message said,
+# would truly invert it). Its surface lies in inactive values, beyond the inactive tile, so its mesh is open.
+printf 'volume.vdb("inside_inactive.vdb")\n' >"$tmp/inactive.lua"
+run_selfsim run "$tmp/inactive.lua" -o "$tmp/out_inactive" -q
+check "inside going on into an inactive tile is not inside out: $(head -c 400 "$tmp/err")" \
+  sh -c '[ "$1" -le 1 ] && ! grep -q "inside out" "$2"' - "$code" "$tmp/err"
 refused 'load("far_small_blobs.vdb")' "cannot read 'far_small_blobs.vdb': grid 'cube' lies 536870919 voxels from the origin"
 
 if command -v Xvfb >/dev/null; then

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "kernels/geom/budget.h"
 #include "kernels/geom/check.h"
@@ -46,6 +47,35 @@ std::string float_text(double v) {
   return buf;
 }
 
+std::string coord_text(const openvdb::Coord& c) {
+  return "(" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " + std::to_string(c[2]) + ")";
+}
+
+// Walking inward from `from`, an outermost active voxel on `side` (0: the least x, 1: the greatest x, 2: the
+// least y, ...), through the active values in a line, the first that lies on the other side of the iso value
+// from the inside (0 for a level set, 0.5 for a fog volume): where the surface they hold is crossed. None
+// when the active values end first. A tile is crossed at once (a root tile is 4096 voxels across).
+std::optional<openvdb::Coord> crossing_inward(const openvdb::FloatGrid& grid, openvdb::Coord c, int side, bool fog) {
+  using Tree = openvdb::FloatTree;
+  using Upper = Tree::RootNodeType::ChildNodeType;
+  using Lower = Upper::ChildNodeType;
+  // The width, in log2 voxels, of what a value at each depth stands for: a root tile, a tile of each
+  // internal node, a voxel.
+  constexpr int log2_width[] = {Upper::TOTAL, Lower::TOTAL, Lower::ChildNodeType::TOTAL, 0};
+  const auto access = grid.getConstAccessor();
+  const int axis = side / 2, inward = side % 2 ? -1 : 1;
+  for (int steps = 0; steps < (1 << 16); ++steps) {  // far more than a grid within 2^30 of the origin has
+    const int depth = access.getValueDepth(c);
+    if (depth < 0 || depth > 3 || !access.isValueOn(c)) return std::nullopt;
+    const double v = access.getValue(c);
+    if (fog ? v <= 0.5 : v >= 0) return c;
+    const openvdb::Int32 width = openvdb::Int32(1) << log2_width[depth];
+    const openvdb::Int32 start = c[axis] & ~(width - 1);  // of the tile holding c
+    c[axis] = inward > 0 ? start + width : start - 1;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 void check_grid(const openvdb::FloatGrid& grid, bool fog) {
@@ -84,9 +114,6 @@ void check_grid(const openvdb::FloatGrid& grid, bool fog) {
       if (std::abs(w[k]) / voxel > world) world = std::abs(w[k]) / voxel, far_world = c;
     }
   }
-  const auto coord_text = [](const openvdb::Coord& c) {
-    return "(" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " + std::to_string(c[2]) + ")";
-  };
   if (!(world <= farthest_world_voxels)) {
     const openvdb::Vec3d w = grid.indexToWorld(far_world);
     throw Error(name + " lies " + count_text(std::round(world)) + " voxels from the origin (its voxel at index " +
@@ -99,20 +126,26 @@ void check_grid(const openvdb::FloatGrid& grid, bool fog) {
     throw Error(name + " reaches index " + coord_text(far_index) + ", beyond the " + count_text(farthest_index) +
                 " voxels from index (0, 0, 0) within which OpenVDB's integer coordinates do not overflow; move its "
                 "voxels nearer index (0, 0, 0) (its transform keeps where they lie) and save it again");
-  // Just beyond the outermost voxels is outside: a grid inside there is inside out (its values negated, its
-  // background left as it was), whatever its background says.
+  // Just beyond the outermost active values lies either outside or an inside that goes on in inactive
+  // values (an active tile beside an inactive one, both inside). It is outside, and the grid inside out
+  // (its values negated, its background left as it was), when the active values met walking inward from
+  // there cross to the other side: the surface they hold then faces the wrong way. Negating a grid whose
+  // active values never cross would truly invert it.
   const auto access = grid.getConstAccessor();
   for (int side = 0; side < 6; ++side) {
     openvdb::Coord beyond = outermost[side];
     beyond[side / 2] += side % 2 ? 1 : -1;
     const double value = access.getValue(beyond);
-    if (fog ? value > 0.5 : value < 0)
-      throw Error(name + " is inside out: just outside its active voxels it is " + float_text(value) + " (at index (" +
-                  std::to_string(beyond[0]) + ", " + std::to_string(beyond[1]) + ", " + std::to_string(beyond[2]) +
-                  ")), where " +
+    if (fog ? value > 0.5 : value < 0) {
+      const std::optional<openvdb::Coord> crossing = crossing_inward(grid, outermost[side], side, fog);
+      if (!crossing) continue;
+      throw Error(name + " is inside out: just outside its active voxels it is " + float_text(value) + " (at index " +
+                  coord_text(beyond) + "), and inward its active values cross to " +
+                  float_text(access.getValue(*crossing)) + " (at index " + coord_text(*crossing) + "), where " +
                   (fog ? "a fog volume is dense inside and empty outside; make it 0 outside"
                        : "a level set is negative inside and positive outside; negate its values") +
                   " and save it again");
+    }
   }
 }
 
