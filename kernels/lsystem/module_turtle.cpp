@@ -8,14 +8,17 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <string_view>
 #include <vector>
 
 #include "kernels/geom/budget.h"
+#include "kernels/geom/count_text.h"
 #include "kernels/geom/error.h"
 #include "kernels/geom/polygon_triangles.h"
 #include "kernels/geom/similarity3.h"
 #include "kernels/lsystem/compiled_grammar.h"
+#include "kernels/lsystem/module_count.h"
 #include "kernels/lsystem/module_headings.h"
 #include "kernels/lsystem/module_pipe.h"
 #include "kernels/lsystem/module_rewrite.h"
@@ -295,19 +298,34 @@ ModuleLimits limits_for(const Grammar& g, const TurtleOptions& opt) {
   return limits;
 }
 
+// A level whose size follows from its rules (module_count.h) is refused at once when it would make more
+// points than the budget leaves, or feed the turtle more modules than the work limit: not after drawing up
+// to the budget. Its steps are a lower bound on its points: each makes one (a corner inside a polygon).
+void refuse_predicted(const Grammar& g, const TurtleOptions& opt, const ModuleLimits& limits, Progress& progress) {
+  const std::optional<ModuleCounts> n = predict_module_counts(g, opt.level, limits.steps, true, progress);
+  if (!n) return;
+  const std::string what = "level " + std::to_string(opt.level);
+  check_budget(n->steps, opt.budget, what);
+  if (n->modules > limits.work)
+    throw BudgetError(what + " would rewrite more than " + count_text(limits.work) +
+                      " modules, over the limit (64 x --max-points)");
+}
+
 template <class V, class Heading>
 PolylineT<V> draw(const Grammar& g, const TurtleOptions& opt, Mesh* polygons, Progress& progress) {
   g.validate();
   opt.validate();
+  const ModuleLimits limits = limits_for(g, opt);
+  refuse_predicted(g, opt, limits, progress);
   PolylineT<V> out;
   out.point_fields.set(uniform_int("level", opt.level));
   progress.start("L-system");
   Turtle<V, Heading> turtle(g, opt, out, polygons);
   // With a second core, the derivation runs beside the turtle (the same modules, in the same order).
   if (tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) >= 2)
-    rewrite_modules_piped(g, opt.level, turtle, limits_for(g, opt), progress, true);
+    rewrite_modules_piped(g, opt.level, turtle, limits, progress, true);
   else
-    rewrite_modules(g, opt.level, turtle, limits_for(g, opt), progress, true);
+    rewrite_modules(g, opt.level, turtle, limits, progress, true);
   turtle.finish();
   progress.fraction(1);
   if (!out.finite() || (polygons != nullptr && !polygons->finite()))
@@ -341,6 +359,14 @@ Mesh module_polygons(const Grammar& g, const TurtleOptions& opt, Progress& progr
 }
 
 double module_segments(const Grammar& g, int level, double max_points, Progress& progress) {
+  // Without polygons every drawing module is a segment: a level whose size follows from its rules is
+  // counted from them, however long (as the byte kernel's count is).
+  if (!writes(g, [](std::uint8_t s) { return s == '{'; })) {
+    const Compiled c(g);
+    std::array<bool, 256> draws{};
+    for (int s = 0; s < 256; ++s) draws[s] = c.action[s] == Action::Draw;
+    if (const std::optional<ModuleCounts> n = predict_module_counts(g, level, draws, true, progress)) return n->steps;
+  }
   struct Counter : ModuleSink {
     Compiled c;
     double segments = 0;
