@@ -1,6 +1,7 @@
 #include "interpreter/param_spec.h"
 
 #include <cmath>
+#include <map>
 #include <set>
 #include <string_view>
 
@@ -188,6 +189,19 @@ void check_param_value(const ParamSpec& s, const std::string& text) {
     const std::string near = suggestion(text, s.choices);
     throw Error(set + "expected one of " + choices_text(s.choices) +
                 (near.empty() ? std::string() : " (did you mean '" + near + "'?)"));
+  }
+}
+
+void check_distinct_values(const ParamSpec& s, const std::string& set, const std::vector<std::string>& values) {
+  if (!is_number(s.type)) return;
+  std::map<long double, std::string> seen;  // long double: exact for every 64-bit integer and every double
+  for (const std::string& v : values) {
+    const auto whole = parse_text<long long>(v);
+    const long double x = whole ? static_cast<long double>(*whole) : *parse_text<double>(v);  // checked
+    const auto [at, fresh] = seen.emplace(x, v);
+    if (!fresh)
+      throw Error("--set " + set + ": '" + at->second + "' and '" + v + "' are the same " +
+                  (s.type == ParamSpec::Type::integer ? "integer" : "number") + ", listed twice");
   }
 }
 

@@ -37,6 +37,11 @@ ParamSpec read_param_spec(lua_State* L, const std::string& name, int def, int op
 // choices; throws Error naming the parameter and what it expects. Sweeps and the studio check with this.
 void check_param_value(const ParamSpec& spec, const std::string& text);
 
+// Refuses (Error naming `set`, "k=1,01") two of a sweep's values that the parameter reads as one: for a
+// number, the same number (1 and 01, 0 and -0); for an integer, the same integer (exact beyond 2^53). The
+// sweep's list refuses repeated text; only the parameter knows when different text is the same value.
+void check_distinct_values(const ParamSpec& spec, const std::string& set, const std::vector<std::string>& values);
+
 // The one conversion of a --set value into the recipe's value: checked as above, then pushed with the
 // parameter's type (an integer parameter always as a Lua integer).
 void push_param_value(lua_State* L, const ParamSpec& spec, const std::string& text);

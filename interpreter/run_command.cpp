@@ -101,6 +101,15 @@ std::string failure_message(lua_State* L, RunContext& run, int status) {
 // opens them in ParaView as they are meant to be seen.
 void write_view(const RunContext& run) {
   if (!run.config.view || run.view_datasets.empty()) return;
+  // A dataset view.py cannot name is said, not dropped silently; with none left there is no view to write.
+  std::size_t named = 0;
+  for (const io::ViewDataset& d : run.view_datasets)
+    if (io::view_can_name(d))
+      ++named;
+    else
+      std::fprintf(stderr, "selfsim: warning: view.py leaves out '%s': its name is not UTF-8 text\n",
+                   shown_text(d.file).c_str());
+  if (named == 0) return;
   try {
     const std::string written =
         io::write_paraview_view(run.view_datasets, run.config.out_dir, "view.py", run.config.view_folder);
@@ -213,7 +222,9 @@ void check_sweep_params(const RunConfig& sweep, const SweepPlan& plan) {
       throw Error("--set " + key + "=" + text + ": the recipe declares no parameter '" + key + "'" +
                   (near.empty() ? "" : " (did you mean '" + near + "'?)"));
     }
-    for (const std::string& value : sweep_values(key, text)) check_param_value(*spec, value);
+    const std::vector<std::string> values = sweep_values(key, text);
+    for (const std::string& value : values) check_param_value(*spec, value);
+    check_distinct_values(*spec, key + "=" + text, values);
   }
 }
 

@@ -18,7 +18,6 @@
 #include "kernels/geom/lower_case.h"
 #include "kernels/io/output_file.h"
 #include "kernels/io/series_file.h"
-#include "kernels/io/utf8.h"
 #include "kernels/io/xml_text.h"
 
 namespace selfsim::interp {
@@ -36,14 +35,9 @@ bool previewable(const std::string& ext) {
   return false;
 }
 
-// Text for the sheet's XML: control characters, and every byte above 127 of text that is not UTF-8,
-// become '?' (XML allows neither), then the markup characters are escaped.
-std::string svg_text(const std::string& text) {
-  const bool utf8 = io::valid_utf8(text);
-  std::string s;
-  for (unsigned char c : text) s += c < 0x20 || (c >= 0x80 && !utf8) ? '?' : static_cast<char>(c);
-  return io::xml_escaped(s);
-}
+// Text for the sheet's XML: each byte XML cannot hold (a control character, a byte of no UTF-8 character,
+// U+FFFE) shown as '?', then the markup characters escaped.
+std::string svg_text(const std::string& text) { return io::xml_escaped(io::xml_shown(text)); }
 
 // Columns of a sheet: one per value of the last key when two keys vary (a true grid), else about square.
 std::size_t sheet_columns(const SweepPlan& plan) {
@@ -231,6 +225,16 @@ int collect_sweep(const SweepConfig& c, const SweepPlan& plan, const std::vector
   for (const auto& [leaf, have] : outputs) {
     const std::string ext = lower_case(std::filesystem::path(leaf).extension().string());
     if (ext != ".vtp" && ext != ".vtu") continue;
+    // A .pvd names each step's file byte for byte (ParaView opens file= as a path, so no escape would do):
+    // a name XML cannot hold (not UTF-8, U+FFFE) gets no series, said once, rather than a file no XML
+    // parser reads. The sheet above still shows those runs (its links are URLs, escaped as such).
+    if (!io::xml_holds(leaf)) {
+      std::fprintf(stderr,
+                   "selfsim: warning: no ParaView series of '%s': a .pvd (XML) cannot name a file whose name is "
+                   "not UTF-8 text (or holds U+FFFE, U+FFFF); open each run's file\n",
+                   shown_text(leaf).c_str());
+      continue;
+    }
     std::vector<std::string> files;
     std::vector<double> times;
     for (std::size_t i = 0; i < n; ++i)

@@ -143,8 +143,11 @@ void check_sweep_folders(const SweepConfig& c, const SweepPlan& plan) {
   }
   for (const std::string* file : {&c.jobs_file, &c.slurm}) {
     if (file->empty()) continue;
-    const bool taken = *file == "sweep.json" || *file == "." || *file == ".." ||
-                       std::find(ours.begin(), ours.end(), *file) != ours.end() || file->starts_with("sheet_") ||
+    // One rule (sweep_reserved_name) for what the sweep writes or keeps, now or at --collect, applied to the
+    // name's first part in the output folder ("level=1/j.txt" would go where a run's folder is emptied).
+    const std::filesystem::path rel = std::filesystem::path(*file).lexically_normal();
+    const std::string first = rel.empty() ? std::string() : rel.begin()->string();
+    const bool taken = sweep_reserved_name(first) || std::find(ours.begin(), ours.end(), first) != ours.end() ||
                        (file == &c.jobs_file && (*file == c.slurm || *file == "collect-" + c.slurm)) ||
                        (file == &c.slurm && c.jobs_file.empty() && *file == "jobs.txt");
     if (taken) throw UsageError("'" + *file + "' is a name the sweep uses itself: give the job list another name");

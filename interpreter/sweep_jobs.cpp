@@ -33,6 +33,25 @@ std::vector<std::string> collect_arguments(const SweepConfig& c, const std::stri
   return a;
 }
 
+// The longest line of a job list. GNU parallel refuses a command line longer than the system allows less
+// the environment (`parallel --max-line-length-allowed`: 130329 on a Linux with a small environment, 63664
+// on a tester's, "Command line too long", exit 255, nothing run), and a Slurm task passes its line to
+// `bash -c` as one argument (Linux: at most 131072 bytes). Half the smaller, so a line written here runs
+// under either, with room for a larger environment on the machines that run it.
+constexpr std::size_t max_job_line = 32768;
+
+// The refusal of a job line over max_job_line, naming the run's longest --set value (what makes a line
+// long: paths are at most 4096 bytes).
+std::string too_long(std::size_t bytes, const SweepRun& run) {
+  std::string key, value;
+  for (const auto& [k, v] : run.sets)
+    if (k.size() + v.size() > key.size() + value.size()) key = k, value = v;
+  return "--set " + shown_text(key + "=" + value, 60) + ": the job line of run '" + shown_text(run.folder) +
+         "' would be " + std::to_string(bytes) + " bytes; at most " + std::to_string(max_job_line) +
+         " in a job list (GNU parallel and Slurm refuse longer lines): run the sweep here, without --jobs-file or "
+         "--slurm, or give the recipe the long text in a file";
+}
+
 // The job list and Slurm scripts, whole, before any is written.
 struct JobLists {
   std::string list, list_path, jobs;                     // the job list's name, path and text
@@ -61,8 +80,10 @@ JobLists job_lists(const SweepConfig& c, const SweepPlan& plan, const std::strin
     a.insert(a.begin(), exe);
     // The run's messages go to its log and its exit code beside them, which --collect reads.
     // As in a local sweep, the folder is the run's alone: an earlier sweep's files are removed first.
-    j.jobs += words({"rm", "-rf", dir}) + " && " + words({"mkdir", "-p", dir}) + " && " + words(a) + " >" +
-              words({dir + "/selfsim.log"}) + " 2>&1; echo $? >" + words({dir + "/selfsim.exit"}) + "\n";
+    const std::string line = words({"rm", "-rf", dir}) + " && " + words({"mkdir", "-p", dir}) + " && " + words(a) +
+                             " >" + words({dir + "/selfsim.log"}) + " 2>&1; echo $? >" + words({dir + "/selfsim.exit"});
+    if (line.size() > max_job_line) throw UsageError(too_long(line.size(), run));
+    j.jobs += line + "\n";
   }
   j.list = c.jobs_file.empty() ? "jobs.txt" : c.jobs_file;
   j.list_path = (out / j.list).string();

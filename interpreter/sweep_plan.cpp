@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <set>
 #include <string_view>
 
@@ -70,6 +71,35 @@ std::string folder_piece(const std::string& text) {
   return s;
 }
 
+// A whole number as written ("12", "-3", "1e12", "4.0"): exactly, as a long long when it reads as one,
+// else a double that is whole and inside the long long range (every such double is a whole long long).
+std::optional<long long> whole_number(const std::string& text) {
+  if (const auto w = parse_text<long long>(text)) return w;
+  const auto d = parse_text<double>(text);
+  if (!d || *d != std::floor(*d) || !(*d >= -0x1p63 && *d < 0x1p63)) return std::nullopt;
+  return static_cast<long long>(*d);
+}
+
+// A range whose ends and step are whole, counted in integers rather than stepped in doubles: exact where
+// doubles cannot tell 2^63 - 8 from 2^63 - 1, never wrapping at the largest integer, and each value
+// written whole (1e12 as 1000000000000, which an integer parameter takes; "%.12g" wrote 1e+12).
+std::vector<std::string> whole_values(const std::string& set, long long from, long long to, long long step,
+                                      const std::string& by) {
+  if (step <= 0) throw Error(set + "the step after ':' must be a number > 0, got '" + by + "'");
+  if (to < from)
+    throw Error(set + "the range runs down; write it from " + std::to_string(to) + " to " + std::to_string(from));
+  const unsigned long long span = static_cast<unsigned long long>(to) - static_cast<unsigned long long>(from);
+  const unsigned long long steps = span / static_cast<unsigned long long>(step);
+  if (steps >= max_sweep_runs)
+    throw Error(set + "that is " + count_text(static_cast<double>(steps) + 1) + " values; at most " +
+                std::to_string(max_sweep_runs));
+  std::vector<std::string> values;
+  for (unsigned long long i = 0; i <= steps; ++i)  // from + i * step <= to: no overflow in unsigned
+    values.push_back(std::to_string(
+        static_cast<long long>(static_cast<unsigned long long>(from) + i * static_cast<unsigned long long>(step))));
+  return values;
+}
+
 }  // namespace
 
 std::vector<std::string> sweep_values(const std::string& key, const std::string& text) {
@@ -84,21 +114,11 @@ std::vector<std::string> sweep_values(const std::string& key, const std::string&
     const auto a = parse_text<double>(from), b = parse_text<double>(to);
     if (a && b) {
       if (*b < *a) throw Error(set + "the range runs down; write it from " + to + " to " + from);
-      if (colon == std::string::npos) {
-        const auto wa = parse_text<long long>(from), wb = parse_text<long long>(to);
-        if (!wa || !wb) throw Error(set + "a range of fractions needs a step, e.g. " + from + ".." + to + ":0.1");
-        // In whole numbers (doubles cannot tell 2^63 - 8 from 2^63 - 1), counted rather than stepped to the
-        // end: an end at the largest integer must not wrap around.
-        if (*wb < *wa) throw Error(set + "the range runs down; write it from " + to + " to " + from);
-        const unsigned long long span = static_cast<unsigned long long>(*wb) - static_cast<unsigned long long>(*wa);
-        if (span >= max_sweep_runs)
-          throw Error(set + "that is " + count_text(static_cast<double>(span) + 1) + " values; at most " +
-                      std::to_string(max_sweep_runs));
-        std::vector<std::string> values;
-        for (unsigned long long i = 0; i <= span; ++i)
-          values.push_back(std::to_string(static_cast<long long>(static_cast<unsigned long long>(*wa) + i)));
-        return values;
-      }
+      const auto wa = whole_number(from), wb = whole_number(to);
+      const auto wstep = colon == std::string::npos ? std::optional<long long>(1) : whole_number(by);
+      if (colon == std::string::npos && !(wa && wb))
+        throw Error(set + "a range of fractions needs a step, e.g. " + from + ".." + to + ":0.1");
+      if (wa && wb && wstep) return whole_values(set, *wa, *wb, *wstep, by);
       const auto step = parse_text<double>(by);
       if (!step || !(*step > 0)) throw Error(set + "the step after ':' must be a number > 0, got '" + by + "'");
       // The end counts when the steps reach it to within rounding: 0.3..0.9:0.1 ends at 0.9.
@@ -142,6 +162,12 @@ std::string fitting_name(const std::string& prefix, const std::string& core, con
   char tail[16];
   std::snprintf(tail, sizeof tail, "~%08x", static_cast<unsigned>(hash));
   return prefix + core.substr(0, keep) + tail + suffix;
+}
+
+bool sweep_reserved_name(const std::string& name) {
+  for (const char* ours : {"sweep.json", "previews", "slurm", "view.py", "selfsim.log", "selfsim.exit", ".", ".."})
+    if (name == ours) return true;
+  return name.starts_with("sheet_") || name.ends_with("_sweep.pvd") || name.starts_with(".selfsim");
 }
 
 bool is_sweep(const std::map<std::string, std::string>& sets) {

@@ -62,10 +62,14 @@ std::string dataset_text(const ViewDataset& d) {
 
 }  // namespace
 
+bool view_can_name(const ViewDataset& d) {
+  return valid_utf8(d.file) && valid_utf8(d.name) && valid_utf8(d.colouring.field);
+}
+
 std::string paraview_view_text(std::span<const ViewDataset> datasets, const std::filesystem::path& folder) {
   std::string list;
   for (const ViewDataset& d : datasets)
-    if (valid_utf8(d.file) && valid_utf8(d.name) && valid_utf8(d.colouring.field)) list += dataset_text(d);
+    if (view_can_name(d)) list += dataset_text(d);
   const std::string where = valid_utf8(folder.string()) ? folder.string() : ".";
   return "# ParaView view written by selfsim. Open it with:  paraview --script=view.py\n"
          "# or render it without a window:                   pvbatch view.py --png view.png\n"

@@ -25,8 +25,12 @@ struct ViewDataset {
   Colouring colouring;
 };
 
+// Whether view.py can name the dataset: its file, name and field are UTF-8 text (Python reads its source
+// as UTF-8, and ParaView opens a path given as text).
+bool view_can_name(const ViewDataset& d);
+
 // The text of view.py for `datasets` in the folder `folder` (absolute: the GUI runs a script without
-// telling it where it is). Datasets whose names are not UTF-8 are left out (Python could not name them).
+// telling it where it is). Datasets view_can_name refuses are left out.
 std::string paraview_view_text(std::span<const ViewDataset> datasets, const std::filesystem::path& folder);
 
 // Writes it to root/name atomically and returns the path written.

@@ -60,6 +60,8 @@ SeriesName parse_name(const std::string& name) {
   if (name.find('\\') != std::string::npos)
     throw Error("'" + name + "': a series name cannot hold a backslash (ParaView reads it as a folder separator)");
   if (!valid_utf8(name)) throw Error("a series name must be UTF-8 text (ParaView's readers cannot name its steps)");
+  if (!xml_holds(name))
+    throw Error("a series name must hold no control character, U+FFFE or U+FFFF (no .pvd can name its steps)");
   if (n.stem.empty() || n.stem == "." || n.stem == "..")
     throw Error("'" + name + "': a series needs a name before its extension, such as 'growth.pvd'");
   return n;

@@ -137,6 +137,58 @@ series=(vw/"${b:0:236}"~????????_sweep.pvd)
 [ -f "${series[0]}" ] && [ "$(basename "${series[0]}" | wc -c)" = 256 ] || fail "long series name: $(ls vw)"
 grep -qF "file=\"n=1/$b.vtp\"" "${series[0]}" || fail "the long series names its runs' files"
 
+# Names a .pvd (XML) cannot give byte for byte (not UTF-8, U+FFFF) get no series, with one warning each, and
+# every XML file the sweep writes still parses; sweep.json is still JSON.
+printf 'local l = param("level", 1)\nlocal name = param("name", "a")\nsave(polyline({ { 0, 0 }, { l, 1 } }), name .. ".vtp")\n' >u.lua
+"$selfsim" sweep u.lua -o uw --set level=1,2 --set name=$'\xff\xfe',$'\xef\xbf\xbf',ok --no-sheet -q 2>err.txt ||
+  fail "a sweep of names XML cannot hold: $(cat err.txt)"
+[ "$(grep -c "warning: no ParaView series of" err.txt)" = 2 ] || fail "one warning per name: $(cat err.txt)"
+[ -f uw/ok_sweep.pvd ] && [ "$(find uw -maxdepth 1 -name '*_sweep.pvd' | wc -l)" = 1 ] || fail "series: $(ls uw)"
+"$selfsim" sweep u.lua -o uw --set level=1,2 --set name=$'\xff\xfe',$'\xef\xbf\xbf',ok --collect -q 2>/dev/null
+/usr/bin/python3 - uw <<'PY' || fail "a sweep's XML or JSON does not parse"
+import glob, json, sys, xml.dom.minidom
+files = glob.glob(sys.argv[1] + "/*.pvd") + glob.glob(sys.argv[1] + "/*.svg")
+assert len(files) == 4, files  # ok_sweep.pvd and three sheets
+for f in files:
+    xml.dom.minidom.parse(f)
+json.load(open(sys.argv[1] + "/sweep.json", "rb"))
+PY
+# A plain run: view.py says which dataset it leaves out, and with none left writes none.
+"$selfsim" run u.lua -o uv --set name=$'\xff' -q 2>err.txt || fail "a run saving a non-UTF-8 name"
+grep -qF "warning: view.py leaves out" err.txt || fail "view.py left a dataset out silently: $(cat err.txt)"
+[ -e uv/view.py ] && fail "a view.py naming no dataset"
+
+# A job list or Slurm script may not take a name the sweep writes or keeps, now or at --collect.
+for name in c_sweep.pvd .selfsim-lock view.py sheet_c.svg sweep.json previews selfsim.exit; do
+  "$selfsim" sweep d.lua -o jr --set level=2,3 --jobs-file "$name" >out.txt 2>err.txt
+  [ $? = 2 ] && grep -qF "'$name' is a name the sweep uses itself" err.txt || fail "--jobs-file $name: $(cat err.txt)"
+  "$selfsim" sweep d.lua -o jr --set level=2,3 --slurm "$name" >out.txt 2>err.txt
+  [ $? = 2 ] || fail "--slurm $name was taken"
+done
+[ -e jr ] && fail "a refused job list made its output folder"
+
+# Ranges whose ends and step are whole are counted in integers and written whole, exact near 2^63.
+printf 'local k = param("k", 3)\nlocal name = param("name", "a")\n' >i.lua
+for range in 0..4000000000000:1000000000000 0..4e12:1e12; do
+  "$selfsim" sweep i.lua -o iw --set k=$range --jobs-file j.txt -q 2>err.txt || fail "k=$range: $(cat err.txt)"
+  [ "$(grep -c -- "--set k=" iw/j.txt)" = 5 ] && grep -qF -- "--set k=4000000000000 " iw/j.txt ||
+    fail "k=$range: $(cut -c1-200 iw/j.txt)"
+done
+"$selfsim" sweep i.lua -o iw --set k=9223372036854775800..9223372036854775807:3 --jobs-file j.txt -q 2>err.txt ||
+  fail "a whole step near 2^63: $(cat err.txt)"
+[ "$(grep -o -- "--set k=[0-9]*" iw/j.txt | tr '\n' ' ')" = \
+  "--set k=9223372036854775800 --set k=9223372036854775803 --set k=9223372036854775806 " ] ||
+  fail "values near 2^63: $(grep -o -- "--set k=[0-9]*" iw/j.txt)"
+
+# A job line longer than a job list holds (32768 bytes: GNU parallel and Slurm refuse longer) is refused,
+# naming the value, before anything is written.
+long=$(head -c 40000 /dev/zero | tr '\0' x)
+"$selfsim" sweep i.lua -o lj --set k=1,2 --set "name=$long" --jobs-file j.txt >out.txt 2>err.txt
+[ $? = 2 ] || fail "a 40 KB job line should be refused"
+grep -qF "selfsim: --set name=xxxx" err.txt && grep -qF "at most 32768 in a job list" err.txt ||
+  fail "long job line message: $(cut -c1-300 err.txt)"
+[ -e lj ] && fail "a refused job list made its output folder"
+
 # --no-sheet is sweep's: run says the command that takes it; sweep writes no sheet with it.
 "$selfsim" run f.lua -o ns --set n=1,3 --no-sheet >out.txt 2>err.txt
 [ $? = 2 ] || fail "run --no-sheet should be a usage error"

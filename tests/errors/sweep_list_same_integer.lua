@@ -1,0 +1,3 @@
+-- args: --set k=1,01
+-- exit: 2
+local k = param("k", 3)
