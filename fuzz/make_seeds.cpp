@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
   files.push_back(
       {"branches", seed_curve("F", "F[+F]F[-F]", 30, 1, false), {.stroke = {"black"}, .fill = {"#a8dadc"}}});
   files.push_back(
-      {"square", Polyline::single({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}}, 0), {.stroke_width = {2}, .size = 64}});
+      {"square", Polyline::single({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}}), {.stroke_width = {2}, .size = 64}});
   for (const char* ext : {".vtp", ".svg"}) {
     const fs::path sub = dir / (ext + 1);
     fs::create_directories(sub);
