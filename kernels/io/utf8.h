@@ -1,6 +1,6 @@
 // UTF-8 text: whether it is well-formed (the names written into files other programs parse as UTF-8,
-// ParaView's series files and the Python of view.py, must be), and how many characters it shows as (a
-// caret under a fault in a message goes under the character, not the byte).
+// ParaView's series files and the Python of view.py, must be), and how many characters it holds (the column
+// a message names, as an editor counts it; how wide they show, for a caret, is text_width.h's).
 #pragma once
 
 #include <algorithm>
@@ -50,8 +50,8 @@ inline bool valid_utf8(const std::string& s) {
   return true;
 }
 
-// The characters text shows as: one per UTF-8 character, one per byte that is not UTF-8 (a terminal shows
-// it as one replacement character).
+// The characters text holds: one per UTF-8 character, one per byte that is not UTF-8 (a terminal shows it
+// as one replacement character).
 inline std::size_t shown_characters(std::string_view s) {
   std::size_t count = 0;
   for (std::size_t i = 0; i < s.size(); ++count) i += std::max<std::size_t>(utf8_length(s, i), 1);

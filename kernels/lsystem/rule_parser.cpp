@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <set>
 
+#include "kernels/io/text_width.h"
 #include "kernels/io/utf8.h"
 
 namespace selfsim::lsystem {
@@ -26,9 +27,13 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
+// A module's byte in a message, escaped as the caret line shows it ("\x7f", not "\127" beside "\x7f").
 std::string shown(char c) {
   const auto u = static_cast<unsigned char>(c);
-  return u >= 33 && u < 127 ? std::string(1, c) : "\\" + std::to_string(u);
+  if (u >= 33 && u < 127) return std::string(1, c);
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "\\x%02x", u);
+  return buf;
 }
 
 // Column of `part` (a view into `whole`) in `whole`.
@@ -266,10 +271,12 @@ std::size_t shown_column(std::string_view text, std::size_t column) {
 }
 
 std::string caret_lines(std::string_view text, std::size_t column) {
-  // The text as a terminal shows it, piece by piece: a character (UTF-8, or a byte that is not) takes one
-  // column, a blank shows as a space, another control byte as the message's lines escape it (4 columns).
-  // The caret goes under the piece that holds the byte at `column`: a '«' before the fault moves it one
-  // column, as it moves the fault, not two.
+  // The text as a terminal shows it, piece by piece: a character in its display width (io::text_width.h:
+  // 2 for a wide one, 0 for a combining mark), a byte that is not UTF-8 in 1 (a replacement character), a
+  // blank as a space, a control or format character escaped as Lua writes it ("\x7f", "\u{202e}") in the
+  // columns of its escape: shown as itself it would move, hide or reorder what follows. The caret goes under
+  // the piece that holds the byte at `column`: a '«' before the fault moves it one column, as it moves the
+  // fault, not two.
   struct Piece {
     std::string shown;
     std::size_t columns;
@@ -277,17 +284,16 @@ std::string caret_lines(std::string_view text, std::size_t column) {
   std::vector<Piece> pieces;
   std::size_t at = npos;  // the piece holding byte `column`
   for (std::size_t i = 0; i < text.size();) {
-    const auto c = static_cast<unsigned char>(text[i]);
-    const std::size_t n = std::max<std::size_t>(io::utf8_length(text, i), 1);
+    const std::size_t length = io::utf8_length(text, i), n = std::max<std::size_t>(length, 1);
     if (at == npos && column < i + n) at = pieces.size();
+    const char32_t c = length == 0 ? 0xfffd : io::utf8_code_point(text, i, n);
     if (blank(text[i])) {
       pieces.push_back({" ", 1});
-    } else if (c < 32 || c == 127) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\x%02x", c);
-      pieces.push_back({buf, 4});
+    } else if (io::shown_escaped(c)) {
+      const std::string e = io::escaped_character(c);
+      pieces.push_back({e, e.size()});
     } else {
-      pieces.push_back({std::string(text.substr(i, n)), 1});
+      pieces.push_back({std::string(text.substr(i, n)), static_cast<std::size_t>(io::display_columns(c))});
     }
     i += n;
   }

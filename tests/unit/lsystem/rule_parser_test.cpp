@@ -125,3 +125,30 @@ TEST(RuleParser, CaretCountsCharactersNotBytes) {
   EXPECT_EQ(caret_lines("\xff F(", 4), "  \xff F(\n      ^");
   EXPECT_EQ(shown_column("\xff F(", 4), 4u);
 }
+
+// The caret is placed by the columns a terminal gives each character, not by characters: a wide one takes
+// 2 (the caret sat 3 columns left of the '(' after 日本語), a combining mark and none (it sat one right after
+// e + U+0301). Characters that a terminal acts on or hides show escaped, as Lua writes them, in the columns of
+// the escape: U+200B (which shifted the caret by 1), U+202E (printed raw, it reversed what followed).
+TEST(RuleParser, CaretCountsDisplayColumns) {
+  EXPECT_EQ(caret_lines("A -> \u65e5\u672c\u8a9eF(", 15), "  A -> \u65e5\u672c\u8a9eF(\n" + std::string(14, ' ') + "^");
+  EXPECT_EQ(caret_lines("A -> \uff26(", 8), "  A -> \uff26(\n" + std::string(9, ' ') + "^");              // fullwidth F
+  EXPECT_EQ(caret_lines("A -> \U0001f333F(", 10), "  A -> \U0001f333F(\n" + std::string(10, ' ') + "^");  // emoji
+  EXPECT_EQ(caret_lines("A -> e\u0301F(", 9), "  A -> e\u0301F(\n" + std::string(9, ' ') + "^");
+  EXPECT_EQ(caret_lines("A -> \u200bF(", 9), "  A -> \\u{200b}F(\n" + std::string(16, ' ') + "^");
+  EXPECT_EQ(caret_lines("A -> \u202eabF(", 10), "  A -> \\u{202e}abF(\n" + std::string(17, ' ') + "^");
+  EXPECT_EQ(caret_lines("A -> \u2067F(", 9), "  A -> \\u{2067}F(\n" + std::string(16, ' ') + "^");
+  EXPECT_EQ(caret_lines("A -> \u0085F(", 8), "  A -> \\u{85}F(\n" + std::string(14, ' ') + "^");  // a C1 control
+}
+
+// DEL and other bytes a module may be are named in the message as the rule line shows them: "\x7f" in both
+// (the message said "\127").
+TEST(RuleParser, ControlBytesAreNamedAsTheCaretLineShowsThem) {
+  try {
+    parse_rule("A -> \x7f(", "rule 1");
+    FAIL() << "parsed";
+  } catch (const RuleError& e) {
+    EXPECT_EQ(std::string(e.what()), "missing ')' for the parameters of \\x7f");
+    EXPECT_EQ(caret_lines("A -> \x7f(", e.column), "  A -> \\x7f(\n" + std::string(11, ' ') + "^");
+  }
+}
