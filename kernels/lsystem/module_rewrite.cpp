@@ -13,6 +13,7 @@
 #include "kernels/lsystem/cut.h"
 #include "kernels/lsystem/derivation_frame.h"
 #include "kernels/lsystem/expansion_count.h"
+#include "kernels/lsystem/polled_growth.h"
 #include "kernels/lsystem/rule_index.h"
 #include "kernels/lsystem/rule_scope.h"
 
@@ -130,7 +131,7 @@ class Deriver {
         if (const Production* p = match(cur, near, i, k))
           apply(*p, lineage_of(cur, i), k, out, streamed ? nullptr : &cut);
         else if (streamed || cut.keep(cur.symbols[i]))
-          out.push(cur.symbols[i], cur.args_of(i), stochastic_ ? &cur.lineage[i] : nullptr);
+          push(out, cur.symbols[i], cur.args_of(i), stochastic_ ? &cur.lineage[i] : nullptr);
         if (streamed)
           for (std::size_t j = 0; j < last.size(); ++j)
             if (cut.keep(last.symbols[j])) emit(last.symbols[j], last.args_of(j), lineage_of(last, j), level, 0, sink);
@@ -244,7 +245,7 @@ class Deriver {
     if (out.size() % 1024 == 0 && held_points(out) > limits_.held)
       throw BudgetError("level " + std::to_string(level) + ": one successor's decomposition would take more than " +
                         count_text(limits_.held) + " points' worth of memory, over the limit");
-    out.push(symbol, args, stochastic_ ? &lineage : nullptr);
+    push(out, symbol, args, stochastic_ ? &lineage : nullptr);
   }
 
   // Feeds a module of the level to the sink, replaced first by its interpretation (recursively, to
@@ -267,6 +268,13 @@ class Deriver {
       }
     }
     sink.module(symbol, args);
+  }
+
+  // Appends a module to a held string, growing it in pieces that look for a stop (polled_growth.h).
+  void push(ModuleString& out, std::uint8_t symbol, std::span<const double> args, const std::uint64_t* lineage) {
+    if (out.symbols.size() == out.symbols.capacity() || out.args.size() + args.size() > out.args.capacity())
+      make_room(out, args.size(), lineage != nullptr, progress_);
+    out.push(symbol, args, lineage);
   }
 
   // Counts modules written; a decomposition or interpretation that keeps writing is stopped here.

@@ -22,6 +22,7 @@
 #include "kernels/lsystem/module_headings.h"
 #include "kernels/lsystem/module_pipe.h"
 #include "kernels/lsystem/module_rewrite.h"
+#include "kernels/lsystem/polled_growth.h"
 #include "kernels/lsystem/turtle_frame3.h"
 
 namespace selfsim::lsystem {
@@ -52,12 +53,13 @@ bool writes(const Grammar& g, F wanted) {
 template <class V, class Heading>
 class Turtle final : public ModuleSink {
  public:
-  Turtle(const Grammar& g, const TurtleOptions& opt, PolylineT<V>& out, Mesh* polygons)
+  Turtle(const Grammar& g, const TurtleOptions& opt, PolylineT<V>& out, Mesh* polygons, Progress& progress)
       : g_(g),
         c_(g),
         opt_(opt),
         out_(out),
         polygons_(polygons),
+        progress_(progress),
         tree_(writes(g, [](std::uint8_t s) { return s == '['; })),
         style_(writes(g, [](std::uint8_t s) { return s == '!' || s == '\''; })),
         heading_(g.start_angle(opt.level), &directions_) {
@@ -149,15 +151,14 @@ class Turtle final : public ModuleSink {
     double scale = 1;
     if constexpr (std::is_same_v<V, Vec2>) {
       const Similarity2 place = turtle_placement(g_, opt_, pos_, steps);
-      for (Vec2& p : out_.points) p = place(p);
+      place_all(out_.points, place);
       scale = norm(place.a);
     } else {
       const bool closed = norm(pos_) <= 1e-9 * steps;
       const Similarity3 place = opt_.normalize && !closed ? Similarity3::to_unit({}, pos_)
                                                           : Similarity3::scaling(std::pow(g_.shrink, opt_.level));
-      for (Vec3& p : out_.points) p = place(p);
-      if (polygons_ != nullptr)
-        for (Vec3& p : polygons_->points) p = place(p);
+      place_all(out_.points, place);
+      if (polygons_ != nullptr) place_all(polygons_->points, place);
       scale = place.scale();
     }
     if (tree_) {
@@ -177,6 +178,30 @@ class Turtle final : public ModuleSink {
   }
 
  private:
+  template <class Points, class Place>
+  void place_all(Points& points, const Place& place) {
+    in_pieces(points.size(), progress_, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) points[i] = place(points[i]);
+    });
+  }
+
+  // The most points the budget lets the curve (or the polygons) hold: no array grows past it.
+  std::size_t most_points() const { return static_cast<std::size_t>(std::clamp(opt_.budget.left(), 0.0, 1e15)) + 1; }
+
+  // Room for one more point in every per-point array, grown together and looking for a stop as they grow.
+  void make_room_for_point() {
+    grow_polled(out_.points, out_.points.size() + 1, most_points(), progress_);
+    const std::size_t n = out_.points.capacity();
+    if (tree_) {
+      grow_polled(depth_, n, n, progress_);
+      grow_polled(root_distance_, n, n, progress_);
+    }
+    if (style_) {
+      grow_polled(widths_, n, n, progress_);
+      grow_polled(colors_, n, n, progress_);
+    }
+  }
+
   struct State {
     V pos;
     Heading heading;
@@ -236,6 +261,11 @@ class Turtle final : public ModuleSink {
       throw Error("level " + std::to_string(opt_.level) + ": polygon " +
                   std::to_string(polygon_ids_.empty() ? 1 : polygon_ids_.back() + 2) + ": " + e.what());
     }
+    const std::size_t faces = polygons_->triangles.size() + triangles_.size() - first;
+    grow_polled(polygons_->points, polygons_->points.size() + corners.size(), most_points(), progress_);
+    grow_polled(polygons_->triangles, faces, most_points(), progress_);
+    grow_polled(polygon_ids_, faces, most_points(), progress_);
+    grow_polled(polygon_colors_, faces, most_points(), progress_);
     const auto base = static_cast<std::uint32_t>(polygons_->points.size());
     polygons_->points.insert(polygons_->points.end(), corners.begin(), corners.end());
     const std::int32_t id = polygon_count_++;
@@ -255,8 +285,7 @@ class Turtle final : public ModuleSink {
 
   void add_point() {
     count_point();
-    if (out_.points.size() == out_.points.capacity())
-      out_.points.reserve(std::max<std::size_t>(1024, 2 * out_.points.size()));
+    if (out_.points.size() == out_.points.capacity()) make_room_for_point();
     out_.points.push_back(pos_);
     if (tree_) {
       depth_.push_back(static_cast<std::int32_t>(saved_.size()));
@@ -274,6 +303,7 @@ class Turtle final : public ModuleSink {
   const TurtleOptions& opt_;
   PolylineT<V>& out_;
   Mesh* polygons_;
+  Progress& progress_;
   bool tree_, style_;
   Heading heading_;
   bool path_open_ = false;
@@ -320,7 +350,7 @@ PolylineT<V> draw(const Grammar& g, const TurtleOptions& opt, Mesh* polygons, Pr
   PolylineT<V> out;
   out.point_fields.set(uniform_int("level", opt.level));
   progress.start("L-system");
-  Turtle<V, Heading> turtle(g, opt, out, polygons);
+  Turtle<V, Heading> turtle(g, opt, out, polygons, progress);
   // With a second core, the derivation runs beside the turtle (the same modules, in the same order).
   if (tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) >= 2)
     rewrite_modules_piped(g, opt.level, turtle, limits, progress, true);
