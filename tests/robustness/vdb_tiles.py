@@ -78,6 +78,20 @@ def inside_inactive():
     return g
 
 
+def inside_inactive_voxels():
+    """The same in a leaf's voxels: 4^3 active voxels at -background, beyond them along +x 2 x 4 x 4
+    inactive ones at -background (voxel 1/4). OpenVDB meshes a leaf's inactive values too: a closed box."""
+    g = cube(8)
+    bg = g.background
+    g.clear()
+    access = g.getAccessor()
+    for x in range(6):
+        for y in range(4):
+            for z in range(4):
+                access.setValueOn((x, y, z), -bg) if x < 4 else access.setValueOff((x, y, z), -bg)
+    return g
+
+
 def far_blobs(side):
     """Two cubes of tiles at index -2^29 and +2^29 (voxel 1), where single-precision positions are 64
     voxels apart: `side` 8 (level-1 tiles) or 4096 (root tiles: a file of a few hundred bytes)."""
@@ -98,6 +112,7 @@ files = {
     "inside_out.vdb": lambda: cube(4096, value=0.001, background=-0.001),
     "inside_out_sphere.vdb": inside_out_sphere,
     "inside_inactive.vdb": inside_inactive,
+    "inside_inactive_voxels.vdb": inside_inactive_voxels,
     "far_blobs.vdb": lambda: far_blobs(4096),
     "far_small_blobs.vdb": lambda: far_blobs(8),
     # A root tile past index 2^30, its transform bringing it back around the world origin.

@@ -3,7 +3,8 @@
 # by tiles of a level-1 internal node (8^3 voxels each) and by one tile of a level-2 node (128^3), both
 # kinds beside a leaf's voxels in one grid, and a sphere filled with 64 active tiles, read by volume.vdb, load, info and preview as their surfaces and
 # voxels; a root tile (2^36 voxels) refused by the budget before anything is meshed or voxelised; grids
-# inside out or far from the origin refused saying so. Skips (77) without python3-openvdb.
+# inside out or far from the origin refused saying so, an inside going on into inactive values not called
+# inside out. Skips (77) without python3-openvdb.
 # usage: vdb_tiles.sh SELFSIM SOURCE_DIR
 selfsim=$1 src=$2
 source "$(dirname "$0")/lib.sh"
@@ -96,6 +97,10 @@ printf 'volume.vdb("inside_inactive.vdb")\n' >"$tmp/inactive.lua"
 run_selfsim run "$tmp/inactive.lua" -o "$tmp/out_inactive" -q
 check "inside going on into an inactive tile is not inside out: $(head -c 400 "$tmp/err")" \
   sh -c '[ "$1" -le 1 ] && ! grep -q "inside out" "$2"' - "$code" "$tmp/err"
+# The same in a leaf's voxels, which OpenVDB meshes inactive or not: read as the closed box it is.
+echo 'local m = load("inside_inactive_voxels.vdb") assert(m:points() > 8)' >"$tmp/inactive_voxels.lua"
+run_selfsim run "$tmp/inactive_voxels.lua" -o "$tmp/out_inactive_voxels" -q
+check "inside going on into inactive voxels is read (exit $code: $(head -c 400 "$tmp/err"))" [ "$code" = 0 ]
 refused 'load("far_small_blobs.vdb")' "cannot read 'far_small_blobs.vdb': grid 'cube' lies 536870919 voxels from the origin"
 
 if command -v Xvfb >/dev/null; then
