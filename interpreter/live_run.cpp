@@ -102,6 +102,7 @@ void LiveRun::start(const std::map<std::string, std::string>& sets) {
   std::vector<std::string> args = run_arguments(base_, one, staging_, base_.threads);
   // view.py names the output folder, where its files end up.
   args.insert(args.end() - 1, {"--view-folder", std::filesystem::absolute(base_.out_dir).lexically_normal().string()});
+  args.insert(args.end() - 1, "--confined-output");  // a link planted where staging_ was made is refused
   started_ = std::chrono::steady_clock::now();
   pid_ = spawn_selfsim(exe_, args, base_.out_dir, capture_ ? log_name : "");
   pidfd_ = static_cast<int>(::syscall(SYS_pidfd_open, pid_, 0));

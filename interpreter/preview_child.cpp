@@ -1,5 +1,7 @@
 #include "interpreter/preview_child.h"
 
+#include <poll.h>
+#include <pthread.h>
 #include <signal.h>
 #include <sys/syscall.h>
 #include <sys/wait.h>
@@ -47,16 +49,30 @@ bool PreviewChild::finished(int& code) {
 
 int PreviewChild::wait() {
   if (pid_ <= 0) return 0;
+  // A stop signal that came before this wait began has set `interrupted` and will bring no EINTR: so the
+  // signals are blocked, the flag read, and the wait is a ppoll that unblocks them only while it sleeps (one
+  // pending is delivered at once, ending it with EINTR). No signal can fall between the check and the wait.
+  sigset_t stops, before;
+  sigemptyset(&stops);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&stops, sig);
+  ::pthread_sigmask(SIG_BLOCK, &stops, &before);
+  while (!interrupted.load() && pidfd_ >= 0) {
+    pollfd p{pidfd_, POLLIN, 0};
+    const int r = ::ppoll(&p, 1, nullptr, &before);
+    if (r > 0 || (r < 0 && errno != EINTR)) break;  // ended (or no waiting possible: waitpid below)
+  }
+  ::pthread_sigmask(SIG_SETMASK, &before, nullptr);
+  if (interrupted.load()) {  // SIGCONT: a stopped child would hold SIGTERM
+    ::kill(pid_, SIGTERM);
+    ::kill(pid_, SIGCONT);
+  }
   int status = 0;
-  bool told = false;
-  while (::waitpid(pid_, &status, 0) < 0) {
-    if (errno != EINTR) break;
-    if (interrupted.load() && !told) {
+  // Without a pidfd (an old kernel) this is the wait: a signal now still ends it by EINTR, the flag read after.
+  while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR)
+    if (interrupted.load()) {
       ::kill(pid_, SIGTERM);
       ::kill(pid_, SIGCONT);
-      told = true;
     }
-  }
   reaped();
   return exit_code(status);
 }

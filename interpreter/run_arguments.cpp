@@ -11,6 +11,7 @@
 #include "interpreter/parse_text.h"
 #include "interpreter/sweep.h"
 #include "kernels/geom/count_text.h"
+#include "kernels/io/output_file.h"
 
 namespace selfsim::interp {
 
@@ -88,6 +89,11 @@ RunConfig parse_run_arguments(const std::vector<std::string>& args) {
       c.view = false;
     else if (a == "--watch")
       c.watch = true;
+    else if (a == "--confined-output")
+      // Internal, given by a sweep and the studio to a run whose -o is the folder they made for it: the
+      // writer opens that folder refusing a link at its last component too (io::confine_output_root), so a
+      // link planted there after they made it is not written through. Process-wide: the child is this run.
+      io::confine_output_root();
     else if (a == "--view-folder") {
       c.view_folder = value();
       if (c.view_folder.empty()) throw UsageError("--view-folder expects a folder name, got ''");

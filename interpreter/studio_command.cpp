@@ -21,6 +21,7 @@
 #include "interpreter/live_run.h"
 #include "interpreter/lua_support.h"
 #include "interpreter/preview_child.h"
+#include "interpreter/sweep_plan.h"
 #include "kernels/geom/lower_case.h"
 #include "kernels/io/json_text.h"
 #include "kernels/io/output_file.h"
@@ -32,6 +33,12 @@ namespace {
 extern "C" void on_studio_signal(int) { interrupted.store(true); }
 
 const char* const previews_folder = ".studio";
+
+// The preview of the output `f` in .studio/: f.png, shortened as a sweep's names are when that would pass the
+// 255-byte limit on a name (an output may use all 255 bytes itself).
+std::string preview_png(const std::string& f) {
+  return std::string(previews_folder) + "/" + fitting_name("", f, ".png");
+}
 
 bool previewable(const std::string& leaf) {
   const std::string ext = lower_case(std::filesystem::path(leaf).extension().string());
@@ -85,9 +92,8 @@ struct Studio {
       std::string image = "null";
       if (lower_case(std::filesystem::path(f).extension().string()) == ".svg")
         image = io::json_string("/out/" + url_path(f) + "?g=" + std::to_string(shown_generation));
-      else if (std::filesystem::is_regular_file(base.out_dir / previews_folder / (f + ".png"), ec))
-        image = io::json_string("/out/" + std::string(previews_folder) + "/" + url_path(f) +
-                                ".png?g=" + std::to_string(shown_generation));
+      else if (std::filesystem::is_regular_file(base.out_dir / preview_png(f), ec))
+        image = io::json_string("/out/" + url_path(preview_png(f)) + "?g=" + std::to_string(shown_generation));
       list += std::string(list.empty() ? "" : ", ") + "{\"name\": " + io::json_string(f) +
               ", \"url\": " + io::json_string("/out/" + url_path(f)) + ", \"image\": " + image + "}";
     }
@@ -249,7 +255,7 @@ int studio_command(const RunConfig& config, int port) {
         for (const std::string& f : r.files)
           if (previewable(f) && !svgs.contains(std::filesystem::path(f).stem().string())) {
             files.push_back((config.out_dir / f).string());
-            names.push_back(std::string(previews_folder) + "/" + f + ".png");
+            names.push_back(preview_png(f));
           }
         try {
           if (!files.empty()) drawing = std::make_unique<PreviewChild>(config, config.out_dir, files, names);

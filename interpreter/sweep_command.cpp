@@ -91,8 +91,10 @@ std::vector<int> run_all(const SweepConfig& c, const SweepPlan& plan, int jobs) 
       // The folder is the run's alone: what an earlier sweep left there must not reach this one's sheets.
       std::filesystem::remove_all(out / run.folder);
       io::make_folder(out, run.folder);  // confined: a link planted meanwhile is refused, not followed
-      const pid_t pid = spawn_selfsim(exe, run_arguments(each, run, out / run.folder, threads), out,
-                                      std::filesystem::path(run.folder) / "selfsim.log");
+      // The child opens its -o refusing a link there too: one planted after make_folder is not written through.
+      std::vector<std::string> args = run_arguments(each, run, out / run.folder, threads);
+      args.insert(args.end() - 1, "--confined-output");
+      const pid_t pid = spawn_selfsim(exe, args, out, std::filesystem::path(run.folder) / "selfsim.log");
       live[pid] = {next++, std::chrono::steady_clock::now()};
     }
     if (live.empty()) break;
@@ -111,7 +113,11 @@ std::vector<int> run_all(const SweepConfig& c, const SweepPlan& plan, int jobs) 
     const int code = exit_code(status);
     codes[child.index] = code;
     ++done;
-    io::write_whole(out / run.folder, "selfsim.exit", std::to_string(code) + "\n");
+    try {  // below `out`, the run folder opened as any folder on the way (never through a link)
+      io::write_whole(out, run.folder + "/selfsim.exit", std::to_string(code) + "\n");
+    } catch (const Error& e) {
+      std::fprintf(stderr, "selfsim: %s\n", e.what());
+    }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - child.started).count();
     if (code == 0) {
       if (!c.run.quiet) std::printf("[%zu/%zu] %s: ok (%.2f s)\n", done, n, shown_text(run.caption).c_str(), seconds);

@@ -45,14 +45,53 @@ std::string temporary_name(const std::string& leaf) {
 
 }  // namespace
 
+namespace {
+
+std::atomic<bool> root_link_refused{false};  // confine_output_root()
+
+// The output folder opened (and made when missing). Under confine_output_root() its last component is made
+// and opened by openat without following a link, so a link planted there after the parent's check is refused.
+int open_root(const std::filesystem::path& root) {
+  std::error_code ec;
+  if (!root_link_refused.load()) {
+    std::filesystem::create_directories(root, ec);
+    const int dir = ::open(root.c_str(), O_DIRECTORY | O_RDONLY | O_CLOEXEC);
+    if (dir < 0)
+      throw Error("cannot open the output folder '" + root.string() + "': " + (ec ? ec.message() : system_error()));
+    return dir;
+  }
+  std::filesystem::path r = root.lexically_normal();
+  while (!r.has_filename() && r.has_parent_path() && r.parent_path() != r) r = r.parent_path();  // "out/x/"
+  const std::filesystem::path up = r.has_parent_path() ? r.parent_path() : std::filesystem::path(".");
+  std::filesystem::create_directories(up, ec);
+  const int parent = ::open(up.c_str(), O_DIRECTORY | O_RDONLY | O_CLOEXEC);
+  if (parent < 0) throw Error("cannot open the output folder '" + up.string() + "': " + system_error());
+  const std::string leaf = r.filename().string();
+  if (::mkdirat(parent, leaf.c_str(), 0777) != 0 && errno != EEXIST) {
+    const std::string why = system_error();
+    ::close(parent);
+    throw Error("cannot create the output folder '" + root.string() + "': " + why);
+  }
+  const int dir = ::openat(parent, leaf.c_str(), O_DIRECTORY | O_NOFOLLOW | O_RDONLY | O_CLOEXEC);
+  const int err = errno;
+  ::close(parent);
+  if (dir < 0) {
+    if (err == ELOOP || err == ENOTDIR)
+      throw Error("'" + root.string() +
+                  "' is a symbolic link or not a folder: selfsim writes only inside the output folder");
+    throw Error("cannot open the output folder '" + root.string() + "': " + std::strerror(err));
+  }
+  return dir;
+}
+
+}  // namespace
+
+void confine_output_root(bool refuse) { root_link_refused.store(refuse); }
+
 // Opens root/folder for writing, creating the folders on the way one by one and never following a link
 // below root.
 static int open_folder(const std::filesystem::path& root, const std::filesystem::path& folder) {
-  std::error_code ec;
-  std::filesystem::create_directories(root, ec);
-  int dir = ::open(root.c_str(), O_DIRECTORY | O_RDONLY | O_CLOEXEC);
-  if (dir < 0)
-    throw Error("cannot open the output folder '" + root.string() + "': " + (ec ? ec.message() : system_error()));
+  int dir = open_root(root);
   std::filesystem::path walked = root;
   for (const auto& part : folder) {
     walked /= part;
@@ -244,7 +283,11 @@ void move_file(const std::filesystem::path& root, const std::filesystem::path& f
 }
 
 void make_folder(const std::filesystem::path& root, const std::filesystem::path& folder) {
-  ::close(open_folder(root, folder.lexically_normal()));
+  // The same rule as every name below root: relative, never climbing out ("" or "." is root itself).
+  const std::filesystem::path n = folder.lexically_normal();
+  if (folder.native().find('\0') != std::string::npos || n.is_absolute() || (!n.empty() && *n.begin() == ".."))
+    throw Error("path '" + folder.string() + "' is outside the output folder");
+  ::close(open_folder(root, n));
 }
 
 int open_log(const std::filesystem::path& root, const std::filesystem::path& name) {

@@ -2,7 +2,7 @@
 //
 // Confinement: the folders on the way are created and opened one by one relative to the output folder,
 // never following a symbolic link (O_NOFOLLOW), so a link planted inside the folder cannot lead a write
-// outside it. The output folder itself is the user's choice and may be a link.
+// outside it. The output folder itself is the user's choice and may be a link (unless confine_output_root).
 // Atomicity: the data goes to an anonymous file (O_TMPFILE), which a crash, a SIGKILL or the watchdog
 // leaves no trace of; commit() links a new file straight under its name, and to replace an older file links
 // it under a fresh dot-name and renames that over the target in one step.
@@ -67,13 +67,19 @@ void rename_file(const std::filesystem::path& root, const std::filesystem::path&
 // folders of `to` are created), replacing `to`: a run's staged files published into the output folder.
 void move_file(const std::filesystem::path& root, const std::filesystem::path& from, const std::filesystem::path& to);
 
-// Creates root/folder and the folders on the way as OutputFile does, refusing a link or file among them:
-// a sweep's run folders and previews/, checked before anything is written there.
+// Creates root/folder and the folders on the way as OutputFile does, refusing a link or file among them, and
+// a folder that is absolute or climbs out with '..': a sweep's run folders and previews/.
 void make_folder(const std::filesystem::path& root, const std::filesystem::path& folder);
 
 // Opens root/name for writing as it goes (created or truncated; a log a child process writes into), its
 // folders confined as OutputFile's and the file itself never a link. Returns the descriptor (close-on-exec).
 int open_log(const std::filesystem::path& root, const std::filesystem::path& name);
+
+// For a process whose output folder its parent made for it (a sweep's run folder, the studio's staging
+// folder, given as -o): from now on every root is opened without following a link at its last component
+// (made there when missing), so a link planted in its place after the parent made it is refused, not written
+// through. Otherwise the output folder is the user's choice and may be a link.
+void confine_output_root(bool refuse = true);
 
 // Removes the named temporaries of every OutputFile still open: for a process ending without unwinding
 // (the watchdog). Anonymous temporaries need nothing.

@@ -93,9 +93,28 @@ check "unknown option: usage exit 2" test "$code" = 2
 run_selfsim preview "$tmp/in/mesh.vtp" -o "$tmp/lim" --max-memory 16M
 check "--max-memory 16M: exit 1 ($(first_err))" test "$code" = 1
 check "--max-memory 16M: one line" test "$(wc -l <"$tmp/err")" = 1
-run_selfsim preview "$tmp/in/mesh.vtp" -o "$tmp/lim" --timeout 0.000001
-check "--timeout reached: exit 1" test "$code" = 1
-check "--timeout reached: message" grep -q "^selfsim preview: --timeout of 1e-06 s reached" "$tmp/err"
+# The --timeout case is held, not raced: DISPLAY names an X server of ours that takes the connection and
+# never answers, so the preview waits in XOpenDisplay (after its timer started) until the timer ends it.
+/usr/bin/python3 -c '
+import socket, sys, time
+for n in range(50, 1000):
+    s = socket.socket()
+    try:
+        s.bind(("127.0.0.1", 6000 + n))
+    except OSError:
+        s.close()
+        continue
+    s.listen(8)
+    print(n, flush=True)
+    break
+time.sleep(600)' >"$tmp/silent_x" &
+silent_x=$!
+for _ in $(seq 600); do [ -s "$tmp/silent_x" ] && break; sleep 0.05; done
+DISPLAY="127.0.0.1:$(cat "$tmp/silent_x")" run_selfsim preview "$tmp/in/mesh.vtp" -o "$tmp/lim" --timeout 1
+kill "$silent_x"
+wait "$silent_x" 2>/dev/null
+check "--timeout reached: exit 1 ($(first_err))" test "$code" = 1
+check "--timeout reached: message" grep -q "^selfsim preview: --timeout of 1 s reached" "$tmp/err"
 check "no PNG past the limits" test ! -e "$tmp/lim/mesh.png"
 run_selfsim preview "$tmp/in/mesh.vtp" --max-memory 1K
 check "--max-memory 1K: usage error naming it" grep -q "^selfsim: --max-memory expects a size" "$tmp/err"

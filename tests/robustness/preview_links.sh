@@ -35,6 +35,35 @@ check "sweep --collect with a previews link fails (got $code)" test "$code" != 0
 check "its message names the link: $(first_err)" grep -q "co/previews'.*link" "$tmp/err"
 check "nothing written through previews" nothing_outside
 
+# Links planted after the sweep's checks (check_sweep_folders) and after it made the run's folder: the run
+# holds (its recipe waits for go.lua after its first step) while the test puts a link in place of level=1 and of previews/level=2.
+# The run, whose -o names level=1, refuses its own folder as a link (--confined-output), the sweep writes
+# no selfsim.exit through it, and the previews' folder is refused by the writer, not by the first check.
+cat >hold.lua <<'LUA'
+local curves = require "selfsim.curves"
+local level = param("level", 1, { min = 1, max = 4 })
+local shape = develop(curves.dragon(), { levels = level, smooth = 1 })  -- reading the parameters ends here
+while not pcall(require, "go") do end
+save(shape, "m.vtp")
+LUA
+"$selfsim" sweep hold.lua -o late --set level=1,2 --jobs 1 -q >"$tmp/out" 2>"$tmp/err" &
+sweep=$!
+for _ in $(seq 1200); do [ -e late/level=1/selfsim.log ] && break; sleep 0.05; done
+check "the first run started" test -e late/level=1/selfsim.log
+rm -rf late/level=1
+ln -s "$tmp/outside" late/level=1
+mkdir -p late/previews
+ln -s "$tmp/outside" late/previews/level=2
+echo 'return true' >go.lua
+wait "$sweep"
+code=$?
+check "a sweep with links planted late fails (got $code)" test "$code" != 0
+check "the run folder's link is named: $(head -3 "$tmp/err" | tr '\n' ' ')" grep -q "late/level=1'.*link" "$tmp/err"
+check "the previews folder's link is named" grep -q "late/previews/level=2'.*link" "$tmp/err"
+check "nothing written through the late links" nothing_outside
+check "the second run wrote its own folder" test -s late/level=2/m.vtp
+rm -f go.lua
+
 # The writer itself: `preview --as` with a link two folders down.
 mkdir -p pv/a
 ln -s "$tmp/outside" pv/a/b

@@ -168,5 +168,23 @@ check(code not in (0, None), f"a .studio link ends the studio with an error, got
 check(".studio" in text and "link" in text, "the message names the link: " + text.strip())
 check(os.listdir(outside) == [], f"nothing written through the link: {os.listdir(outside)}")
 
+# 5. An output whose name takes 252 of the 255 bytes a name may have: its preview's name in .studio/ is
+# shortened (fitting_name, as a sweep's are) instead of failing as "longer than 255 bytes".
+long_name = "l" * 248 + ".vtp"
+with open(recipe, "w") as f:
+    f.write('local n = param("n", 1, { min = 1, max = 9 })\n'
+            'local curves = require "selfsim.curves"\n'
+            f'save(develop(curves.dragon(), {{ levels = 2, smooth = 1 }}), "{long_name}")\n')
+shutil.rmtree(out, ignore_errors=True)
+studio, port, line = start_studio()
+body = until(lambda: shown(1), 120)
+m = re.search(rb'"image": "(/out/\.studio/l+~[0-9a-f]+\.png)[^"]*"', body or b"")
+check(m is not None, f"the preview of a 252-byte output is shown: {body!r}")
+if m:
+    status, png = get(port, m.group(1).decode())
+    check(status == 200 and png.startswith(b"\x89PNG"), f"and served as a PNG: {status}")
+studio.send_signal(signal.SIGINT)
+studio.wait(60)
+
 shutil.rmtree(tmp, ignore_errors=True)
 finish()

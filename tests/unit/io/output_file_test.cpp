@@ -135,3 +135,34 @@ TEST(OutputFile, FoldersLogsAndMovesRefuseLinksOnTheWay) {
   EXPECT_EQ(read(d.path / "out/made/on/a.svg"), "a");
   EXPECT_FALSE(fs::exists(d.path / "out/staged/a.svg"));
 }
+
+// make_folder takes the rule of every other name below the root: no absolute path, no climbing out.
+TEST(OutputFile, MakeFolderRefusesFoldersOutsideTheRoot) {
+  TempDir d;
+  fs::create_directories(d.path / "out");
+  for (const char* folder : {"../x", "a/../../x", "..", "/tmp/selfsim_make_folder_absolute"})
+    EXPECT_THROW(io::make_folder(d.path / "out", folder), Error) << folder;
+  EXPECT_FALSE(fs::exists(d.path / "x"));
+  EXPECT_FALSE(fs::exists("/tmp/selfsim_make_folder_absolute"));
+  io::make_folder(d.path / "out", "a/../b");  // stays inside: fine
+  EXPECT_TRUE(fs::is_directory(d.path / "out/b"));
+}
+
+// A child whose output folder its parent made (confine_output_root): a link put in the folder's place after
+// it was made is refused at the root itself, not written through; a real folder, or a missing one, works.
+TEST(OutputFile, AConfinedRootRefusesALinkInItsPlace) {
+  TempDir d;
+  fs::create_directories(d.path / "out");
+  fs::create_directories(d.path / "elsewhere");
+  fs::create_directory_symlink(d.path / "elsewhere", d.path / "out/run");
+  io::confine_output_root();
+  EXPECT_THROW(io::write_whole(d.path / "out/run", "a.svg", "a"), Error);
+  EXPECT_THROW(io::write_whole(d.path / "out/run/", "a.svg", "a"), Error);
+  EXPECT_THROW(io::make_folder(d.path / "out/run", "sub"), Error);
+  io::write_whole(d.path / "out/new", "a.svg", "a");
+  io::confine_output_root(false);
+  EXPECT_TRUE(names_in(d.path / "elsewhere").empty());
+  EXPECT_EQ(read(d.path / "out/new/a.svg"), "a");
+  io::write_whole(d.path / "out/run", "b.svg", "b");  // the user's own -o may be a link
+  EXPECT_EQ(read(d.path / "elsewhere/b.svg"), "b");
+}
