@@ -131,11 +131,15 @@ std::vector<Pattern> parse_patterns(std::string_view whole, std::string_view par
 
 std::vector<Call> calls_in(std::string_view whole, std::string_view part, std::span<const std::string> names) {
   std::vector<Call> out;
-  int depth = 0;
+  // Polygons nest as branches do (the turtle keeps a stack of each): a '}' with no polygon open, or a '{'
+  // left open, would draw nothing and say nothing, so each text balances its braces as its brackets.
+  int depth = 0, polygons = 0;
   std::array<std::uint32_t, 256> seen{};
   each_module(whole, part, [&](std::uint8_t s, std::size_t at, const std::vector<std::string_view>& params) {
     depth += s == '[' ? 1 : s == ']' ? -1 : 0;
     if (depth < 0) throw RuleError("unbalanced brackets: a ']' without its '['", at);
+    polygons += s == '{' ? 1 : s == '}' ? -1 : 0;
+    if (polygons < 0) throw RuleError("unbalanced braces: a '}' without its '{' (no polygon is open)", at);
     Call call{s, {}, (std::uint64_t{s} << 32) | seen[s]++};
     for (std::string_view p : params) {
       try {
@@ -147,6 +151,9 @@ std::vector<Call> calls_in(std::string_view whole, std::string_view part, std::s
     out.push_back(std::move(call));
   });
   if (depth > 0) throw RuleError("unbalanced brackets: a '[' is never closed", column(whole, part) + part.size());
+  if (polygons > 0)
+    throw RuleError("unbalanced braces: a '{' is never closed (its polygon has no '}')",
+                    column(whole, part) + part.size());
   return out;
 }
 

@@ -85,6 +85,8 @@ TEST(RuleParser, ErrorsPointAtTheirColumn) {
   EXPECT_EQ(error_column("A B -> C"), 0u);          // two modules as predecessor
   EXPECT_EQ(error_column("A -> ]F"), 5u);           // ']' without '['
   EXPECT_EQ(error_column("A -> [F"), 7u);           // '[' never closed: at the end
+  EXPECT_EQ(error_column("A -> F}"), 6u);           // '}' with no polygon open
+  EXPECT_EQ(error_column("A -> {{F}"), 9u);         // a nested '{' never closed: at the end
   EXPECT_EQ(error_column("A(x, x) -> F"), 5u);      // a name twice
   EXPECT_EQ(error_column("A -> B : -1"), 9u);       // negative weight
   EXPECT_EQ(error_column("A(x) : x > -> F"), 11u);  // condition ends early: at its end
