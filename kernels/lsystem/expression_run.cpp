@@ -1,6 +1,7 @@
 // Evaluating a compiled expression (expression.h): the bytecode interpreter, and the trigonometry in
 // degrees it calls.
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "kernels/lsystem/expression.h"
@@ -47,7 +48,15 @@ double cos_degrees(double degrees) {
   ++a.quadrant;
   return sin_quadrant(a);
 }
-double tan_degrees(double degrees) { return sin_degrees(degrees) / cos_degrees(degrees); }
+// tan at an odd multiple of 90 degrees is a pole: infinite (an error where it is computed), not the +-inf a
+// signed zero cosine would give (tan(90) was -inf, so tan(90) < 0 held).
+double tan_degrees(double degrees) {
+  const Reduced a = reduce_degrees(degrees);
+  if ((a.quadrant & 1) != 0 && a.rest == 0) return std::numeric_limits<double>::infinity();
+  Reduced c = a;
+  ++c.quadrant;
+  return sin_quadrant(a) / sin_quadrant(c);
+}
 
 }  // namespace
 

@@ -153,6 +153,23 @@ TEST(Expression, NotFiniteResultThrows) {
   EXPECT_EQ(value("sqrt(x)", {2.25, 0, 0}), 1.5);
 }
 
+// tan at an odd multiple of 90 degrees (reduced exactly, so the pole is met exactly) is infinite and so an
+// error, in every quadrant and both signs, constant or computed; just beside it, tan is large and finite with
+// the sign of its side.
+TEST(Expression, TanAtItsPolesThrows) {
+  for (double pole : {90.0, -90.0, 270.0, -270.0, 450.0, 90.0 * 1000001, 90.0 + 360.0 * 1e12}) {
+    EXPECT_EQ(eval_error("tan(x)", {pole, 0, 0}), "result is infinite") << pole;
+    EXPECT_EQ(eval_error("tan(x) < 0", {pole, 0, 0}), "a value it computes is infinite") << pole;
+    EXPECT_EQ(eval_error("tan(x) > 0", {pole, 0, 0}), "a value it computes is infinite") << pole;
+  }
+  EXPECT_EQ(eval_error("tan(90) < 0"), "a value it computes is infinite");
+  EXPECT_EQ(eval_error("tan(x * 3) < 0", {30, 0, 0}), "a value it computes is infinite");
+  EXPECT_GT(value("tan(x)", {89.9999999, 0, 0}), 5e8);
+  EXPECT_LT(value("tan(x)", {90.0000001, 0, 0}), -5e8);
+  EXPECT_EQ(value("tan(x)", {180, 0, 0}), 0);
+  EXPECT_EQ(value("tan(x)", {-180, 0, 0}), 0);
+}
+
 // A NaN met on the way is an error even where the operation would hide it in an ordinary number: a
 // comparison or logic (NaN != 0 is true), min and max (which drop it), pow (pow(NaN, 0) is 1).
 TEST(Expression, NaNOnTheWayThrows) {
