@@ -21,7 +21,7 @@ PreviewChild::PreviewChild(const RunConfig& limits, const std::filesystem::path&
   std::vector<std::string> args{"preview", "-q", "-o", root.string()};
   if (limits.timeout > 0) {
     char seconds[64];
-    std::snprintf(seconds, sizeof seconds, "%.17g", limits.timeout);
+    std::snprintf(seconds, sizeof seconds, "%.17g", limits.timeout * static_cast<double>(files.size()));
     args.insert(args.end(), {"--timeout", seconds});
   }
   const double memory = limits.max_memory > 0 ? limits.max_memory : default_max_memory();
@@ -85,6 +85,62 @@ void PreviewChild::stop() {
   while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
   }
   reaped();
+}
+
+namespace {
+
+constexpr std::size_t batch_previews = 64, batch_bytes = std::size_t{256} << 10;
+
+}  // namespace
+
+PreviewBatches::PreviewBatches(const RunConfig& limits, const std::filesystem::path& root,
+                               const std::vector<std::string>& files, const std::vector<std::string>& names)
+    : limits_(limits), root_(root), files_(files), names_(names) {
+  start_next();
+}
+
+void PreviewBatches::start_next() {
+  child_.reset();
+  while (next_ < files_.size()) {
+    // Each argument counted with its NUL and its pointer; a name is below PATH_MAX, so any one preview fits.
+    std::size_t end = next_, bytes = 0;
+    while (end < files_.size() && end - next_ < batch_previews) {
+      const std::size_t more = 3 * (sizeof(char*) + 1) + 4 + names_[end].size() + files_[end].size();  // --as
+      if (end > next_ && bytes + more > batch_bytes) break;
+      bytes += more;
+      ++end;
+    }
+    const std::vector<std::string> files(files_.begin() + next_, files_.begin() + end);
+    const std::vector<std::string> names(names_.begin() + next_, names_.begin() + end);
+    const std::size_t first = next_;
+    next_ = end;
+    try {
+      child_ = std::make_unique<PreviewChild>(limits_, root_, files, names);
+      return;
+    } catch (const Error& e) {
+      std::fprintf(stderr, "selfsim: warning: previews %zu to %zu of %zu not drawn: %s\n", first + 1, end,
+                   files_.size(), e.what());
+      failed_ = true;
+    }
+  }
+}
+
+bool PreviewBatches::finished() {
+  if (!child_) return true;
+  if (int code = 0; child_->finished(code)) {
+    failed_ = failed_ || code != 0;
+    start_next();
+  }
+  return !child_;
+}
+
+bool PreviewBatches::wait() {
+  while (child_) {
+    failed_ = child_->wait() != 0 || failed_;
+    if (interrupted.load()) return false;
+    start_next();
+  }
+  return true;
 }
 
 }  // namespace selfsim::interp

@@ -165,7 +165,7 @@ int studio_command(const RunConfig& config, int port) {
   LiveRun live(config, true);
   // The previews' folder: a link there is refused now, as the confined writer refuses it at every write.
   io::make_folder(config.out_dir, previews_folder);
-  std::unique_ptr<PreviewChild> drawing;  // the previews of `drawn`, the last good run, being drawn
+  std::unique_ptr<PreviewBatches> drawing;  // the previews of `drawn`, the last good run, being drawn
   LiveResult drawn;
   HttpServer http(port);
   const char* scripts = std::getenv("SELFSIM_SCRIPTS");
@@ -257,11 +257,8 @@ int studio_command(const RunConfig& config, int port) {
             files.push_back((config.out_dir / f).string());
             names.push_back(preview_png(f));
           }
-        try {
-          if (!files.empty()) drawing = std::make_unique<PreviewChild>(config, config.out_dir, files, names);
-        } catch (const Error& e) {
-          std::fprintf(stderr, "selfsim: no previews: %s\n", e.what());
-        }
+        if (!files.empty()) drawing = std::make_unique<PreviewBatches>(config, config.out_dir, files, names);
+        if (drawing && drawing->finished()) drawing.reset();  // no batch could start (each warned about)
         if (drawing)
           drawn = r;
         else
@@ -274,7 +271,7 @@ int studio_command(const RunConfig& config, int port) {
         s.error_generation = s.generation;
       }
     }
-    if (int code = 0; drawing && drawing->finished(code)) {
+    if (drawing && drawing->finished()) {
       drawing.reset();
       show(drawn);
     }

@@ -119,47 +119,6 @@ std::string series_name(const std::string& leaf, const std::map<std::string, std
   return fitting_name("", shared ? leaf : stem, "_sweep.pvd");
 }
 
-// Previews go to children in batches: one command line for all of a 10,000-run sweep would pass the
-// kernel's limit on arguments (ARG_MAX, about 2 MB with the environment), and the child could not start.
-// A batch holds at most `batch_previews` previews and `batch_bytes` of arguments (each counted with its NUL
-// and its pointer): far below the limit, whatever the names (each file name below PATH_MAX).
-constexpr std::size_t batch_previews = 64, batch_bytes = std::size_t{256} << 10;
-
-// Draws files[i] as out/names[i]. Each batch runs under the run's --timeout times its number of previews:
-// the child's timer cannot end one preview and go on (it ends the process), so a batch of k gets the time k
-// previews of --timeout each would take; every preview that fits the run's --timeout is drawn, and one that
-// never ends costs its own batch only. A batch that cannot start, or ends badly, is warned about and the
-// sweep goes on: its cells say "no preview". Returns false when stopped (Ctrl-C, SIGTERM).
-bool draw_previews(const RunConfig& run, const std::filesystem::path& out, const std::vector<std::string>& files,
-                   const std::vector<std::string>& names) {
-  bool failed = false;
-  for (std::size_t first = 0; first < files.size();) {
-    std::size_t end = first, bytes = 0;
-    while (end < files.size() && end - first < batch_previews) {
-      const std::size_t more = 3 * (sizeof(char*) + 1) + names[end].size() + files[end].size() + 4;  // --as
-      if (end > first && bytes + more > batch_bytes) break;
-      bytes += more;
-      ++end;
-    }
-    RunConfig limits = run;
-    limits.timeout = run.timeout * static_cast<double>(end - first);
-    const std::vector<std::string> batch_files(files.begin() + first, files.begin() + end);
-    const std::vector<std::string> batch_names(names.begin() + first, names.begin() + end);
-    try {
-      failed = PreviewChild(limits, out, batch_files, batch_names).wait() != 0 || failed;
-    } catch (const Error& e) {
-      std::fprintf(stderr, "selfsim: warning: previews %zu to %zu of %zu not drawn: %s\n", first + 1, end, files.size(),
-                   e.what());
-      failed = true;
-    }
-    if (interrupted.load()) return false;
-    first = end;
-  }
-  if (failed)
-    std::fprintf(stderr, "selfsim: warning: some previews could not be drawn; their cells say \"no preview\"\n");
-  return true;
-}
-
 }  // namespace
 
 std::vector<int> read_exit_codes(const std::filesystem::path& out, const SweepPlan& plan) {
@@ -239,7 +198,11 @@ int collect_sweep(const SweepConfig& c, const SweepPlan& plan, const std::vector
     // Their folders first, confined (a link on the way is an error naming it, as for any write), then the
     // pictures by children under the runs' limits (preview_child.h), writing through the same writer.
     for (const std::string& name : preview_names) io::make_folder(out, std::filesystem::path(name).parent_path());
-    if (!draw_previews(c.run, out, preview_files, preview_names)) return 130;
+    // In batches (preview_child.h): a failed batch is a warning, its cells say "no preview".
+    PreviewBatches previews(c.run, out, preview_files, preview_names);
+    if (!previews.wait()) return 130;
+    if (previews.failed())
+      std::fprintf(stderr, "selfsim: warning: some previews could not be drawn; their cells say \"no preview\"\n");
     for (const std::string& leaf : preview_leaves) {
       const std::vector<bool>& have = outputs[leaf];
       std::vector<std::string> images(n);
