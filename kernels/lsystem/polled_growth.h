@@ -15,8 +15,9 @@ namespace selfsim::lsystem {
 // Elements copied between two looks for a stop (16 MB of points).
 constexpr std::size_t growth_piece = std::size_t{1} << 20;
 
-// Makes room in v (a std::vector, or one with its own allocator) for `need` elements in all: twice its size (at least 1024), but no more than `cap` (the
-// most the caller's budget lets it hold) unless `need` is more. Throws Cancelled when progress says so.
+// Makes room in v (a std::vector, or one with its own allocator) for `need` elements in all: twice its size (at least
+// 1024), but no more than `cap` (the most the caller's budget lets it hold) unless `need` is more. Throws Cancelled
+// when progress says so.
 template <class Vector>
 void grow_polled(Vector& v, std::size_t need, std::size_t cap, Progress& progress) {
   if (need <= v.capacity()) return;
