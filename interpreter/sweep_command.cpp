@@ -31,6 +31,14 @@ namespace {
 
 extern "C" void on_sweep_signal(int) { interrupted.store(true); }
 
+// Ctrl-C, SIGTERM and SIGHUP set `interrupted`: the runs and the preview children are stopped cleanly and
+// the sweep ends with 130 (also under --collect, whose preview child would otherwise be left to finish).
+void catch_stop_signals() {
+  struct sigaction sa {};
+  sa.sa_handler = on_sweep_signal;  // no SA_RESTART: waitpid returns at Ctrl-C
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaction(sig, &sa, nullptr);
+}
+
 // "exit 1", or "killed by signal 9 (Killed)" for a run a signal ended.
 std::string exit_text(int code) {
   if (code <= 128) return "exit " + std::to_string(code);
@@ -77,9 +85,7 @@ std::vector<int> run_all(const SweepConfig& c, const SweepPlan& plan, int jobs) 
   // N runs at once share the machine: each may hold its share of the default --max-memory.
   RunConfig each = c.run;
   if (each.max_memory == 0) each.max_memory = std::max(256.0 * (1 << 20), default_max_memory() / jobs);
-  struct sigaction sa {};
-  sa.sa_handler = on_sweep_signal;  // no SA_RESTART: waitpid returns at Ctrl-C
-  for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaction(sig, &sa, nullptr);
+  catch_stop_signals();
 
   std::vector<int> codes(plan.runs.size(), -1);
   std::map<pid_t, Child> live;
@@ -174,7 +180,10 @@ int sweep_command(const SweepConfig& c) {
     std::error_code ec;
     if (!std::filesystem::is_directory(out, ec))
       throw UsageError("--collect: no sweep in '" + out.string() + "' (not a folder)");
-    return collect_sweep(c, plan, read_exit_codes(out, plan));
+    catch_stop_signals();
+    const int code = collect_sweep(c, plan, read_exit_codes(out, plan));
+    if (interrupted.load()) std::fprintf(stderr, "selfsim: sweep --collect interrupted\n");
+    return interrupted.load() ? 130 : code;
   }
   check_sweep_params(c.run, plan);
   check_sweep_folders(c, plan);

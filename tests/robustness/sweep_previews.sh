@@ -75,32 +75,41 @@ check "the collect ends well (exit $code: $(first_err))" test "$code" = 0
 check "every cell has its preview" test "$(grep -c '<image' tw/sheet_m.vtp.svg)" = 4
 check "no cell says no preview" test "$(grep -c 'no preview' tw/sheet_m.vtp.svg)" = 0
 
-# SIGTERM to a local sweep while its preview child is held stopped: the sweep wakes the child to end it
-# (SIGTERM, SIGCONT) and ends with 130 instead of waiting on a child that will never finish.
-"$selfsim" sweep m.lua -o st --set level=1..2 -q >out 2>err &
-sweep=$!
-held=
-while kill -0 "$sweep" 2>/dev/null && [ -z "$held" ]; do
-  for c in $(pgrep -P "$sweep"); do
-    if grep -qaF preview "/proc/$c/cmdline" 2>/dev/null && kill -STOP "$c" 2>/dev/null; then
-      for _ in $(seq 100); do
-        [ "$(awk '{print $3}' "/proc/$c/stat" 2>/dev/null)" = T ] && held=$c && break
-        sleep 0.05
-      done
-    fi
+# SIGTERM to a sweep (local, then --collect) while its preview child is held stopped: the sweep wakes the
+# child to end it (SIGTERM, SIGCONT) and ends with 130, instead of waiting on a child that never finishes
+# (--collect was ended by the signal, leaving its preview child stopped for ever).
+for how in local collect; do
+  if [ "$how" = local ]; then
+    "$selfsim" sweep m.lua -o st --set level=1..2 -q >out 2>err &
+  else
+    "$selfsim" sweep m.lua -o tw --set level=1..4 --collect -q >out 2>err &
+  fi
+  sweep=$!
+  held=
+  while kill -0 "$sweep" 2>/dev/null && [ -z "$held" ]; do
+    for c in $(pgrep -P "$sweep"); do
+      if grep -qaF preview "/proc/$c/cmdline" 2>/dev/null && kill -STOP "$c" 2>/dev/null; then
+        for _ in $(seq 100); do
+          [ "$(awk '{print $3}' "/proc/$c/stat" 2>/dev/null)" = T ] && held=$c && break
+          sleep 0.05
+        done
+      fi
+    done
+    sleep 0.02
   done
-  sleep 0.02
-done
-if [ -n "$held" ]; then
+  if [ -z "$held" ]; then
+    wait "$sweep"
+    echo "note: the $how preview ended before it was seen; its SIGTERM case was not tried"
+    continue
+  fi
   kill -TERM "$sweep"
   for _ in $(seq 600); do kill -0 "$sweep" 2>/dev/null || break; sleep 0.05; done
-  if kill -0 "$sweep" 2>/dev/null; then kill -CONT "$held"; fi # let it end, the check below then fails
+  kill -0 "$sweep" 2>/dev/null && kill -CONT "$held" # let it end; the check below then fails
   wait "$sweep"
   code=$?
-  check "SIGTERM during a held preview ends the sweep with 130 (got $code)" test "$code" = 130
-  check "the preview child ended with it" test ! -e "/proc/$held/cmdline" -o "$(awk '{print $3}' "/proc/$held/stat" 2>/dev/null)" = Z
-else
-  wait "$sweep"
-  echo "note: the preview ended before it was seen; the SIGTERM case was not tried"
-fi
+  check "$how: SIGTERM during a held preview ends the sweep with 130 (got $code)" test "$code" = 130
+  stat=$(awk '{print $3}' "/proc/$held/stat" 2>/dev/null)
+  check "$how: the preview child ended with it (state '$stat')" test -z "$stat" -o "$stat" = Z
+  kill -CONT "$held" 2>/dev/null
+done
 finish
