@@ -61,8 +61,9 @@ struct PrintReport {
   // One line: "print check: passes (closed, 120 x 80 x 40 mm, 212,340 triangles, walls >= 0.92 mm, gaps >=
   // 0.41 mm)" or "print check: 2 problems: ...; ...".
   std::string summary() const;
-  // A wall or gap crossed within the rays' first step (half a voxel): "under 0.07 mm (finer than the
-  // distance grid's 0.13 mm voxel resolves)".
+  // A wall or gap crossed within the rays' first step (half a voxel): "under 0.27 mm (two of the
+  // distance grid's 0.13 mm voxels: finer than it resolves)": a wall tilted against the lattice reads so up
+  // to about 1.4 voxels.
   std::string unresolved() const;
 };
 
