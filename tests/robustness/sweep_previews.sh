@@ -47,7 +47,7 @@ rm -rf ./0*
 run_selfsim sweep m.lua -o tw --set level=1..4 --no-sheet -q --timeout 5
 check "four runs: $(first_err)" test "$code" = 0
 held=
-for attempt in 1 2 3 4 5; do
+for _ in 1 2 3 4 5; do # a preview that ends before it is seen is drawn again
   "$selfsim" sweep m.lua -o tw --set level=1..4 --collect -q --timeout 5 >out 2>err &
   sweep=$!
   while kill -0 "$sweep" 2>/dev/null && [ -z "$held" ]; do
