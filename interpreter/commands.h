@@ -8,6 +8,8 @@
 
 #include "interpreter/run_context.h"
 #include "interpreter/shell_quote.h"  // shell_word, shell_command
+#include "kernels/geom/budget.h"
+#include "kernels/print/print_rules.h"
 
 namespace selfsim::interp {
 
@@ -36,9 +38,10 @@ int info_command(const std::string& file);
 // `selfsim rerun FILE [-o DIR]`: the run FILE records, again, into DIR (default: a new ./rerun folder); exit 0
 // when FILE comes out byte for byte the same, 1 when it differs or the run fails. Throws UsageError.
 int rerun_command(const std::string& file, const std::string& out);
-// `selfsim info --print FILE [--profile fdm|sla]`: the print check of a solid in millimetres; exit 0 when it
+// `selfsim info --print FILE [--profile fdm|sla] [--voxel MM] [--max-points N]`: the print check of a solid
+// in millimetres under `rules` (the profile's, with --voxel) and `budget` (--max-points); exit 0 when it
 // passes, 1 with its findings, 2 when the file cannot be read or is not a closed solid.
-int print_info_command(const std::string& file, const std::string& profile);
+int print_info_command(const std::string& file, const print::PrintRules& rules, const PointBudget& budget);
 
 // `selfsim preview FILE... [-o DIR] [-q] [--timeout S] [--max-memory SIZE] [--as NAME FILE]...`.
 struct PreviewConfig {
@@ -46,8 +49,9 @@ struct PreviewConfig {
   std::string out_dir;             // empty: each PNG beside its input
   std::vector<std::string> names;  // per file, the PNG's name inside out_dir ("" for NAME.png); --as
   bool quiet = false;
-  double timeout = 0;     // seconds for all the previews, 0 = none (as run's --timeout)
-  double max_memory = 0;  // bytes the previews may add, 0 = none (as run's --max-memory)
+  double timeout = 0;                      // seconds for all the previews, 0 = none (as run's --timeout)
+  double max_memory = 0;                   // bytes the previews may add, 0 = none (as run's --max-memory)
+  double max_points = default_max_points;  // a .vdb's tiles weighed against it (as run's --max-points)
 };
 // Throws UsageError.
 PreviewConfig parse_preview_arguments(const std::vector<std::string>& args);

@@ -164,15 +164,14 @@ int info_command(const std::string& given) {
   }
 }
 
-int print_info_command(const std::string& file, const std::string& profile) {
+int print_info_command(const std::string& file, const print::PrintRules& rules, const PointBudget& budget) {
   try {
-    const print::PrintRules rules = print::PrintRules::named(profile);
     const io::Dataset d = io::read_dataset(file);
     if (d.shapes != io::CellShapes::polygons || d.cell_ends.empty())
       throw Error("it holds " + std::string(d.cell_ends.empty() ? "no cells" : "curves (polylines)") +
                   ", not a solid's surface: make a solid of it first (solid.tube or solid.relief in a recipe)");
     const Mesh m = io::dataset_mesh(d);
-    const print::PrintReport r = print::check_print(m, rules, PointBudget{}, no_progress());
+    const print::PrintReport r = print::check_print(m, rules, budget, no_progress());
     std::printf("file: %s\n%s\n", shown_text(file, 4096).c_str(), r.summary().c_str());
     for (const std::string& f : r.findings) std::printf("  - %s\n", f.c_str());
     return r.passes() ? 0 : 1;

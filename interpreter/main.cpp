@@ -1,4 +1,6 @@
 // The `selfsim` executable: dispatches to run / diff / info / preview.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -6,7 +8,11 @@
 
 #include "interpreter/commands.h"
 #include "interpreter/options_reader.h"
+#include "interpreter/parse_text.h"
 #include "interpreter/sweep.h"
+#include "kernels/geom/budget.h"
+#include "kernels/geom/point_text.h"
+#include "kernels/print/print_rules.h"
 
 namespace {
 
@@ -58,17 +64,22 @@ usage:
                              surface whether it is a closed manifold; for a .vdb, each grid's name,
                              class, value type, voxel size, active voxels and bounding boxes; for a
                              .pvd or .vtp.series, its steps and then the last one
-  selfsim info --print FILE [--profile fdm|sla]
+  selfsim info --print FILE [--profile fdm|sla] [--voxel MM] [--max-points N]
                              the print check of a closed solid in millimetres (.stl .3mf .obj .ply
                              .vtp): closed, crossing, thinnest wall, narrowest gap, triangles, size.
-                             Exit 0 passes, 1 with its findings, 2 error
-  selfsim preview FILE... [-o DIR] [-q] [--timeout S] [--max-memory SIZE] [--as NAME FILE]...
+                             --voxel: the distance grid's (default a third of the smaller of the
+                             profile's least wall and gap, at most half of it); --max-points: the
+                             grid's and the points' budget, as for run (a large part needs a larger
+                             voxel or budget). Exit 0 passes, 1 with its findings, 2 error
+  selfsim preview FILE... [-o DIR] [-q] [--timeout S] [--max-memory SIZE] [--max-points N]
+                             [--as NAME FILE]...
                              a PNG picture of each file (.vtp .vtu .svg .stl .obj .ply, .vdb as its
                              surface, .pvd/.vtp.series as its last step): NAME.png beside it, or in DIR. Curves and flat drawings from above,
                              anything else shaded from two sides, coloured by the field a ParaView view
                              uses. Needs an X display; without one it starts Xvfb (apt-get install xvfb).
                              Exit 1 when a file could not be drawn (the others still are).
-                             --timeout and --max-memory as for run; --as NAME FILE writes FILE's PNG
+                             --timeout, --max-memory and --max-points (a .vdb's tiles) as for run;
+                             --as NAME FILE writes FILE's PNG
                              as DIR/NAME (folders made inside DIR, never through a link)
   selfsim --help | --version
 
@@ -159,9 +170,10 @@ int main(int argc, char** argv) {
       return run_command(config);
     }
     if (command == "info") {
-      // --print and --profile P may come before or after the file, in any order.
+      // --print, --profile P, --voxel MM and --max-points N may come before or after the file, in any order.
       bool print = false;
-      std::string profile, file;
+      std::string profile, file, voxel_text, print_flag;
+      selfsim::PointBudget budget;
       int files = 0;
       for (std::size_t i = 0; i < rest.size(); ++i) {
         if (rest[i] == "--print") {
@@ -169,12 +181,21 @@ int main(int argc, char** argv) {
         } else if (rest[i] == "--profile") {
           if (i + 1 == rest.size()) throw UsageError("--profile expects fdm or sla");
           profile = rest[++i];
+        } else if (rest[i] == "--voxel" || rest[i] == "--max-points") {
+          print_flag = rest[i];
+          if (i + 1 == rest.size())
+            throw UsageError(rest[i] + (rest[i] == "--voxel" ? " expects a size in mm" : " expects a number"));
+          if (rest[i] == "--voxel")
+            voxel_text = rest[++i];
+          else
+            budget.limit = std::floor(number_argument("--max-points", rest[++i], 1, selfsim::highest_max_points));
         } else {
           file = rest[i];
           ++files;
         }
       }
       if (!profile.empty() && !print) throw UsageError("--profile is for info --print FILE");
+      if (!print_flag.empty() && !print) throw UsageError(print_flag + " is for info --print FILE");
       if (files != 1)
         throw UsageError(print ? "info --print expects one file (and optionally --profile fdm|sla), got " +
                                      std::to_string(files)
@@ -183,7 +204,17 @@ int main(int argc, char** argv) {
         if (profile.empty()) profile = "fdm";
         if (profile != "fdm" && profile != "sla")
           throw UsageError("--profile expects fdm or sla, got '" + profile + "'");
-        return print_info_command(file, profile);
+        selfsim::print::PrintRules rules = selfsim::print::PrintRules::named(profile);
+        // The voxel's range as solid.check's option takes it, named as the flag.
+        if (!voxel_text.empty()) {
+          const double most = std::min(rules.min_wall, rules.min_gap) / 2;
+          const auto v = selfsim::interp::parse_text<double>(voxel_text);
+          if (!v || !(*v >= 1e-3 && *v <= most))
+            throw UsageError("--voxel expects a size in mm from 0.001 to " + selfsim::mm_text(most) + " (half the " +
+                             profile + " profile's least wall or gap), got '" + voxel_text + "'");
+          rules.voxel = *v;
+        }
+        return print_info_command(file, rules, budget);
       }
       return info_command(file);
     }

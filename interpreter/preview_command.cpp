@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <cstdio>
 #include <cstring>
@@ -119,6 +120,9 @@ PreviewConfig parse_preview_arguments(const std::vector<std::string>& args) {
     } else if (options && a == "--max-memory") {
       if (i + 1 >= args.size()) throw UsageError("--max-memory expects a size");
       c.max_memory = size_argument(a, args[++i]);
+    } else if (options && a == "--max-points") {  // a .vdb's tiles are weighed against it, as in a run
+      if (i + 1 >= args.size()) throw UsageError("--max-points expects a number");
+      c.max_points = std::floor(number_argument(a, args[++i], 1, highest_max_points));
     } else if (options && a == "--as") {
       // --as NAME FILE: FILE's PNG is DIR/NAME (folders in NAME made inside DIR, never through a link).
       if (i + 2 >= args.size() || args[i + 1].empty()) throw UsageError("--as expects a PNG name and a file");
@@ -170,7 +174,9 @@ int preview_command(const PreviewConfig& config) {
       if (!known(ext)) throw Error(io::cannot_read(source, std::string("expected a ") + formats + " file"));
       io::Dataset d;
       if (ext == ".vdb") {
-        io::VdbSurface s = io::read_vdb_surface(source);
+        io::VdbReadOptions read;
+        read.budget.limit = config.max_points;
+        io::VdbSurface s = io::read_vdb_surface(source, read);
         d = std::move(s.mesh);
         note = ", " + s.what;
       } else {

@@ -28,6 +28,13 @@ expect 2 "unknown command" -- "$selfsim" frobnicate
 contains "$tmp/err" "unknown command 'frobnicate'" "unknown command message"
 expect 2 "missing recipe" -- "$selfsim" run "$tmp/nope.lua"
 contains "$tmp/err" "cannot open recipe" "missing recipe message"
+# A FIFO as the recipe is refused in one line that says so, never waited on (opening it would wait for a writer).
+mkfifo "$tmp/fifo.lua"
+for command in run params; do
+  expect 2 "$command on a FIFO recipe" -- timeout 60 "$selfsim" "$command" "$tmp/fifo.lua"
+  contains "$tmp/err" "selfsim: cannot open recipe '$tmp/fifo.lua': is a FIFO, not a regular file" "$command on a FIFO"
+  [ "$(wc -l <"$tmp/err")" = 1 ] || { echo "FAIL: $command on a FIFO: not one line"; failures=$((failures + 1)); }
+done
 expect 2 "bad --max-points" -- "$selfsim" run "$src/examples/plant.lua" --max-points lots
 # A recipe without `run`, or without its `.lua`: the command meant (issue 21).
 mkdir -p "$tmp/meant" && printf 'print("ran")\n' >"$tmp/meant/dragon.lua"
@@ -162,6 +169,28 @@ contains "$tmp/err" "info --print expects one file (and optionally --profile fdm
 expect 2 "info --print curve" -- "$selfsim" info --print "$tmp/p/curve.vtp"
 contains "$tmp/err" "it holds curves (polylines), not a solid's surface: make a solid of it first" "print check curve"
 expect 2 "info --print bad profile" -- "$selfsim" info --print "$tmp/p/tet.3mf" --profile laser
+# A grid over the budget: the check says so and names the flags that measure it, which info --print takes
+# (the 20 mm cube's grid is 1.9 million points at the 0.13 mm voxel, 0.8 million at 0.2 mm).
+expect 1 "info --print over --max-points" -- "$selfsim" info --print "$tmp/p/tet.3mf" --max-points 1e6
+contains "$tmp/out" "walls and gaps not measured" "info --print over --max-points: not measured"
+contains "$tmp/out" "info --print's --voxel; or a larger --max-points" "info --print over --max-points: the flags"
+expect 0 "info --print --voxel" -- "$selfsim" info --print --voxel 0.2 "$tmp/p/tet.3mf" --max-points 1e6
+contains "$tmp/out" "passes: closed, 20 x 20 x 20 mm" "info --print --voxel: measured"
+expect 0 "info --print --max-points" -- "$selfsim" info --print "$tmp/p/tet.3mf" --max-points 3e6
+contains "$tmp/out" "walls >= 1.2 mm" "info --print --max-points: measured"
+expect 2 "info --print --voxel too large" -- "$selfsim" info --print "$tmp/p/tet.3mf" --voxel 0.3
+contains "$tmp/err" "--voxel expects a size in mm from 0.001 to 0.2 mm (half the fdm profile's least wall or gap), got '0.3'" \
+  "info --print --voxel too large: message"
+expect 2 "info --voxel without --print" -- "$selfsim" info "$tmp/p/tet.3mf" --voxel 0.2
+contains "$tmp/err" "--voxel is for info --print FILE" "info --voxel without --print: message"
+expect 2 "info --print --max-points without a value" -- "$selfsim" info --print "$tmp/p/tet.3mf" --max-points
+# preview's refusal of a .vdb root tile says "raise it with --max-points", which preview takes (a 4096^3
+# tile in 653 bytes, written by OpenVDB's Python module where it is installed).
+if /usr/bin/python3 "$src/tests/robustness/vdb_tiles.py" "$tmp" tiles_root.vdb 2>/dev/null; then
+  expect 1 "preview --max-points" -- "$selfsim" preview "$tmp/tiles_root.vdb" -o "$tmp/pv" --max-points 1000
+  contains "$tmp/err" "would make 301989888 points, over the limit of 1000 (raise it with --max-points)" \
+    "preview --max-points: the limit given"
+fi
 expect 0 "info 3mf" -- "$selfsim" info "$tmp/p/tet.3mf"
 contains "$tmp/out" "surface: closed manifold, 1 component" "info 3mf closed"
 expect 0 "diff 3mf" -- "$selfsim" diff "$tmp/p/tet.3mf" "$tmp/p/tet.3mf"
