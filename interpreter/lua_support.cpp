@@ -9,10 +9,31 @@
 #include "interpreter/options_reader.h"
 #include "interpreter/run_context.h"
 #include "kernels/geom/check.h"
+#include "kernels/io/regular_file.h"
 
 namespace selfsim::interp {
 
 std::string recipe_where(lua_State* L) { return stack_where(L, "@" + RunContext::of(L).scripts_dir.string(), 1); }
+
+int load_lua_file(lua_State* L, const std::filesystem::path& file, const char* what, std::string* text) {
+  std::string bytes;
+  try {
+    const io::RegularFile f(file, true);
+    bytes.resize(static_cast<std::size_t>(f.size()));
+    f.read_at(0, bytes.data(), bytes.size());
+  } catch (const Error& e) {
+    const std::string message = std::string("cannot open ") + what + " '" + file.string() + "': " + e.what();
+    lua_pushlstring(L, message.data(), message.size());
+    return LUA_ERRFILE;
+  }
+  std::string_view chunk = bytes;
+  if (chunk.starts_with("\xEF\xBB\xBF")) chunk.remove_prefix(3);
+  if (chunk.starts_with('#')) chunk.remove_prefix(std::min(chunk.find('\n'), chunk.size()));  // its '\n' kept
+  const std::string name = "@" + file.string();
+  const int status = luaL_loadbufferx(L, chunk.data(), chunk.size(), name.c_str(), "t");
+  if (text != nullptr) *text = std::move(bytes);
+  return status;
+}
 
 std::string stack_where(lua_State* L, const std::string& library, int first_level) {
   std::string first;

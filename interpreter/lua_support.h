@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <lua.hpp>
 #include <memory>
 #include <new>
@@ -17,6 +18,13 @@ namespace selfsim::interp {
 
 // "recipe.lua:12: " for the innermost frame that is not one of the DSL's own scripts/ files.
 std::string recipe_where(lua_State* L);
+
+// Loads the Lua text chunk in `file` as luaL_loadfilex(L, file, "t") does (a UTF-8 BOM and a first line
+// starting with '#' skipped, line numbers kept), but through io::RegularFile: opened without blocking and
+// only if it is a regular file, so a FIFO or a device put in the place of a recipe or module is refused at
+// once instead of waited on. On failure pushes "cannot open WHAT 'FILE': REASON" and returns LUA_ERRFILE.
+// `text`, where given, gets the bytes loaded (so their hash is of what ran).
+int load_lua_file(lua_State* L, const std::filesystem::path& file, const char* what, std::string* text = nullptr);
 // The same for chunks whose source starts with `library` ("@/path/scripts"), from stack level first_level
 // (1 skips the running C function; 0 from inside the allocator, where a Lua function may be running). Only
 // reads the stack, so it is safe where nothing may be pushed.

@@ -19,6 +19,8 @@
 #include "interpreter/sweep.h"
 #include "interpreter/watchdog.h"
 #include "kernels/io/json_text.h"
+#include "kernels/io/regular_file.h"
+#include "kernels/io/sha256.h"
 
 namespace selfsim::interp {
 
@@ -76,6 +78,8 @@ bool starts_with_location(std::string_view text) {
 // The text of a failed pcall as one line that starts with a recipe location.
 std::string failure_message(lua_State* L, RunContext& run, int status) {
   if (status == LUA_ERRMEM) return memory_message(run.memory);  // before anything that may allocate
+  // The recipe could not be read (load_lua_file): its message names it already.
+  if (status == LUA_ERRFILE) return shown_text(lua_tostring(L, -1), 2000);
   lua_getfield(L, LUA_REGISTRYINDEX, error_where_key);
   const std::string where = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : run.config.recipe.string() + ": ";
   lua_pop(L, 1);
@@ -154,7 +158,9 @@ int run_recipe(lua_State* L, RunContext& run) {
   int status = LUA_OK;
   {
     const QuietStdout quiet(run.config.params_only);
-    status = luaL_loadfilex(L, run.config.recipe.c_str(), "t");
+    std::string text;
+    status = load_lua_file(L, run.config.recipe, "recipe", &text);
+    run.recipe_sha256 = io::sha256_hex(text);  // of the bytes that ran, not of the file at the first save
     if (status == LUA_OK) status = lua_pcall(L, 0, 0, 1);
   }
   run.ended = true;
@@ -238,9 +244,15 @@ int run_command(const RunConfig& given) {
   const RunConfig config = with_plain_values(given);
   if (config.watch) return watch_command(config);
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(config.recipe, ec))
-    throw UsageError("cannot open recipe '" + config.recipe.string() + "'" +
-                     (ec ? ": " + ec.message() : std::string()));
+  if (!std::filesystem::is_regular_file(config.recipe, ec)) {
+    std::string why = ec ? ec.message() : "not a regular file";
+    if (!ec) try {  // what it is instead ("is a FIFO, not a regular file"), asked without blocking on it
+        const io::RegularFile check(config.recipe, true);
+      } catch (const Error& e) {
+        why = e.what();
+      }
+    throw UsageError("cannot open recipe '" + config.recipe.string() + "': " + why);
+  }
   RunContext run(config);
   run.scripts_dir = find_scripts_dir();
   for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, on_interrupt);  // stop cleanly: no partial files

@@ -57,7 +57,7 @@ class RunContext : public Progress {
   std::set<std::string> used_params;               // --set keys that param() read
   std::vector<ParamSpec> params;                   // the parameters declared, in order (param_spec.h)
   std::map<std::string, std::size_t> param_index;  // their places in params, by name
-  std::string recipe_sha256;                       // of the recipe's bytes, read at the first save (save_support.cpp)
+  std::string recipe_sha256;                       // of the recipe's bytes, as loaded (run_recipe)
   double held_points = 0;                          // points held by live values (curves), against --max-points
   bool ended = false;                              // the recipe has returned or failed: nothing more may be written
   std::atomic<bool> reported{false};               // the run's error line is printed: the watchdog adds none

@@ -92,7 +92,7 @@ bool load_module(lua_State* L, const std::string& name) {
                       recipe_where(L).c_str(), module, file.c_str());
       return false;
     }
-    if (luaL_loadfilex(L, file.c_str(), "t") != LUA_OK) {
+    if (load_lua_file(L, file, "module") != LUA_OK) {
       // Syntax errors name the module's file and line already; others (a binary chunk) name nothing.
       const std::string chunk = file.string() + ":";
       const char* message = lua_tostring(L, -1);

@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <optional>
 
 #include "interpreter/lua_support.h"
@@ -18,7 +16,6 @@
 #include "kernels/geom/lower_case.h"
 #include "kernels/io/natural_field.h"
 #include "kernels/io/provenance.h"
-#include "kernels/io/sha256.h"
 
 namespace selfsim::interp {
 
@@ -26,11 +23,6 @@ namespace selfsim::interp {
 // other unknown key gets Options' "did you mean" among f's own options.
 std::string run_provenance(lua_State* L, const std::string& name) {
   RunContext& run = RunContext::of(L);
-  if (run.recipe_sha256.empty()) {
-    std::ifstream in(run.config.recipe, std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    run.recipe_sha256 = io::sha256_hex(bytes);
-  }
   io::Provenance p;
   p.version = SELFSIM_VERSION;
   std::error_code ec;

@@ -73,7 +73,7 @@ std::string kind_of(mode_t mode) {
 
 }  // namespace
 
-RegularFile::RegularFile(const std::filesystem::path& file) {
+RegularFile::RegularFile(const std::filesystem::path& file, bool empty_ok) {
   if (file.empty()) throw Error("empty file name");
   // O_NONBLOCK: a FIFO opens at once instead of waiting for a writer; fstat then refuses it.
   do fd_ = ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
@@ -92,7 +92,7 @@ RegularFile::RegularFile(const std::filesystem::path& file) {
   const int flags = ::fcntl(fd_, F_GETFL);
   if (flags >= 0) ::fcntl(fd_, F_SETFL, flags & ~O_NONBLOCK);
   size_ = static_cast<std::uint64_t>(st.st_size);
-  if (size_ == 0) {
+  if (size_ == 0 && !empty_ok) {
     ::close(fd_);
     throw Error("the file is empty");
   }

@@ -14,8 +14,8 @@ namespace selfsim::io {
 class RegularFile {
  public:
   // Throws Error with the reason alone ("no such file or directory", "is a directory", ...). An empty file
-  // is refused too: no format selfsim reads is empty.
-  explicit RegularFile(const std::filesystem::path& file);
+  // is refused too, unless `empty_ok`: no data format selfsim reads is empty (an empty Lua file is fine).
+  explicit RegularFile(const std::filesystem::path& file, bool empty_ok = false);
   ~RegularFile();
   RegularFile(const RegularFile&) = delete;
   RegularFile& operator=(const RegularFile&) = delete;

@@ -4,7 +4,8 @@ very slowly (a tiny receive buffer, a few KB then a nap) beside a normal client,
 answered while the slow one still reads; the slow one then gets the whole file, byte for byte. Ctrl-C while a
 slow client is mid-transfer ends the studio before that client is done, the transfer cut short. Then the request forms: bare-LF lines
 are answered, a repeated Host, Origin or Sec-Fetch-Site is refused; a 1.5 MB file asked for, then a second
-request or stray bytes on the same socket, still comes whole. The waits are bounds against a hang,
+request or stray bytes on the same socket, still comes whole; a FIFO swapped in for the recipe is refused,
+the studio still answering. The waits are bounds against a hang,
 never timings: every assertion is about order or content.
 
 usage: studio_clients.py SELFSIM"""
@@ -149,6 +150,18 @@ try:
         head, _, body = data.partition(b"\r\n\r\n")
         check(head.startswith(b"HTTP/1.1 200 ") and body == middle,
               "after %s, the whole 1.5 MB file comes, byte-exact (%d bytes)" % (what, len(body)))
+
+    # --- a FIFO in the recipe's place -------------------------------------------------------------------
+    # Reading the recipe's parameters again (in the studio's own process) opened it and waited there for a
+    # writer: no request was answered until Ctrl-C. Now it is refused, and the page shows why.
+    os.remove(recipe)
+    os.mkfifo(recipe)
+    state = until(lambda: (lambda a: a[0] == 200 and b"is a FIFO" in a[1] and a)(get(port, "/state")), 60, 0.2)
+    check(bool(state), "a FIFO swapped in for the recipe is shown as the run's error, the studio answering")
+    check(b"cannot open recipe '%s': is a FIFO, not a regular file" % recipe.encode() in (state or (0, b""))[1],
+          "... naming the recipe: %r" % (state or (0, b""))[1][:300])
+    status, _ = get(port, "/params")
+    check(status == 200, "with a FIFO for a recipe, /params is still answered (%s)" % status)
 
     # --- Ctrl-C while a slow client is mid-transfer -----------------------------------------------------
     slow = SlowReader(port, "/out/blob.bin")
