@@ -64,6 +64,25 @@ check "nothing written through the late links" nothing_outside
 check "the second run wrote its own folder" test -s late/level=2/m.vtp
 rm -f go.lua
 
+# The same for `run --watch` (and the studio, which runs the same way): a link put in place of its staging
+# folder after it was made is refused by the run, not written through. The hold is go/ahead.lua, in a folder
+# inside the recipe's, which the watcher does not watch (a change it saw would start the run again).
+mkdir -p wt/go
+sed 's/require, "go"/require, "go.ahead"/' hold.lua >wt/hold.lua
+"$selfsim" run wt/hold.lua -o wo --watch -q >"$tmp/out" 2>"$tmp/err" &
+watch=$!
+for _ in $(seq 1200); do [ -d wo/.selfsim-next ] && break; sleep 0.05; done
+check "the watched run started" test -d wo/.selfsim-next
+rm -rf wo/.selfsim-next
+ln -s "$tmp/outside" wo/.selfsim-next
+echo 'return true' >wt/go/ahead.lua
+for _ in $(seq 600); do grep -q "link" "$tmp/err" && break; sleep 0.05; done
+kill -INT "$watch"
+wait "$watch"
+check "the watched run names the link: $(head -2 "$tmp/err" | tr '\n' ' ')" grep -q "selfsim-next'.*link" "$tmp/err"
+check "nothing written through the staging link" nothing_outside
+check "nothing published" test ! -e wo/m.vtp
+
 # The writer itself: `preview --as` with a link two folders down.
 mkdir -p pv/a
 ln -s "$tmp/outside" pv/a/b
