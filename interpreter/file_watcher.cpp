@@ -1,8 +1,10 @@
 #include "interpreter/file_watcher.h"
 
+#include <linux/magic.h>
 #include <poll.h>
 #include <sys/inotify.h>
 #include <sys/stat.h>
+#include <sys/statfs.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -98,40 +100,59 @@ FileWatcher::FileWatcher(const std::vector<std::filesystem::path>& folders, cons
     : skip_(skip) {
   fd_ = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
   if (fd_ < 0) throw Error(std::string("cannot watch files (inotify): ") + std::strerror(errno));
-  for (const std::filesystem::path& f : folders) add(f, 0);
+  for (const std::filesystem::path& f : folders) tree(f, 0, base_);
+  all_ = base_;
 }
 
 FileWatcher::~FileWatcher() {
   if (fd_ >= 0) ::close(fd_);
 }
 
-void FileWatcher::add(const std::filesystem::path& folder, int depth) {
-  if (!skip_.empty() && same_folder(folder, skip_)) return;
+int FileWatcher::watch(const std::filesystem::path& folder) {
+  // A pseudo file system's entries change by themselves and hold no one's sources: a link through /proc
+  // (/proc/self/fd/0) is followed to what it names without watching /proc itself.
+  static constexpr unsigned long pseudo[] = {PROC_SUPER_MAGIC,   SYSFS_MAGIC,         DEVPTS_SUPER_MAGIC,
+                                             CGROUP_SUPER_MAGIC, CGROUP2_SUPER_MAGIC, DEBUGFS_MAGIC,
+                                             TRACEFS_MAGIC,      SECURITYFS_MAGIC,    BPF_FS_MAGIC};
+  struct statfs fs {};
+  if (::statfs(folder.c_str(), &fs) == 0 && std::ranges::count(pseudo, static_cast<unsigned long>(fs.f_type)) != 0)
+    return -1;
   const int wd = ::inotify_add_watch(fd_, folder.c_str(), events | IN_ONLYDIR);
   if (wd < 0) throw Error("cannot watch '" + folder.string() + "': " + std::strerror(errno));
-  watched_[wd] = folder;
-  alone_.erase(wd);  // watched for its links before: now for all its files
-  std::error_code ec0;
-  real_[std::filesystem::canonical(folder, ec0).string()] = wd;
+  if (watched_.emplace(wd, folder).second) {  // the same folder watched again gives the same descriptor
+    std::error_code ec;
+    real_[std::filesystem::canonical(folder, ec).string()] = wd;
+  }
+  return wd;
+}
+
+void FileWatcher::tree(const std::filesystem::path& folder, int depth, std::set<int>& into) {
+  if (!skip_.empty() && same_folder(folder, skip_)) return;
+  const int wd = watch(folder);
+  if (wd < 0) return;
+  into.insert(wd);
   if (depth >= 3) return;
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
     const std::string name = entry.path().filename().string();
-    if (name[0] != '.' && entry.is_directory(ec) && !entry.is_symlink(ec)) add(entry.path(), depth + 1);
+    if (name[0] != '.' && entry.is_directory(ec) && !entry.is_symlink(ec)) tree(entry.path(), depth + 1, into);
   }
 }
 
-void FileWatcher::add_alone(const std::filesystem::path& folder) {
-  const int wd = ::inotify_add_watch(fd_, folder.c_str(), events | IN_ONLYDIR);
-  if (wd < 0) throw Error("cannot watch '" + folder.string() + "': " + std::strerror(errno));
-  if (watched_.emplace(wd, folder).second) alone_.insert(wd);  // else already watched for all its files
-  real_[folder.string()] = wd;
+void FileWatcher::forget(int wd) {
+  watched_.erase(wd);
+  std::erase_if(real_, [&](const auto& r) { return r.second == wd; });
+  base_.erase(wd);
+  all_.erase(wd);
+  for (auto& [path, end] : ends_) end.all.erase(wd);
+  on_the_way_.erase(wd);
 }
 
 std::string FileWatcher::drain() {
   // The name to report: the last file written or moved in (sed and many editors write a temporary and
   // rename it over the source: the source's name comes last), else the last one moved away or deleted.
   std::string written, gone;
+  bool lost = false;
   alignas(inotify_event) char buffer[16384];
   for (;;) {
     const ssize_t n = ::read(fd_, buffer, sizeof buffer);
@@ -139,13 +160,13 @@ std::string FileWatcher::drain() {
     for (ssize_t at = 0; at < n;) {
       const auto* e = reinterpret_cast<const inotify_event*>(buffer + at);
       at += static_cast<ssize_t>(sizeof(inotify_event) + e->len);
-      if (e->mask & IN_IGNORED) {  // the folder itself was deleted or moved away
-        if (const auto w = watched_.find(e->wd); w != watched_.end()) {
-          // One watched for its links is watched again when a change brings it back on the way.
-          if (alone_.erase(e->wd) == 0) lost_.push_back(w->second);
-          watched_.erase(w);
-          std::erase_if(real_, [&](const auto& r) { return r.second == e->wd; });
-        }
+      const auto w = watched_.find(e->wd);
+      if (w == watched_.end()) continue;  // removed by refollow: its events still queued are no change
+      if (e->mask & IN_IGNORED) {         // the folder itself was deleted or moved away
+        // A given folder is watched again when it is back; one on a way, when a change brings it back there.
+        if (base_.count(e->wd) != 0) lost_.push_back(w->second);
+        forget(e->wd);
+        lost = true;
         continue;
       }
       if (e->len == 0) continue;
@@ -153,11 +174,18 @@ std::string FileWatcher::drain() {
       // in folders watched for all their files, unless folders or an editor's side files.
       const auto way = on_the_way_.find(e->wd);
       const bool on_way = way != on_the_way_.end() && way->second.count(e->name) != 0;
-      if (!on_way && ((e->mask & IN_ISDIR) || side_file(e->name) || alone_.count(e->wd) != 0)) continue;
+      if (!on_way && ((e->mask & IN_ISDIR) || side_file(e->name) || all_.count(e->wd) == 0)) continue;
+      // A device, pipe or socket written and closed (/dev/null, a terminal: every run writes them) is no
+      // change; a file gone since it was written still is.
+      struct stat st {};
+      if ((e->mask & IN_CLOSE_WRITE) && ::lstat((w->second / e->name).c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+        continue;
       ((e->mask & (IN_MOVED_FROM | IN_DELETE)) ? gone : written) = e->name;
     }
   }
-  refollow();  // a change in a watched folder may have made the recipe a link, or pointed it elsewhere
+  // A change may have made the recipe a link, or pointed it elsewhere (a change of a link on the way is
+  // counted, whatever its name); events that count for nothing change no way and cost no walk.
+  if (lost || !written.empty() || !gone.empty()) refollow();
   return written.empty() ? gone : written;
 }
 
@@ -167,28 +195,52 @@ void FileWatcher::follow(const std::filesystem::path& file) {
 }
 
 void FileWatcher::refollow() {
+  std::map<std::string, End> ends;
   on_the_way_.clear();
   for (const std::filesystem::path& file : followed_) {
     std::filesystem::path last;
     const std::vector<Step> way = way_to(file, last);
-    // The folder holding what the path names is watched for all its files (modules beside the recipe);
-    // a folder holding a link or a missing name on the way, for those names only.
+    // The way ends at a regular file: its folder is watched for all its files (modules beside the recipe).
+    // At a device, pipe or socket (/dev/null, /proc/self/fd/0), not at all: every process writes /dev, and
+    // what counts is the link to it being re-pointed, seen in the link's folder.
+    struct stat st {};
+    const bool at_end = !last.empty() && ::lstat((last / way.back().name).c_str(), &st) == 0;
+    const bool regular = at_end && S_ISREG(st.st_mode);
+    const bool special = at_end && !regular && !S_ISDIR(st.st_mode);
     for (const Step& step : way) {
-      const bool all = step.folder == last;
-      const auto known = real_.find(step.folder.string());
-      if (known != real_.end() && (!all || alone_.count(known->second) == 0)) continue;
-      if ((!all && !step.link && std::filesystem::exists(step.folder / step.name)) ||
-          (!skip_.empty() && inside(step.folder, skip_)))
-        continue;  // a plain folder on the way: watched only where a link or the end is
+      if ((!skip_.empty() && inside(step.folder, skip_)) || (special && &step == &way.back())) continue;
+      std::error_code ec;
+      int wd = -1;
       try {
-        all ? add(step.folder, 0) : add_alone(step.folder);
+        if (regular && &step == &way.back()) {
+          // An end watched already is kept as it is (its subfolders are not walked again at every change).
+          const std::string key = step.folder.string();
+          if (const auto old = ends_.find(key); old != ends_.end() && watched_.count(old->second.root) != 0)
+            ends[key] = old->second;
+          End& end = ends[key];
+          if (end.root < 0 && (end.root = watch(step.folder)) >= 0) tree(step.folder, 0, end.all);
+          wd = end.root;
+        } else if (step.link || &step == &way.back() || !std::filesystem::exists(step.folder / step.name, ec)) {
+          wd = watch(step.folder);  // a link or a missing name: that name only
+        } else if (const auto known = real_.find(step.folder.string()); known != real_.end()) {
+          wd = known->second;  // a plain folder on the way, in a folder watched for another reason
+        }
       } catch (const Error&) {  // not watchable (no permission): its changes go unseen, watching goes on
-        real_[step.folder.string()] = -1;
       }
+      if (wd >= 0) on_the_way_[wd].insert(step.name);
     }
-    for (const Step& step : way)
-      if (const auto known = real_.find(step.folder.string()); known != real_.end() && known->second >= 0)
-        on_the_way_[known->second].insert(step.name);
+  }
+  ends_ = std::move(ends);
+  all_ = base_;
+  for (const auto& [path, end] : ends_) all_.insert(end.all.begin(), end.all.end());
+  // A watch kept for no reason any more (a link's old target, the folder of a name no longer on the way)
+  // is removed: its files' writes must not start runs.
+  std::vector<int> stale;
+  for (const auto& [wd, folder] : watched_)
+    if (all_.count(wd) == 0 && on_the_way_.count(wd) == 0) stale.push_back(wd);
+  for (const int wd : stale) {
+    ::inotify_rm_watch(fd_, wd);
+    forget(wd);
   }
 }
 
@@ -207,7 +259,8 @@ bool FileWatcher::restore() {
   for (auto it = lost_.begin(); it != lost_.end();) {
     std::error_code ec;
     if (std::filesystem::is_directory(*it, ec)) {
-      add(*it, 3);  // the folder alone: its subfolders come back with events of their own
+      tree(*it, 3, base_);  // the folder alone: its subfolders come back with events of their own
+      all_.insert(base_.begin(), base_.end());
       it = lost_.erase(it);
       back = true;
     } else {

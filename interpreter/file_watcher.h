@@ -4,7 +4,8 @@
 //
 // Editors save in many ways (write in place, write a temporary and rename it over, vim's "4913" probe), so
 // any file written, moved in or deleted counts, except hidden files, backups ("x~", ".swp") and the output
-// folder (a run's own writes must not start the next run).
+// folder (a run's own writes must not start the next run). A device, pipe or socket written and closed is
+// no change: its content is no source, and every run writes /dev/null or a terminal.
 #pragma once
 
 #include <chrono>
@@ -41,23 +42,36 @@ class FileWatcher {
   // (a loop stops there). Resolved again after every change seen, so a recipe that becomes a link or a folder
   // link re-pointed while watched (an editor or stow replacing them) has its new target's edits seen. In a
   // folder watched only for its links, only the names on the way count, hidden or not (`.config` folded by
-  // stow); other files there are no change. Folders inside `skip` are left out (a run's writes).
+  // stow); other files there are no change. The folder at the end is watched for all its files only when
+  // the way ends at a regular file (not /dev/null, a terminal, a folder or a missing name: only that name
+  // counts there). Folders no longer on any way are no longer watched (a link's old target), folders inside
+  // `skip` (a run's writes) and on pseudo file systems (/proc, /sys) never are.
   void follow(const std::filesystem::path& file);
 
  private:
-  void add(const std::filesystem::path& folder, int depth);
-  void add_alone(const std::filesystem::path& folder);  // for the names on the way only (links_)
-  void refollow();      // watches the folders on the followed files' ways not watched yet
+  // The folder at the end of a followed way, watched for all its files, and its subfolders.
+  struct End {
+    int root = -1;
+    std::set<int> all;
+  };
+  int watch(const std::filesystem::path& folder);  // its descriptor; -1 for a pseudo file system (/proc)
+  void tree(const std::filesystem::path& folder, int depth, std::set<int>& into);
+  void forget(int wd);  // its records, once inotify dropped it or it was removed
+  void refollow();      // watches the followed files' ways as they are now, drops the watches no longer needed
   std::string drain();  // the first counted change among the pending events, or empty
 
+  // Why each watch exists decides what counts in it and when it goes: base_ (the recipe's own folders)
+  // stay; ends_ and on_the_way_ are computed again at every refollow and the watches in neither are removed.
   int fd_ = -1;
   std::filesystem::path skip_;
-  std::map<int, std::filesystem::path> watched_;     // by watch descriptor
-  std::vector<std::filesystem::path> lost_;          // deleted or moved away (git checkout may bring them back)
-  std::vector<std::filesystem::path> followed_;      // absolute paths of the files whose ways are followed
+  std::map<int, std::filesystem::path> watched_;     // every watch, by descriptor: its folder
   std::map<std::string, int> real_;                  // the watched folders' canonical paths, their descriptors
-  std::set<int> alone_;                              // descriptors watched for the names on the way only
+  std::set<int> base_;                               // the folders given and their subfolders: all their files
+  std::map<std::string, End> ends_;                  // by canonical path: the followed ways' end folders
+  std::set<int> all_;                                // base_ and every end's: watched for all their files
   std::map<int, std::set<std::string>> on_the_way_;  // by descriptor: the names on a followed file's way
+  std::vector<std::filesystem::path> lost_;          // given folders deleted (git checkout may bring them back)
+  std::vector<std::filesystem::path> followed_;      // absolute paths of the files whose ways are followed
 };
 
 // Whether an editor's side file (hidden, backup, swap, vim's "4913" probe) rather than a source.

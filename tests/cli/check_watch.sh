@@ -134,4 +134,53 @@ kill -INT "$pid2"
 wait "$pid2"
 pid2=
 
+# A link's old target folder is no longer watched once the link goes: r.lua a link to ../e/t.lua, then a
+# regular file again; writes in ../e start no run, so the next run logged is the next real edit's, and the
+# only one. The sleep gives a wrongly counted write room to start its own run (the fixed watcher needs none).
+changes() { grep -c ' changed' "$1"; }
+more_changes() { [ "$(changes ../log4.txt)" -gt "$1" ]; }
+last_run_wrote() { tail -1 ../log4.txt | grep -qF "wrote c.svg"; }
+cd "$tmp" && mkdir -p sw e && cd sw || exit 1
+printf 'local curves = require "selfsim.curves"\nsave(curves.dragon():curve(3), "c.svg")\n' >r.lua
+"$selfsim" run r.lua --watch -o out >../log4.txt 2>../err4.txt &
+pid2=$!
+until_ok same_drawing out/c.svg ../ref3/c.svg || fail "the first run of the old-target case: $(cat ../err4.txt)"
+printf 'local curves = require "selfsim.curves"\nsave(curves.dragon():curve(5), "c.svg")\n' >../e/t.lua
+ln -s ../e/t.lua .r.lua.link && mv -T .r.lua.link r.lua
+until_ok same_drawing out/c.svg ../ref5/c.svg || fail "replacing the recipe by a link to ../e did not re-run"
+save_as r.lua 'local curves = require "selfsim.curves"
+save(curves.dragon():curve(7), "c.svg")'
+until_ok same_drawing out/c.svg ../ref7/c.svg || fail "the recipe a regular file again did not re-run"
+until_ok last_run_wrote || fail "the run of the regular file again did not end"
+before=$(changes ../log4.txt)
+for i in 1 2 3; do echo "$i" >"../e/unrelated$i.txt"; done
+printf 'local curves = require "selfsim.curves"\nsave(curves.dragon():curve(3), "c.svg")\n' >../e/t.lua
+sleep 1
+save_as r.lua 'local curves = require "selfsim.curves"
+save(curves.dragon():curve(5), "c.svg")'
+until_ok same_drawing out/c.svg ../ref5/c.svg || fail "an edit after the writes in the old target did not re-run"
+[ "$(changes ../log4.txt)" = $((before + 1)) ] ||
+  fail "writes in a link's old target folder started runs: $(grep ' changed' ../log4.txt | tail -n +$((before + 1)))"
+grep ' changed' ../log4.txt | tail -1 | grep -qF "r.lua changed" || fail "the last run is not the edit's: $(tail -3 ../log4.txt)"
+
+# A recipe linked to a character device (/dev/null, whose folder every process writes in) runs once and does
+# not run again by itself, nor for writes to the device; the next run is the next real edit's.
+until_ok last_run_wrote || fail "the run of the edit did not end"
+n=$(changes ../log4.txt)
+ln -s /dev/null .r.lua.link && mv -T .r.lua.link r.lua
+until_ok more_changes "$n" || fail "a link to /dev/null is no change"
+until_ok grep -qF "the run failed" ../err4.txt || fail "the run of /dev/null did not end: $(tail -2 ../log4.txt)"
+grep -qF "cannot open recipe 'r.lua'" ../err4.txt || fail "a recipe linked to /dev/null: $(cat ../err4.txt)"
+before=$(changes ../log4.txt)
+for i in 1 2 3; do echo "$i" >/dev/null; done
+sleep 1
+save_as r.lua 'local curves = require "selfsim.curves"
+save(curves.dragon():curve(7), "c.svg")'
+until_ok same_drawing out/c.svg ../ref7/c.svg || fail "an edit after a link to /dev/null did not re-run"
+[ "$(changes ../log4.txt)" = $((before + 1)) ] ||
+  fail "a recipe linked to /dev/null ran by itself: $(grep ' changed' ../log4.txt | tail -n +$((before + 1)) | head -5)"
+kill -INT "$pid2"
+wait "$pid2"
+pid2=
+
 finish
