@@ -100,7 +100,12 @@ FileWatcher::FileWatcher(const std::vector<std::filesystem::path>& folders, cons
     : skip_(skip) {
   fd_ = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
   if (fd_ < 0) throw Error(std::string("cannot watch files (inotify): ") + std::strerror(errno));
-  for (const std::filesystem::path& f : folders) tree(f, 0, base_);
+  for (const std::filesystem::path& f : folders) {
+    std::error_code ec;
+    given_.emplace_back(std::filesystem::canonical(f, ec).string(), std::set<int>{});
+    tree(f, 0, given_.back().second);
+    base_.insert(given_.back().second.begin(), given_.back().second.end());
+  }
   all_ = base_;
 }
 
@@ -190,41 +195,69 @@ std::string FileWatcher::drain() {
 }
 
 void FileWatcher::follow(const std::filesystem::path& file) {
-  followed_.push_back(std::filesystem::absolute(file));
+  const std::filesystem::path path = std::filesystem::absolute(file);
+  followed_.emplace_back(path, false);
+  followed_.emplace_back(path.parent_path(), true);
+  // The file's own folder and the folder of what it links to now, when given, are followed as the ends of
+  // these ways: watched while the ways lead there, not for good (r.lua -> ../e/t.lua made a regular file
+  // again, or a folder link on the way re-pointed, left the old folder's writes starting runs). A folder
+  // given for another reason too (the scripts folder) stays.
+  std::error_code ec, ec2;
+  const std::string real = std::filesystem::canonical(file, ec).parent_path().string();
+  const std::string own = std::filesystem::canonical(path.parent_path(), ec2).string();
+  for (const std::string& key : {ec ? std::string() : real, ec2 ? std::string() : own}) {
+    const auto given = [&](const auto& g) { return g.first == key; };
+    if (key.empty() || std::ranges::count_if(given_, given) != 1) continue;
+    const auto it = std::ranges::find_if(given_, given);
+    std::set<int> kept;
+    for (const auto& [path, wds] : given_)
+      if (path != key) kept.insert(wds.begin(), wds.end());
+    for (const int wd : it->second)
+      if (kept.count(wd) == 0) base_.erase(wd);
+    given_.erase(it);
+  }
   refollow();
 }
 
 void FileWatcher::refollow() {
   std::map<std::string, End> ends;
   on_the_way_.clear();
-  for (const std::filesystem::path& file : followed_) {
+  // The end folder watched for all its files, and its subfolders; one watched already is kept as it is
+  // (its subfolders are not walked again at every change).
+  const auto end_at = [&](const std::filesystem::path& folder) {
+    const std::string key = folder.string();
+    if (const auto old = ends_.find(key); old != ends_.end() && watched_.count(old->second.root) != 0)
+      ends[key] = old->second;
+    End& end = ends[key];
+    if (end.root < 0 && (end.root = watch(folder)) >= 0) tree(folder, 0, end.all);
+  };
+  for (const auto& [file, folder] : followed_) {
     std::filesystem::path last;
     const std::vector<Step> way = way_to(file, last);
-    // The way ends at a regular file: its folder is watched for all its files (modules beside the recipe).
-    // At a device, pipe or socket (/dev/null, /proc/self/fd/0), not at all: every process writes /dev, and
-    // what counts is the link to it being re-pointed, seen in the link's folder.
+    // The way ends at a regular file: its folder is watched for all its files (modules beside the recipe);
+    // a followed folder, for all its files. At a device, pipe or socket (/dev/null, /proc/self/fd/0), not
+    // at all: every process writes /dev, and what counts is the link to it re-pointed, seen in the link's
+    // folder. At a missing name or one of another kind, only that name counts (its creation is a change).
     struct stat st {};
     const bool at_end = !last.empty() && ::lstat((last / way.back().name).c_str(), &st) == 0;
-    const bool regular = at_end && S_ISREG(st.st_mode);
-    const bool special = at_end && !regular && !S_ISDIR(st.st_mode);
+    const bool regular = at_end && !folder && S_ISREG(st.st_mode);
+    const bool special = at_end && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
+    const bool a_folder = at_end && folder && S_ISDIR(st.st_mode);
     for (const Step& step : way) {
-      if ((!skip_.empty() && inside(step.folder, skip_)) || (special && &step == &way.back())) continue;
+      const bool final = &step == &way.back();
+      if ((!skip_.empty() && inside(step.folder, skip_)) || (special && final)) continue;
       std::error_code ec;
       int wd = -1;
       try {
-        if (regular && &step == &way.back()) {
-          // An end watched already is kept as it is (its subfolders are not walked again at every change).
-          const std::string key = step.folder.string();
-          if (const auto old = ends_.find(key); old != ends_.end() && watched_.count(old->second.root) != 0)
-            ends[key] = old->second;
-          End& end = ends[key];
-          if (end.root < 0 && (end.root = watch(step.folder)) >= 0) tree(step.folder, 0, end.all);
-          wd = end.root;
-        } else if (step.link || &step == &way.back() || !std::filesystem::exists(step.folder / step.name, ec)) {
+        if (regular && final) {
+          end_at(step.folder);
+          wd = ends[step.folder.string()].root;
+        } else if (step.link || (final && !a_folder) || !std::filesystem::exists(step.folder / step.name, ec)) {
           wd = watch(step.folder);  // a link or a missing name: that name only
         } else if (const auto known = real_.find(step.folder.string()); known != real_.end()) {
           wd = known->second;  // a plain folder on the way, in a folder watched for another reason
         }
+        if (a_folder && final) end_at(step.folder / step.name);
       } catch (const Error&) {  // not watchable (no permission): its changes go unseen, watching goes on
       }
       if (wd >= 0) on_the_way_[wd].insert(step.name);

@@ -44,8 +44,10 @@ class FileWatcher {
   // folder watched only for its links, only the names on the way count, hidden or not (`.config` folded by
   // stow); other files there are no change. The folder at the end is watched for all its files only when
   // the way ends at a regular file (not /dev/null, a terminal, a folder or a missing name: only that name
-  // counts there). Folders no longer on any way are no longer watched (a link's old target), folders inside
-  // `skip` (a run's writes) and on pseudo file systems (/proc, /sys) never are.
+  // counts there); `file`'s own folder, as its path names it now, too (modules beside a link). Those two, when
+  // among `folders`, are watched only while the ways lead there: folders no longer on any way are no longer
+  // watched (a link's old target, a folder link's old folder); folders inside `skip` (a run's writes) and on
+  // pseudo file systems (/proc, /sys) never are.
   void follow(const std::filesystem::path& file);
 
  private:
@@ -64,14 +66,17 @@ class FileWatcher {
   // stay; ends_ and on_the_way_ are computed again at every refollow and the watches in neither are removed.
   int fd_ = -1;
   std::filesystem::path skip_;
-  std::map<int, std::filesystem::path> watched_;     // every watch, by descriptor: its folder
-  std::map<std::string, int> real_;                  // the watched folders' canonical paths, their descriptors
-  std::set<int> base_;                               // the folders given and their subfolders: all their files
-  std::map<std::string, End> ends_;                  // by canonical path: the followed ways' end folders
-  std::set<int> all_;                                // base_ and every end's: watched for all their files
-  std::map<int, std::set<std::string>> on_the_way_;  // by descriptor: the names on a followed file's way
-  std::vector<std::filesystem::path> lost_;          // given folders deleted (git checkout may bring them back)
-  std::vector<std::filesystem::path> followed_;      // absolute paths of the files whose ways are followed
+  std::map<int, std::filesystem::path> watched_;              // every watch, by descriptor: its folder
+  std::map<std::string, int> real_;                           // the watched folders' canonical paths, their descriptors
+  std::set<int> base_;                                        // the folders given and their subfolders: all their files
+  std::vector<std::pair<std::string, std::set<int>>> given_;  // each folder given: its canonical path, its tree
+  std::map<std::string, End> ends_;                           // by canonical path: the followed ways' end folders
+  std::set<int> all_;                                         // base_ and every end's: watched for all their files
+  std::map<int, std::set<std::string>> on_the_way_;           // by descriptor: the names on a followed file's way
+  std::vector<std::filesystem::path> lost_;  // given folders deleted (git checkout may bring them back)
+  // Absolute paths whose ways are followed: the files, and their folders (where require finds modules),
+  // which are watched for all their files where they lead now.
+  std::vector<std::pair<std::filesystem::path, bool>> followed_;  // true for a folder
 };
 
 // Whether an editor's side file (hidden, backup, swap, vim's "4913" probe) rather than a source.

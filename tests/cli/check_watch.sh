@@ -17,6 +17,11 @@ until_ok() {
 same_drawing() { cmp -s <(grep -v selfsim_provenance "$1") <(grep -v selfsim_provenance "$2"); }
 # Whether the watcher has a run going (its own child, not any selfsim on the machine).
 slow_run_started() { [ -n "$(children "$pid" out/.selfsim-next)" ]; }
+# changes LOG: how many changes a watcher's log names; more_changes LOG N: whether more than N;
+# last_run_wrote LOG: whether the last line is a run that ended writing c.svg.
+changes() { grep -c ' changed' "$1"; }
+more_changes() { [ "$(changes "$1")" -gt "$2" ]; }
+last_run_wrote() { tail -1 "$1" | grep -qF "wrote c.svg"; }
 # Writes a file as editors do: a temporary renamed over it.
 save_as() { printf '%s\n' "$2" >".$1.new" && mv ".$1.new" "$1"; }
 
@@ -121,8 +126,16 @@ pid2=$!
 until_ok same_drawing out/c.svg ../ref3/c.svg || fail "the first run through a folder link: $(cat ../err3.txt)"
 ln -s v3 .cur.new && mv -T .cur.new cur
 until_ok same_drawing out/c.svg ../ref5/c.svg || fail "re-pointing a folder link on the way did not re-run"
+# The old target is no longer the recipe's folder: writes there start no run (the sleep, as below).
+until_ok last_run_wrote ../log3.txt || fail "the run of the re-pointed folder link did not end"
+before=$(changes ../log3.txt)
+printf 'local curves = require "selfsim.curves"\nsave(curves.dragon():curve(7), "c.svg")\n' >v2/r.lua
+echo 1 >v2/unrelated.lua
+sleep 1
 printf 'local curves = require "selfsim.curves"\nsave(curves.dragon():curve(7), "c.svg")\n' >v3/r.lua
 until_ok same_drawing out/c.svg ../ref7/c.svg || fail "an edit in the folder link's new target did not re-run"
+[ "$(changes ../log3.txt)" = $((before + 1)) ] ||
+  fail "writes in a folder link's old target started runs: $(grep ' changed' ../log3.txt | tail -n +$((before + 1)))"
 ln -s cur loop && ln -s loop .cur.new && mv -T .cur.new cur
 until_ok grep -qF "cannot open recipe 'cur/r.lua': Too many levels of symbolic links" ../err3.txt ||
   fail "a link loop on the way is not named: $(cat ../err3.txt)"
@@ -137,9 +150,6 @@ pid2=
 # A link's old target folder is no longer watched once the link goes: r.lua a link to ../e/t.lua, then a
 # regular file again; writes in ../e start no run, so the next run logged is the next real edit's, and the
 # only one. The sleep gives a wrongly counted write room to start its own run (the fixed watcher needs none).
-changes() { grep -c ' changed' "$1"; }
-more_changes() { [ "$(changes ../log4.txt)" -gt "$1" ]; }
-last_run_wrote() { tail -1 ../log4.txt | grep -qF "wrote c.svg"; }
 cd "$tmp" && mkdir -p sw e && cd sw || exit 1
 printf 'local curves = require "selfsim.curves"\nsave(curves.dragon():curve(3), "c.svg")\n' >r.lua
 "$selfsim" run r.lua --watch -o out >../log4.txt 2>../err4.txt &
@@ -151,7 +161,7 @@ until_ok same_drawing out/c.svg ../ref5/c.svg || fail "replacing the recipe by a
 save_as r.lua 'local curves = require "selfsim.curves"
 save(curves.dragon():curve(7), "c.svg")'
 until_ok same_drawing out/c.svg ../ref7/c.svg || fail "the recipe a regular file again did not re-run"
-until_ok last_run_wrote || fail "the run of the regular file again did not end"
+until_ok last_run_wrote ../log4.txt || fail "the run of the regular file again did not end"
 before=$(changes ../log4.txt)
 for i in 1 2 3; do echo "$i" >"../e/unrelated$i.txt"; done
 printf 'local curves = require "selfsim.curves"\nsave(curves.dragon():curve(3), "c.svg")\n' >../e/t.lua
@@ -165,10 +175,10 @@ grep ' changed' ../log4.txt | tail -1 | grep -qF "r.lua changed" || fail "the la
 
 # A recipe linked to a character device (/dev/null, whose folder every process writes in) runs once and does
 # not run again by itself, nor for writes to the device; the next run is the next real edit's.
-until_ok last_run_wrote || fail "the run of the edit did not end"
+until_ok last_run_wrote ../log4.txt || fail "the run of the edit did not end"
 n=$(changes ../log4.txt)
 ln -s /dev/null .r.lua.link && mv -T .r.lua.link r.lua
-until_ok more_changes "$n" || fail "a link to /dev/null is no change"
+until_ok more_changes ../log4.txt "$n" || fail "a link to /dev/null is no change"
 until_ok grep -qF "the run failed" ../err4.txt || fail "the run of /dev/null did not end: $(tail -2 ../log4.txt)"
 grep -qF "cannot open recipe 'r.lua'" ../err4.txt || fail "a recipe linked to /dev/null: $(cat ../err4.txt)"
 before=$(changes ../log4.txt)
