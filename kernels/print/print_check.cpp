@@ -112,27 +112,32 @@ Samples samples_of(const Mesh& m, bool inward, double spacing, double count) {
 // and reads a thick body as thin. Measured from the solid's edges, not the triangle's, so the same face as
 // two triangles or as 20,000 slivers keeps the same points. A smooth patch narrower than two insets (a thin
 // slab's side, a tube's facet) keeps its points at least half as far from its edges as its farthest.
-Samples clear_of_edges(const Mesh& m, const Samples& all, double inset) {
+void clear_of_edges(const Mesh& m, Samples& s, double inset) {
   const SharpEdges edges(m, 2 * inset);
-  std::vector<double> clear(all.points.size());
+  std::vector<double> clear(s.points.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, clear.size(), 4096),
                     [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t i = r.begin(); i != r.end(); ++i) clear[i] = edges.distance(all.points[i]);
+                      for (std::size_t i = r.begin(); i != r.end(); ++i) clear[i] = edges.distance(s.points[i]);
                     });
   std::vector<double> farthest(edges.patch_count(), 0);
   for (std::size_t i = 0; i < clear.size(); ++i) {
-    double& f = farthest[edges.patches()[all.face[i]]];
+    double& f = farthest[edges.patches()[s.face[i]]];
     f = std::max(f, clear[i]);
   }
-  Samples s;
+  // Kept in place, in order (a triangle's points stay consecutive): no second copy of the points.
+  std::size_t kept = 0;
   for (std::size_t i = 0; i < clear.size(); ++i) {
-    if (clear[i] < std::min(inset, 0.5 * farthest[edges.patches()[all.face[i]]])) continue;
-    s.points.push_back(all.points[i]);
-    s.normals.push_back(all.normals[i]);
-    s.face.push_back(all.face[i]);
-    s.area.push_back(all.area[i]);
+    if (clear[i] < std::min(inset, 0.5 * farthest[edges.patches()[s.face[i]]])) continue;
+    s.points[kept] = s.points[i];
+    s.normals[kept] = s.normals[i];
+    s.face[kept] = s.face[i];
+    s.area[kept] = s.area[i];
+    ++kept;
   }
-  return s;
+  s.points.resize(kept);
+  s.normals.resize(kept);
+  s.face.resize(kept);
+  s.area.resize(kept);
 }
 
 // Faces of closed shells that face inwards inside the solid: a sealed cavity's walls (their enclosed volume
@@ -249,7 +254,8 @@ void measure(const Mesh& m, const PointBudget& budget, Progress& progress, Print
   ProgressStage build(progress, 0.3, 0.7);
   const WallGrid grid(v, r.voxel, depth, budget, build, outside);
   r.error = grid.error();
-  const Samples s = clear_of_edges(m, samples_of(m, r.inward, r.spacing, n), r.voxel);
+  Samples s = samples_of(m, r.inward, r.spacing, n);
+  clear_of_edges(m, s, r.voxel);
   std::vector<double> wall(s.points.size()), gap(s.points.size());
   ProgressStage rays(progress, 0.7, 1);
   measure_rays(

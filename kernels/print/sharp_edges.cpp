@@ -95,15 +95,15 @@ double SharpEdges::distance(Vec3 p) const {
   double best = reach_;
   const Vec3 c = (1 / cell_) * (p - origin_);
   const long cx = std::lround(std::floor(c.x)), cy = std::lround(std::floor(c.y)), cz = std::lround(std::floor(c.z));
-  for (long x = cx - 1; x <= cx + 1; ++x)
-    for (long y = cy - 1; y <= cy + 1; ++y)
-      for (long z = cz - 1; z <= cz + 1; ++z) {
-        if (x < -1 || y < -1 || z < -1) continue;
-        const std::uint64_t k = key(x, y, z);
-        auto it = std::lower_bound(cells_.begin(), cells_.end(), std::pair<std::uint64_t, std::uint32_t>{k, 0});
-        for (; it != cells_.end() && it->first == k; ++it)
-          best = std::min(best, segment_distance(p, edges_[it->second].first, edges_[it->second].second));
-      }
+  // x is the key's lowest part: the three cells along x are one run of keys, found with one search.
+  for (long y = std::max(cy - 1, -1L); y <= cy + 1; ++y)
+    for (long z = std::max(cz - 1, -1L); z <= cz + 1; ++z) {
+      const std::uint64_t last = key(cx + 1, y, z);
+      auto it = std::lower_bound(cells_.begin(), cells_.end(),
+                                 std::pair<std::uint64_t, std::uint32_t>{key(std::max(cx - 1, -1L), y, z), 0});
+      for (; it != cells_.end() && it->first <= last; ++it)
+        best = std::min(best, segment_distance(p, edges_[it->second].first, edges_[it->second].second));
+    }
   return best;
 }
 
