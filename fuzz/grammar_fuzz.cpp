@@ -22,6 +22,7 @@
 #include "kernels/geom/error.h"
 #include "kernels/geom/polyline.h"
 #include "kernels/lsystem/production_count.h"
+#include "kernels/lsystem/rewrite.h"
 #include "kernels/lsystem/turtle2d.h"
 
 namespace {
