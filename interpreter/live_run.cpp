@@ -9,14 +9,14 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
-#include <fstream>
-#include <iterator>
 
 #include "interpreter/commands.h"
 #include "interpreter/spawn_selfsim.h"
 #include "interpreter/sweep.h"
 #include "kernels/io/output_file.h"
+#include "kernels/io/regular_file.h"
 
 namespace selfsim::interp {
 
@@ -118,9 +118,13 @@ bool LiveRun::finished(LiveResult& result) {
   result.code = exit_code(status);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
   if (capture_) {
-    std::ifstream in(log_);
-    result.log.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    result.log.resize(std::min<std::size_t>(result.log.size(), 16384));
+    try {  // read as every input is: a FIFO swapped in at the log's name is refused, never waited on
+      const io::RegularFile in(log_, true);
+      result.log.resize(static_cast<std::size_t>(std::min<std::uint64_t>(in.size(), 16384)));
+      result.log.resize(in.read_at(0, result.log.data(), result.log.size()));
+    } catch (const Error&) {
+      result.log.clear();
+    }
   }
   std::error_code ec;
   try {

@@ -216,7 +216,7 @@ void check_sweep_params(const RunConfig& sweep, const SweepPlan& plan) {
   for (const ParamSpec& p : read.specs) names.push_back(p.name);
   for (const auto& [key, text] : sweep.sets) {
     const auto spec =
-        std::find_if(read.specs.begin(), read.specs.end(), [&](const ParamSpec& p) { return p.name == key; });
+        std::find_if(read.specs.begin(), read.specs.end(), [&k = key](const ParamSpec& p) { return p.name == k; });
     if (spec == read.specs.end()) {
       const std::string near = suggestion(key, names);
       if (!read.stopped_at.empty()) {  // perhaps declared after the first heavy step: each run checks it

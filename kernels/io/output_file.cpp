@@ -292,12 +292,21 @@ void make_folder(const std::filesystem::path& root, const std::filesystem::path&
 
 int open_log(const std::filesystem::path& root, const std::filesystem::path& name) {
   const auto [dir, leaf] = open_parent(root, name);
-  const int fd = ::openat(dir, leaf.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0644);
+  // O_NONBLOCK: a FIFO planted at the log's name must not hold the caller (the studio's loop) until a
+  // reader comes; whatever opens is then taken only if it is a regular file.
+  const int fd = ::openat(dir, leaf.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK, 0644);
   const int err = errno;
   ::close(dir);
   if (fd < 0)
-    throw Error("cannot write '" + (root / name).string() +
-                "': " + (err == ELOOP ? std::string("it is a symbolic link") : std::strerror(err)));
+    throw Error("cannot write '" + (root / name).string() + "': " +
+                (err == ELOOP   ? std::string("it is a symbolic link")
+                 : err == ENXIO ? std::string("it is not a regular file")
+                                : std::strerror(err)));
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
+    throw Error("cannot write '" + (root / name).string() + "': it is not a regular file");
+  }
   return fd;
 }
 

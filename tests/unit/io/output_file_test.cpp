@@ -1,6 +1,7 @@
 #include "kernels/io/output_file.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <fstream>
@@ -134,6 +135,15 @@ TEST(OutputFile, FoldersLogsAndMovesRefuseLinksOnTheWay) {
   io::move_file(d.path / "out", "staged/a.svg", "made/on/a.svg");
   EXPECT_EQ(read(d.path / "out/made/on/a.svg"), "a");
   EXPECT_FALSE(fs::exists(d.path / "out/staged/a.svg"));
+}
+
+// A FIFO at a log's name is refused at once, never waited on for a reader (the studio opens run logs in its
+// own loop).
+TEST(OutputFile, OpenLogRefusesAFifoWithoutWaiting) {
+  TempDir d;
+  fs::create_directories(d.path / "out");
+  ASSERT_EQ(::mkfifo((d.path / "out/run.log").c_str(), 0600), 0);
+  EXPECT_THROW(::close(io::open_log(d.path / "out", "run.log")), Error);
 }
 
 // make_folder takes the rule of every other name below the root: no absolute path, no climbing out.
