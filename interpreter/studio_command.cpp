@@ -108,8 +108,8 @@ struct Studio {
   // Throws Error naming the first value that is no parameter or outside its range or choices.
   void check(const std::map<std::string, std::string>& given) const {
     for (const auto& [key, value] : given) {
-      const auto spec =
-          std::find_if(params.specs.begin(), params.specs.end(), [&](const ParamSpec& p) { return p.name == key; });
+      const auto spec = std::find_if(params.specs.begin(), params.specs.end(),
+                                     [&k = key](const ParamSpec& p) { return p.name == k; });
       if (spec == params.specs.end()) throw Error("the recipe has no parameter '" + key + "'");
       check_param_value(*spec, value);
     }

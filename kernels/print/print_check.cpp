@@ -286,9 +286,8 @@ void add_findings(PrintReport& r) {
                          std::to_string(r.crossing->first + 1) + " and " + std::to_string(r.crossing->second + 1) +
                          ")");
   const auto places = [](std::size_t n) { return count_text(double(n)) + (n == 1 ? " place" : " places"); };
-  // A crossing within the rays' first step is below what the grid resolves: said as "under" that step.
-  const double step = r.voxel / 2;
-  const auto measured = [&](double v) { return v <= 0.5 * step ? r.unresolved() : mm_text(v); };
+  // A crossing within the rays' first half step is below what the grid resolves: said as "under" its bound.
+  const auto measured = [&](double v) { return r.resolves(v) ? mm_text(v) : r.unresolved(); };
   if (r.wall.measured && r.wall.under > 0 && !r.speck(r.wall))
     r.findings.push_back("walls thinner than " + mm_text(rules.min_wall) + " at " + places(r.wall.under) +
                          ", the thinnest " + measured(r.wall.value) + " at " + mm_point_text(r.wall.where));
@@ -317,12 +316,11 @@ void add_findings(PrintReport& r) {
 }  // namespace
 
 std::string PrintReport::summary() const {
-  const double step = voxel / 2;
   const auto at_least = [&](const Spot& s, double cap) {
     // Under the threshold over less than the nozzle's spot: no finding, and said so.
     const std::string speck =
         this->speck(s) ? " on a " + area_text(s.area_under) + " speck, smaller than the nozzle's spot" : "";
-    if (s.value <= 0.5 * step) return unresolved() + speck;
+    if (!resolves(s.value)) return unresolved() + speck;
     return (s.value >= cap ? ">= " : "") + mm_text(std::min(s.value, cap)) + speck;
   };
   std::string facts = size_text(box.size()) + ", " + count_text(double(triangles)) + " triangles";

@@ -65,6 +65,10 @@ struct PrintReport {
   // distance grid's 0.13 mm voxels: finer than it resolves)": a wall tilted against the lattice reads so up
   // to about 1.4 voxels.
   std::string unresolved() const;
+  // Whether a wall or gap reading is one the grid resolves (crossed past the rays' first half step); one
+  // it does not is only known to be under unresolved_bound().
+  bool resolves(double value) const { return value > 0.25 * voxel; }
+  double unresolved_bound() const { return 2 * voxel; }
 };
 
 // Checks m (in millimetres) against rules. With `marked`, also returns m with the point and face fields

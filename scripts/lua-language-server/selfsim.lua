@@ -472,6 +472,8 @@ function Volume:boundary(options) end
 ---@field crossing boolean whether it crosses itself
 ---@field thinnest_wall? number mm (nil when not measured)
 ---@field narrowest_gap? number mm (nil when not measured)
+---@field wall_resolved? boolean false when the thinnest wall is finer than the grid resolves (thinnest_wall is then the bound it is under)
+---@field gap_resolved? boolean false when the narrowest gap is finer than the grid resolves (narrowest_gap is then the bound it is under)
 ---@field thin? integer places under min_wall
 ---@field narrow? integer places under min_gap
 
