@@ -169,7 +169,10 @@ std::string FileWatcher::drain() {
       if (w == watched_.end()) continue;  // removed by refollow: its events still queued are no change
       if (e->mask & IN_IGNORED) {         // the folder itself was deleted or moved away
         // A given folder is watched again when it is back; one on a way, when a change brings it back there.
-        if (base_.count(e->wd) != 0) lost_.push_back(w->second);
+        // An end's own folder, when back, is watched again by refollow (its name is on the way).
+        if (base_.count(e->wd) != 0) lost_.emplace_back(w->second, "");
+        for (const auto& [key, end] : ends_)
+          if (end.root != e->wd && end.all.count(e->wd) != 0) lost_.emplace_back(w->second, key);
         forget(e->wd);
         lost = true;
         continue;
@@ -291,9 +294,13 @@ bool FileWatcher::restore() {
   bool back = false;
   for (auto it = lost_.begin(); it != lost_.end();) {
     std::error_code ec;
-    if (std::filesystem::is_directory(*it, ec)) {
-      tree(*it, 3, base_);  // the folder alone: its subfolders come back with events of their own
-      all_.insert(base_.begin(), base_.end());
+    const auto end = ends_.find(it->second);
+    if (!it->second.empty() && end == ends_.end()) {
+      it = lost_.erase(it);  // its end is no longer on any way: no longer wanted
+    } else if (std::filesystem::is_directory(it->first, ec)) {
+      std::set<int>& into = it->second.empty() ? base_ : end->second.all;
+      tree(it->first, 3, into);  // the folder alone: its subfolders come back with events of their own
+      all_.insert(into.begin(), into.end());
       it = lost_.erase(it);
       back = true;
     } else {

@@ -73,7 +73,8 @@ class FileWatcher {
   std::map<std::string, End> ends_;                           // by canonical path: the followed ways' end folders
   std::set<int> all_;                                         // base_ and every end's: watched for all their files
   std::map<int, std::set<std::string>> on_the_way_;           // by descriptor: the names on a followed file's way
-  std::vector<std::filesystem::path> lost_;  // given folders deleted (git checkout may bring them back)
+  // Folders deleted (git checkout may bring them back), and the end they belong to ("" for the given ones).
+  std::vector<std::pair<std::filesystem::path, std::string>> lost_;
   // Absolute paths whose ways are followed: the files, and their folders (where require finds modules),
   // which are watched for all their files where they lead now.
   std::vector<std::pair<std::filesystem::path, bool>> followed_;  // true for a folder
