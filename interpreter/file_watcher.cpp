@@ -213,8 +213,8 @@ void FileWatcher::follow(const std::filesystem::path& file) {
     if (key.empty() || std::ranges::count_if(given_, given) != 1) continue;
     const auto it = std::ranges::find_if(given_, given);
     std::set<int> kept;
-    for (const auto& [path, wds] : given_)
-      if (path != key) kept.insert(wds.begin(), wds.end());
+    for (const auto& [where, wds] : given_)
+      if (where != key) kept.insert(wds.begin(), wds.end());
     for (const int wd : it->second)
       if (kept.count(wd) == 0) base_.erase(wd);
     given_.erase(it);
