@@ -12,22 +12,12 @@
 
 using namespace selfsim;
 using namespace selfsim::lsystem;
+using test::draws_f;
+using test::rules_of;
 
 namespace {
 
 constexpr double unlimited = std::numeric_limits<double>::infinity();
-
-std::vector<Production> rules_of(const std::vector<std::string>& texts) {
-  std::vector<Production> out;
-  for (const std::string& t : texts) out.push_back(parse_rule(t, "entry " + std::to_string(out.size() + 1)));
-  return out;
-}
-
-std::array<bool, 256> draws_f() {
-  std::array<bool, 256> steps{};
-  steps['F'] = true;
-  return steps;
-}
 
 // The size of one module's expansion by `rules` to max_depth.
 ExpansionSize size_of(const Grammar& g, const std::vector<Production>& rules, std::uint8_t symbol,

@@ -12,20 +12,10 @@
 
 using namespace selfsim;
 using namespace selfsim::lsystem;
+using test::draws_f;
+using test::rules_of;
 
 namespace {
-
-std::vector<Production> rules_of(const std::vector<std::string>& texts) {
-  std::vector<Production> out;
-  for (const std::string& t : texts) out.push_back(parse_rule(t, "entry " + std::to_string(out.size() + 1)));
-  return out;
-}
-
-std::array<bool, 256> draws_f() {
-  std::array<bool, 256> steps{};
-  steps['F'] = true;
-  return steps;
-}
 
 struct Counter : ModuleSink {
   double modules = 0, steps = 0;
