@@ -53,8 +53,9 @@ deps:
 $(BUILD)/CMakeCache.txt:
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
 
+# The selfsim executable and its plugins only (what `demo` runs); `test` builds the unit tests too.
 build: deps $(BUILD)/CMakeCache.txt
-	cmake --build $(BUILD) -j $(JOBS)
+	cmake --build $(BUILD) -j $(JOBS) --target selfsim
 
 # Runs the gallery (examples/gallery.lua: one result of each part of selfsim), draws a PNG of each output
 # with `selfsim preview`, and renders the run's ParaView view (out/view.py) to out/view.png with pvbatch.
@@ -70,6 +71,7 @@ demo: deps build
 
 test: build
 	@$(MAKE) --no-print-directory deps PACKAGES="$(PACKAGES) $(TEST_PACKAGES)"
+	cmake --build $(BUILD) -j $(JOBS)
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 sanitize: deps
