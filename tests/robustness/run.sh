@@ -76,7 +76,9 @@ for threads in 2 7; do
 done
 
 # --- SIGKILL mid-write leaves no partial file, and no temporary ------------------------------------------
-recipe write_big 'local c = require("selfsim.curves").dragon():curve(20); for i = 1, 40 do save(c, "big" .. i .. ".vtp") end'
+# The recipe never ends (a loop after its saves), so the kill always finds it running however fast the
+# machine writes: a run that finished first wrote view.py, a whole file, and failed the check by a race.
+recipe write_big 'local c = require("selfsim.curves").dragon():curve(20); for i = 1, 40 do save(c, "big" .. i .. ".vtp") end; while true do end'
 "$selfsim" run write_big.lua -o out_kill -q 2>/dev/null &
 pid=$!
 sleep 1.5
