@@ -44,16 +44,12 @@ rm -rf ./0*
   finish
   exit
 }
-run_selfsim sweep m.lua -o tw --set level=1..4 --no-sheet -q --timeout 5
-check "four runs: $(first_err)" test "$code" = 0
-held=
-for _ in 1 2 3 4 5; do # a preview that ends before it is seen is drawn again
-  "$selfsim" sweep m.lua -o tw --set level=1..4 --collect -q --timeout 5 >out 2>err &
-  sweep=$!
-  while kill -0 "$sweep" 2>/dev/null && [ -z "$held" ]; do
-    for c in $(pgrep -P "$sweep"); do
+# Stops the sweep's own preview child (a child of pid $1) as soon as it appears, setting held to its pid; held
+# only once seen stopped, so a child that had already ended is tried again. Returns when the sweep ends.
+hold_preview() {
+  while kill -0 "$1" 2>/dev/null && [ -z "$held" ]; do
+    for c in $(pgrep -P "$1"); do
       if grep -qaF preview "/proc/$c/cmdline" 2>/dev/null && kill -STOP "$c" 2>/dev/null; then
-        # Held only once seen stopped: a child that had already ended is tried again.
         for _ in $(seq 100); do
           [ "$(awk '{print $3}' "/proc/$c/stat" 2>/dev/null)" = T ] && held=$c && break
           sleep 0.05
@@ -62,6 +58,15 @@ for _ in 1 2 3 4 5; do # a preview that ends before it is seen is drawn again
     done
     sleep 0.02
   done
+}
+
+run_selfsim sweep m.lua -o tw --set level=1..4 --no-sheet -q --timeout 5
+check "four runs: $(first_err)" test "$code" = 0
+held=
+for _ in 1 2 3 4 5; do # a preview that ends before it is seen is drawn again
+  "$selfsim" sweep m.lua -o tw --set level=1..4 --collect -q --timeout 5 >out 2>err &
+  sweep=$!
+  hold_preview "$sweep"
   if [ -n "$held" ]; then
     sleep 6 # past the run's --timeout of 5 s, within the batch's 4 x 5 s
     kill -CONT "$held"
@@ -86,17 +91,7 @@ for how in local collect; do
   fi
   sweep=$!
   held=
-  while kill -0 "$sweep" 2>/dev/null && [ -z "$held" ]; do
-    for c in $(pgrep -P "$sweep"); do
-      if grep -qaF preview "/proc/$c/cmdline" 2>/dev/null && kill -STOP "$c" 2>/dev/null; then
-        for _ in $(seq 100); do
-          [ "$(awk '{print $3}' "/proc/$c/stat" 2>/dev/null)" = T ] && held=$c && break
-          sleep 0.05
-        done
-      fi
-    done
-    sleep 0.02
-  done
+  hold_preview "$sweep"
   if [ -z "$held" ]; then
     wait "$sweep"
     echo "note: the $how preview ended before it was seen; its SIGTERM case was not tried"
