@@ -14,7 +14,7 @@
 #include "kernels/develop/thicken.h"
 #include "kernels/geom/mesh_intersections.h"
 #include "kernels/lsystem/grammar.h"
-#include "kernels/lsystem/turtle2d.h"
+#include "kernels/lsystem/turtle/turtle2d.h"
 
 using namespace selfsim;
 using namespace selfsim::develop;

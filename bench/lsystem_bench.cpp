@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "kernels/lsystem/turtle2d.h"
+#include "kernels/lsystem/turtle/turtle2d.h"
 
 using namespace selfsim;
 

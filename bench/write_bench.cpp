@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "kernels/io/save.h"
-#include "kernels/lsystem/turtle2d.h"
+#include "kernels/lsystem/turtle/turtle2d.h"
 
 using namespace selfsim;
 

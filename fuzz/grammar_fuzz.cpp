@@ -19,11 +19,11 @@
 
 #include "fuzz/fuzz_support.h"
 #include "fuzz/grammar_text.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/geom/polyline.h"
 #include "kernels/lsystem/production_count.h"
 #include "kernels/lsystem/rewrite.h"
-#include "kernels/lsystem/turtle2d.h"
+#include "kernels/lsystem/turtle/turtle2d.h"
 
 namespace {
 

@@ -31,7 +31,7 @@ fuzz_export_env() {
 # inputs that hit the same bug: the kind of failure and where it happened, numbers blurred.
 #   FUZZ-FINDING lines (the targets' own checks) give their message;
 #   otherwise the sanitizer's or libFuzzer's kind, and the first stack frame in the project's kernels/ or
-#   interpreter/ (else the first frame outside libFuzzer, the sanitizers and libc).
+#   frontend/ (else the first frame outside libFuzzer, the sanitizers and libc).
 signature() {
   local log=$1 kind where
   if grep -q '^FUZZ-FINDING: ' "$log"; then
@@ -47,13 +47,13 @@ signature() {
   # Stack frames: "#3 0x55... in selfsim::f(int) /work/main/kernels/x.cpp:12:7" or "#4 0x7f... (/lib/liblua.so+0x1f6)".
   local frames
   frames=$(grep -E '^ +#[0-9]+ 0x[0-9a-f]+ ' "$log" | sed -E 's/ \(BuildId: [0-9a-f]+\)//')
-  where=$(echo "$frames" | grep -E '/(kernels|interpreter)/' | head -1)
+  where=$(echo "$frames" | grep -E '/(kernels|frontend)/' | head -1)
   if [ -z "$where" ]; then
     where=$(echo "$frames" |
             grep -vE 'fuzzer::|__sanitizer|__asan|__ubsan|__lsan|libc\.so|nptl/|stdlib/|signal/|csu/|LLVMFuzzerTestOneInput|selfsim::fuzz::| in (main|_start|malloc|calloc|realloc|free|operator new|operator delete)[ (]' |
             head -1)
   fi
   # -> "selfsim::f(int) kernels/x.cpp:12", or "(liblua5.4-c++.so.0)" for a library without symbols
-  where=$(echo "$where" | sed -E 's/^ +#[0-9]+ 0x[0-9a-f]+ +(in )?//; s#\(/[^)]*/([^/)]+)\+0x[0-9a-f]+\)#(\1)#; s#[^ ]*/((kernels|interpreter)/)#\1#; s/:([0-9]+):[0-9]+$/:\1/')
+  where=$(echo "$where" | sed -E 's/^ +#[0-9]+ 0x[0-9a-f]+ +(in )?//; s#\(/[^)]*/([^/)]+)\+0x[0-9a-f]+\)#(\1)#; s#[^ ]*/((kernels|frontend)/)#\1#; s/:([0-9]+):[0-9]+$/:\1/')
   echo "$kind${where:+ in $where}"
 }

@@ -13,7 +13,7 @@
 
 #include "kernels/geom/polyline.h"
 #include "kernels/io/save.h"
-#include "kernels/lsystem/turtle2d.h"
+#include "kernels/lsystem/turtle/turtle2d.h"
 
 namespace {
 

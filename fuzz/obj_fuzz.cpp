@@ -1,4 +1,4 @@
-// Fuzz target: selfsim's own .obj reader (kernels/io/obj_read.cpp), as `selfsim info FILE.obj`, `selfsim diff` and
+// Fuzz target: selfsim's own .obj reader (kernels/io/mesh/obj_read.cpp), as `selfsim info FILE.obj`, `selfsim diff` and
 // load() reach it. See read_fuzz.h.
 #include "fuzz/read_fuzz.h"
 

@@ -1,4 +1,4 @@
-// Fuzz target: selfsim's own .ply reader (kernels/io/ply_read.cpp), as `selfsim info FILE.ply`, `selfsim diff` and
+// Fuzz target: selfsim's own .ply reader (kernels/io/mesh/ply_read.cpp), as `selfsim info FILE.ply`, `selfsim diff` and
 // load() reach it. See read_fuzz.h.
 #include "fuzz/read_fuzz.h"
 

@@ -1,4 +1,4 @@
-// Fuzz target: the provenance parser (kernels/io/provenance_parse.cpp), which `selfsim info` and `selfsim
+// Fuzz target: the provenance parser (kernels/io/provenance/provenance_parse.cpp), which `selfsim info` and `selfsim
 // rerun` run on the record any file may carry. Only selfsim::Error may escape. A record that parses holds
 // no NUL in any string (a path cut at a NUL would run another file), and writing it again with
 // provenance_json reads back the same record (what selfsim writes, it reads whole). Its seed is one
@@ -10,8 +10,8 @@
 #include <string>
 
 #include "fuzz/fuzz_support.h"
-#include "kernels/geom/error.h"
-#include "kernels/io/provenance.h"
+#include "kernels/base/error.h"
+#include "kernels/io/provenance/provenance.h"
 
 namespace {
 

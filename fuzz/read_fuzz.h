@@ -24,7 +24,7 @@
 
 #include "fuzz/fuzz_support.h"
 #include "kernels/analysis/dataset_diff.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/io/read.h"
 
 namespace selfsim::fuzz {

@@ -1,4 +1,4 @@
-// Fuzz target: recipe text run the way `selfsim run` runs it (interpreter/run_command.cpp): a sandbox
+// Fuzz target: recipe text run the way `selfsim run` runs it (frontend/cli/run_command.cpp): a sandbox
 // from new_sandbox, every binding from open_all, the input loaded as a text chunk and called with
 // lua_pcall. Small limits keep each execution short: --max-points 1e5, --timeout 0.25 s, --max-memory
 // 64 MiB (a recipe that builds a huge string gets a Lua memory error instead of taking the fuzzer down).
@@ -8,7 +8,7 @@
 // pcall status outside LUA_ERRRUN..LUA_ERRERR, checked here), and any file written outside the output
 // folder.
 //
-// Hangs: `selfsim run` has a watchdog (interpreter/watchdog.h) that ends the process when a stop is not
+// Hangs: `selfsim run` has a watchdog (frontend/process/watchdog.h) that ends the process when a stop is not
 // honoured within a grace period, by design the answer to what Lua's hook cannot reach (an endless
 // finalizer, a backtracking string.find). The same happens here: an input still running 3 s after it
 // started (--timeout 0.25 s, the grace 0.5 s, and room for the sanitizers) ends the process with status 0
@@ -27,10 +27,10 @@
 #include <string>
 #include <thread>
 
+#include "frontend/bindings/bindings.h"
+#include "frontend/lua/run_context.h"
+#include "frontend/lua/sandbox.h"
 #include "fuzz/fuzz_support.h"
-#include "interpreter/bindings.h"
-#include "interpreter/run_context.h"
-#include "interpreter/sandbox.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// Fuzz target: selfsim's own .stl reader (kernels/io/stl_read.cpp), as `selfsim info FILE.stl`, `selfsim diff` and
+// Fuzz target: selfsim's own .stl reader (kernels/io/mesh/stl_read.cpp), as `selfsim info FILE.stl`, `selfsim diff` and
 // load() reach it. See read_fuzz.h.
 #include "fuzz/read_fuzz.h"
 

@@ -1,4 +1,4 @@
-// Fuzz target: the .svg reader (kernels/io/svg_read.cpp), as `selfsim info FILE.svg` and `selfsim diff`
+// Fuzz target: the .svg reader (kernels/io/svg/svg_read.cpp), as `selfsim info FILE.svg` and `selfsim diff`
 // reach it. See read_fuzz.h.
 #include "fuzz/read_fuzz.h"
 

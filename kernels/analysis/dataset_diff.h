@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "kernels/io/dataset.h"
+#include "kernels/io/dataset/dataset.h"
 
 namespace selfsim::analysis {
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <string>
 
-#include "kernels/geom/check.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/check.h"
+#include "kernels/base/error.h"
 #include "kernels/geom/segment_grid.h"
 
 namespace selfsim::analysis {

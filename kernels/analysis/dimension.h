@@ -10,8 +10,8 @@
 
 #include <vector>
 
+#include "kernels/base/progress.h"
 #include "kernels/geom/polyline.h"
-#include "kernels/geom/progress.h"
 
 namespace selfsim::analysis {
 

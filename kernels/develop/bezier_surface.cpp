@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "kernels/base/check.h"
+#include "kernels/base/error.h"
 #include "kernels/develop/level_stack.h"
 #include "kernels/geom/all_finite.h"
-#include "kernels/geom/check.h"
-#include "kernels/geom/error.h"
 
 namespace selfsim::develop {
 

@@ -4,9 +4,9 @@
 #include <limits>
 #include <string>
 
+#include "kernels/base/check.h"
+#include "kernels/base/error.h"
 #include "kernels/develop/level_stack.h"
-#include "kernels/geom/check.h"
-#include "kernels/geom/error.h"
 
 namespace selfsim::develop {
 

@@ -8,9 +8,9 @@
 
 #include <span>
 
+#include "kernels/base/progress.h"
 #include "kernels/geom/mesh.h"
 #include "kernels/geom/polyline.h"
-#include "kernels/geom/progress.h"
 
 namespace selfsim::develop {
 

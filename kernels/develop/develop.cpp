@@ -4,9 +4,9 @@
 #include <cmath>
 #include <string>
 
+#include "kernels/base/check.h"
 #include "kernels/develop/level_stack.h"
 #include "kernels/develop/tile_classes.h"
-#include "kernels/geom/check.h"
 #include "kernels/geom/mesh_intersections.h"
 #include "kernels/print/thicken.h"
 

@@ -9,9 +9,9 @@
 #include <variant>
 #include <vector>
 
-#include "kernels/geom/cancellable_sort.h"
-#include "kernels/geom/check.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/cancellable_sort.h"
+#include "kernels/base/check.h"
+#include "kernels/base/error.h"
 #include "kernels/geom/mesh_check.h"
 
 namespace selfsim::develop {

@@ -27,9 +27,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "kernels/geom/budget.h"
+#include "kernels/base/budget.h"
+#include "kernels/base/progress.h"
 #include "kernels/geom/mesh.h"
-#include "kernels/geom/progress.h"
 
 namespace selfsim::develop {
 

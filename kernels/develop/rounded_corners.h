@@ -7,9 +7,9 @@
 // exact curve, for drawing the levels in 2D.
 #pragma once
 
-#include "kernels/geom/budget.h"
+#include "kernels/base/budget.h"
+#include "kernels/base/progress.h"
 #include "kernels/geom/polyline.h"
-#include "kernels/geom/progress.h"
 
 namespace selfsim::develop {
 

@@ -5,7 +5,7 @@
 #include <numeric>
 #include <string>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 
 namespace selfsim::develop {
 

@@ -21,8 +21,8 @@
 #include <span>
 #include <vector>
 
+#include "kernels/base/progress.h"
 #include "kernels/geom/mesh.h"
-#include "kernels/geom/progress.h"
 
 namespace selfsim::develop {
 

@@ -3,8 +3,8 @@
 // re-run is needed for a picture or a dimension estimate of one level.
 #pragma once
 
+#include "kernels/base/progress.h"
 #include "kernels/geom/polyline.h"
-#include "kernels/geom/progress.h"
 
 namespace selfsim::exclusion {
 

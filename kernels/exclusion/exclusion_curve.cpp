@@ -7,10 +7,10 @@
 #include <limits>
 #include <string>
 
+#include "kernels/base/check.h"
 #include "kernels/exclusion/curve_net.h"
 #include "kernels/exclusion/original_rule.h"
 #include "kernels/exclusion/start_check.h"
-#include "kernels/geom/check.h"
 
 namespace selfsim::exclusion {
 

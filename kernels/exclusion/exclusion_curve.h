@@ -18,11 +18,11 @@
 #include <cstddef>
 #include <vector>
 
+#include "kernels/base/budget.h"
+#include "kernels/base/progress.h"
 #include "kernels/exclusion/level_report.h"
-#include "kernels/geom/budget.h"
 #include "kernels/geom/polyline.h"
-#include "kernels/geom/progress.h"
-#include "kernels/geom/region.h"
+#include "kernels/region/region.h"
 
 namespace selfsim::exclusion {
 

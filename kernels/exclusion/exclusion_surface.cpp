@@ -7,9 +7,9 @@
 #include <optional>
 #include <string>
 
+#include "kernels/base/check.h"
 #include "kernels/exclusion/surface_net.h"
 #include "kernels/geom/box_grid3.h"
-#include "kernels/geom/check.h"
 #include "kernels/geom/distance3.h"
 #include "kernels/geom/mesh_check.h"
 #include "kernels/geom/mesh_intersections.h"

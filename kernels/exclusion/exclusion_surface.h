@@ -21,11 +21,11 @@
 #include <cmath>
 #include <vector>
 
+#include "kernels/base/budget.h"
+#include "kernels/base/progress.h"
 #include "kernels/exclusion/level_report.h"
-#include "kernels/geom/budget.h"
 #include "kernels/geom/mesh.h"
-#include "kernels/geom/progress.h"
-#include "kernels/geom/wall_grid.h"
+#include "kernels/region/wall_grid.h"
 
 namespace selfsim::exclusion {
 

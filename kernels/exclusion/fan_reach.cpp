@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kernels/base/error.h"
 #include "kernels/geom/distance3.h"
-#include "kernels/geom/error.h"
 #include "kernels/geom/segment2.h"
 
 namespace selfsim::exclusion {

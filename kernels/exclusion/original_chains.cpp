@@ -5,9 +5,9 @@
 #include <span>
 #include <string>
 
+#include "kernels/base/error.h"
 #include "kernels/exclusion/chain_order.h"
 #include "kernels/exclusion/start_check.h"
-#include "kernels/geom/error.h"
 
 namespace selfsim::exclusion::original {
 

@@ -10,7 +10,7 @@
 #include "kernels/exclusion/original_grid.h"
 #include "kernels/exclusion/original_split.h"
 #include "kernels/geom/polyline.h"
-#include "kernels/geom/region.h"
+#include "kernels/region/region.h"
 
 namespace selfsim::exclusion::original {
 

@@ -1,6 +1,6 @@
 #include "kernels/exclusion/original_grid.h"
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 
 namespace selfsim::exclusion::original {
 

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "kernels/base/check.h"
 #include "kernels/exclusion/original_chains.h"
 #include "kernels/exclusion/start_check.h"
-#include "kernels/geom/check.h"
 
 namespace selfsim::exclusion {
 

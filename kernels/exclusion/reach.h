@@ -8,8 +8,8 @@
 #include <cmath>
 #include <string>
 
+#include "kernels/base/check.h"
 #include "kernels/exclusion/line_intervals.h"
-#include "kernels/geom/check.h"
 
 namespace selfsim::exclusion {
 

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "kernels/geom/check.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/check.h"
+#include "kernels/base/error.h"
 #include "kernels/geom/segment2.h"
 #include "kernels/geom/segment_grid.h"
 

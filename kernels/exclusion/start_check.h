@@ -7,7 +7,7 @@
 #include <span>
 
 #include "kernels/geom/polyline.h"
-#include "kernels/geom/region.h"
+#include "kernels/region/region.h"
 
 namespace selfsim::exclusion {
 

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <tuple>
 
+#include "kernels/base/error.h"
 #include "kernels/exclusion/wall_reach.h"
-#include "kernels/geom/error.h"
 #include "kernels/geom/field.h"
 
 namespace selfsim::exclusion {

@@ -10,13 +10,13 @@
 #include <cstdint>
 #include <vector>
 
+#include "kernels/base/progress.h"
 #include "kernels/exclusion/fan_reach.h"
 #include "kernels/exclusion/level_report.h"
 #include "kernels/exclusion/query_marks.h"
 #include "kernels/geom/box_grid3.h"
 #include "kernels/geom/mesh.h"
-#include "kernels/geom/progress.h"
-#include "kernels/geom/wall_grid.h"
+#include "kernels/region/wall_grid.h"
 
 namespace selfsim::exclusion {
 

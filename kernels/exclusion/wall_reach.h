@@ -12,7 +12,7 @@
 #pragma once
 
 #include "kernels/exclusion/fan_reach.h"
-#include "kernels/geom/wall_grid.h"
+#include "kernels/region/wall_grid.h"
 
 namespace selfsim::exclusion {
 

@@ -11,8 +11,8 @@
 
 #include <span>
 
+#include "kernels/base/progress.h"
 #include "kernels/geom/polyline.h"
-#include "kernels/geom/progress.h"
 
 namespace selfsim {
 

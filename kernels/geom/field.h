@@ -14,7 +14,7 @@
 #include <variant>
 #include <vector>
 
-#include "kernels/geom/progress.h"
+#include "kernels/base/progress.h"
 
 namespace selfsim {
 

@@ -2,8 +2,8 @@
 
 #include <string>
 
+#include "kernels/base/error.h"
 #include "kernels/geom/all_finite.h"
-#include "kernels/geom/error.h"
 
 namespace selfsim {
 

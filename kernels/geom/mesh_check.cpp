@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "kernels/geom/cancellable_sort.h"
+#include "kernels/base/cancellable_sort.h"
 
 namespace selfsim {
 

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "kernels/base/progress.h"
 #include "kernels/geom/mesh.h"
-#include "kernels/geom/progress.h"
 
 namespace selfsim {
 

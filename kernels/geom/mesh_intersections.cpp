@@ -13,8 +13,8 @@
 #include <utility>
 #include <vector>
 
-#include "kernels/geom/error.h"
-#include "kernels/geom/huge_pages.h"
+#include "kernels/base/error.h"
+#include "kernels/base/huge_pages.h"
 #include "kernels/geom/triangle_contact.h"
 
 namespace selfsim {

@@ -28,8 +28,8 @@
 #include <cstdint>
 #include <optional>
 
+#include "kernels/base/progress.h"
 #include "kernels/geom/mesh.h"
-#include "kernels/geom/progress.h"
 #include "kernels/geom/vec3.h"
 
 namespace selfsim {

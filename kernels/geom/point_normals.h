@@ -5,8 +5,8 @@
 
 #include <vector>
 
+#include "kernels/base/progress.h"
 #include "kernels/geom/mesh.h"
-#include "kernels/geom/progress.h"
 
 namespace selfsim {
 

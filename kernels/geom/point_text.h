@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "kernels/geom/check.h"
+#include "kernels/base/check.h"
 #include "kernels/geom/vec3.h"
 
 namespace selfsim {

@@ -5,7 +5,7 @@
 #include <numbers>
 #include <string>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/geom/vec2.h"
 
 namespace selfsim {

@@ -5,8 +5,8 @@
 
 #include <atomic>
 
+#include "kernels/base/error.h"
 #include "kernels/geom/all_finite.h"
-#include "kernels/geom/error.h"
 
 namespace selfsim::hoist {
 

@@ -5,8 +5,8 @@
 // boundary extension (base_curve.h).
 #pragma once
 
+#include "kernels/base/progress.h"
 #include "kernels/geom/polyline.h"
-#include "kernels/geom/progress.h"
 #include "kernels/hoist/base_curve.h"
 
 namespace selfsim::hoist {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "kernels/geom/check.h"
+#include "kernels/base/check.h"
 #include "kernels/hoist/hoist.h"
 #include "kernels/hoist/multiply.h"
 

@@ -6,9 +6,9 @@
 
 #include <vector>
 
-#include "kernels/geom/budget.h"
+#include "kernels/base/budget.h"
+#include "kernels/base/progress.h"
 #include "kernels/geom/polyline.h"
-#include "kernels/geom/progress.h"
 #include "kernels/geom/segment_transform.h"
 #include "kernels/hoist/base_curve.h"
 

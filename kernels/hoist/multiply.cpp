@@ -8,9 +8,9 @@
 #include <string>
 #include <utility>
 
-#include "kernels/geom/check.h"
-#include "kernels/geom/error.h"
-#include "kernels/geom/huge_pages.h"
+#include "kernels/base/check.h"
+#include "kernels/base/error.h"
+#include "kernels/base/huge_pages.h"
 
 namespace selfsim::hoist {
 

@@ -6,8 +6,8 @@
 #include <utility>
 #include <vector>
 
-#include "kernels/geom/check.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/check.h"
+#include "kernels/base/error.h"
 
 namespace selfsim::hoist {
 

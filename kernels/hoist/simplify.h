@@ -5,8 +5,8 @@
 // run: O(n log n) work whatever the curve) and both halves are looked at again.
 #pragma once
 
+#include "kernels/base/progress.h"
 #include "kernels/geom/polyline.h"
-#include "kernels/geom/progress.h"
 
 namespace selfsim::hoist {
 

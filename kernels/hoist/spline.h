@@ -9,9 +9,9 @@
 
 #include <vector>
 
-#include "kernels/geom/budget.h"
+#include "kernels/base/budget.h"
+#include "kernels/base/progress.h"
 #include "kernels/geom/polyline.h"
-#include "kernels/geom/progress.h"
 
 namespace selfsim::hoist {
 

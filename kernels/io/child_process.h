@@ -10,7 +10,7 @@
 #include <functional>
 #include <string>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 
 namespace selfsim::io {
 

@@ -3,7 +3,7 @@
 #include <charconv>
 #include <cmath>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/io/output_file.h"
 
 namespace selfsim::io {

@@ -4,8 +4,8 @@
 #include <cctype>
 #include <filesystem>
 
-#include "kernels/geom/error.h"
-#include "kernels/geom/lower_case.h"
+#include "kernels/base/error.h"
+#include "kernels/base/lower_case.h"
 #include "kernels/io/writers.h"
 
 namespace selfsim::io {

@@ -8,9 +8,9 @@
 #include <variant>
 #include <vector>
 
+#include "kernels/base/progress.h"
 #include "kernels/geom/mesh.h"
 #include "kernels/geom/polyline.h"
-#include "kernels/geom/progress.h"
 #include "kernels/io/output_file.h"
 
 namespace selfsim::io {

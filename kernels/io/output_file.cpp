@@ -12,7 +12,7 @@
 #include <mutex>
 #include <vector>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 
 namespace selfsim::io {
 

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <string>
 
-#include "kernels/io/dataset.h"
+#include "kernels/io/dataset/dataset.h"
 
 namespace selfsim::io {
 

@@ -10,7 +10,7 @@
 #include <cstring>
 #include <vector>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/io/read_error.h"
 
 namespace selfsim::io {

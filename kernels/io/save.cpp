@@ -2,11 +2,11 @@
 
 #include <cmath>
 
-#include "kernels/geom/check.h"
-#include "kernels/geom/error.h"
-#include "kernels/io/colour.h"
-#include "kernels/io/provenance.h"
+#include "kernels/base/check.h"
+#include "kernels/base/error.h"
+#include "kernels/io/provenance/provenance.h"
 #include "kernels/io/read_error.h"
+#include "kernels/io/svg/colour.h"
 
 namespace selfsim::io {
 

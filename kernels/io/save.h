@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "kernels/geom/budget.h"
-#include "kernels/geom/progress.h"
+#include "kernels/base/budget.h"
+#include "kernels/base/progress.h"
 #include "kernels/io/format.h"
 #include "kernels/io/output_file.h"
 

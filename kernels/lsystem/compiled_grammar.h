@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "kernels/geom/progress.h"
+#include "kernels/base/progress.h"
 #include "kernels/geom/vec2.h"
 #include "kernels/lsystem/grammar.h"
 

@@ -16,7 +16,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "kernels/geom/progress.h"
+#include "kernels/base/progress.h"
 #include "kernels/lsystem/rule_index.h"
 #include "kernels/lsystem/rule_scope.h"
 

@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 
 namespace selfsim::lsystem {
 

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "kernels/geom/check.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/check.h"
+#include "kernels/base/error.h"
 #include "kernels/lsystem/module_checks.h"
 
 namespace selfsim::lsystem {

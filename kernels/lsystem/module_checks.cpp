@@ -3,7 +3,7 @@
 #include <array>
 #include <set>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 
 namespace selfsim::lsystem {
 

@@ -10,7 +10,7 @@
 #include <array>
 #include <optional>
 
-#include "kernels/geom/progress.h"
+#include "kernels/base/progress.h"
 #include "kernels/lsystem/grammar.h"
 
 namespace selfsim::lsystem {

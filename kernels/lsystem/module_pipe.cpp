@@ -8,7 +8,7 @@
 #include <thread>
 #include <vector>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 
 namespace selfsim::lsystem {
 

@@ -3,7 +3,7 @@
 // that rewrite_modules() would give it directly, so the result is the same bytes; only the time differs.
 #pragma once
 
-#include "kernels/geom/progress.h"
+#include "kernels/base/progress.h"
 #include "kernels/lsystem/grammar.h"
 #include "kernels/lsystem/module_rewrite.h"
 

@@ -6,9 +6,9 @@
 #include <utility>
 #include <vector>
 
-#include "kernels/geom/budget.h"
-#include "kernels/geom/count_text.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/budget.h"
+#include "kernels/base/count_text.h"
+#include "kernels/base/error.h"
 #include "kernels/lsystem/context_match.h"
 #include "kernels/lsystem/cut.h"
 #include "kernels/lsystem/derivation_frame.h"

@@ -15,8 +15,8 @@
 #include <span>
 #include <string>
 
-#include "kernels/geom/budget.h"
-#include "kernels/geom/progress.h"
+#include "kernels/base/budget.h"
+#include "kernels/base/progress.h"
 #include "kernels/lsystem/grammar.h"
 #include "kernels/lsystem/module_string.h"
 #include "kernels/lsystem/stochastic_choice.h"

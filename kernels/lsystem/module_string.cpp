@@ -2,8 +2,8 @@
 
 #include <charconv>
 
-#include "kernels/geom/count_text.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/count_text.h"
+#include "kernels/base/error.h"
 #include "kernels/lsystem/module_rewrite.h"
 
 namespace selfsim::lsystem {

@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "kernels/geom/progress.h"
+#include "kernels/base/progress.h"
 #include "kernels/lsystem/module_string.h"
 
 namespace selfsim::lsystem {

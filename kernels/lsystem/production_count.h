@@ -5,7 +5,7 @@
 
 #include <array>
 
-#include "kernels/geom/progress.h"
+#include "kernels/base/progress.h"
 #include "kernels/lsystem/grammar.h"
 
 namespace selfsim::lsystem {

@@ -1,8 +1,8 @@
 #include "kernels/lsystem/rewrite.h"
 
-#include "kernels/geom/check.h"
-#include "kernels/geom/count_text.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/check.h"
+#include "kernels/base/count_text.h"
+#include "kernels/base/error.h"
 #include "kernels/lsystem/production_count.h"
 
 namespace selfsim::lsystem {

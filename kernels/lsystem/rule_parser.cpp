@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <set>
 
-#include "kernels/io/text_width.h"
-#include "kernels/io/utf8.h"
+#include "kernels/base/text_width.h"
+#include "kernels/base/utf8.h"
 
 namespace selfsim::lsystem {
 

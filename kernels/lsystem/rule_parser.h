@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/lsystem/production.h"
 
 namespace selfsim::lsystem {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <string>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/lsystem/module_string.h"
 #include "kernels/lsystem/stochastic_choice.h"
 

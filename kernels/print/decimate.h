@@ -7,8 +7,8 @@
 
 #include <cstddef>
 
+#include "kernels/base/progress.h"
 #include "kernels/geom/mesh.h"
-#include "kernels/geom/progress.h"
 
 namespace selfsim::print {
 

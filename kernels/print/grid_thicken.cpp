@@ -1,7 +1,7 @@
 // GridThickenOptions' checks, apart from OpenVDB (the conversion is the plugin's: grid_solid.cpp).
 #include "kernels/print/grid_thicken.h"
 
-#include "kernels/geom/check.h"
+#include "kernels/base/check.h"
 
 namespace selfsim::print {
 

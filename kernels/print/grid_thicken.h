@@ -6,9 +6,9 @@
 // in [0, 1]) merges the mesher's small polygons where the surface is flat.
 #pragma once
 
-#include "kernels/geom/budget.h"
+#include "kernels/base/budget.h"
+#include "kernels/base/progress.h"
 #include "kernels/geom/mesh.h"
-#include "kernels/geom/progress.h"
 
 namespace selfsim::print {
 

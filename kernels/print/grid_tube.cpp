@@ -3,8 +3,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "kernels/geom/check.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/check.h"
+#include "kernels/base/error.h"
 #include "kernels/print/grid_thicken.h"
 
 namespace selfsim::print {

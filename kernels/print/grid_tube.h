@@ -6,10 +6,10 @@
 // voxel is lost. 2D curves lie in z = 0.
 #pragma once
 
-#include "kernels/geom/budget.h"
+#include "kernels/base/budget.h"
+#include "kernels/base/progress.h"
 #include "kernels/geom/mesh.h"
 #include "kernels/geom/polyline.h"
-#include "kernels/geom/progress.h"
 
 namespace selfsim::print {
 

@@ -9,14 +9,14 @@
 #include <limits>
 #include <memory>
 
-#include "kernels/geom/count_text.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/count_text.h"
+#include "kernels/base/error.h"
 #include "kernels/geom/point_text.h"
-#include "kernels/geom/volume.h"
-#include "kernels/geom/wall_grid.h"
 #include "kernels/print/print_size.h"
 #include "kernels/print/sharp_edges.h"
 #include "kernels/print/wall_rays.h"
+#include "kernels/region/volume.h"
+#include "kernels/region/wall_grid.h"
 
 namespace selfsim::print {
 

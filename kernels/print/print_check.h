@@ -19,11 +19,11 @@
 #include <string>
 #include <vector>
 
-#include "kernels/geom/budget.h"
+#include "kernels/base/budget.h"
+#include "kernels/base/progress.h"
 #include "kernels/geom/mesh.h"
 #include "kernels/geom/mesh_check.h"
 #include "kernels/geom/mesh_intersections.h"
-#include "kernels/geom/progress.h"
 #include "kernels/print/print_rules.h"
 
 namespace selfsim::print {

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <limits>
 
-#include "kernels/geom/check.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/check.h"
+#include "kernels/base/error.h"
 #include "kernels/geom/point_text.h"
 
 namespace selfsim::print {

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "kernels/geom/check.h"
-#include "kernels/geom/error.h"
-#include "kernels/geom/region_triangles.h"
+#include "kernels/base/check.h"
+#include "kernels/base/error.h"
+#include "kernels/region/region_triangles.h"
 
 namespace selfsim::print {
 

@@ -14,10 +14,10 @@
 // bottom cap when there is no plate; 1 the top; 2 the walls).
 #pragma once
 
-#include "kernels/geom/budget.h"
+#include "kernels/base/budget.h"
+#include "kernels/base/progress.h"
 #include "kernels/geom/mesh.h"
 #include "kernels/geom/polyline.h"
-#include "kernels/geom/progress.h"
 
 namespace selfsim::print {
 

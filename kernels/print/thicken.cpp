@@ -6,8 +6,8 @@
 #include <tuple>
 #include <vector>
 
-#include "kernels/geom/cancellable_sort.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/cancellable_sort.h"
+#include "kernels/base/error.h"
 #include "kernels/geom/mesh_check.h"
 #include "kernels/geom/point_normals.h"
 

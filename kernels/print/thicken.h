@@ -4,8 +4,8 @@
 // characteristic 2), an annulus a torus (0).
 #pragma once
 
+#include "kernels/base/progress.h"
 #include "kernels/geom/mesh.h"
-#include "kernels/geom/progress.h"
 
 namespace selfsim::print {
 

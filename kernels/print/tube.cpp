@@ -9,8 +9,8 @@
 #include <type_traits>
 #include <vector>
 
-#include "kernels/geom/check.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/check.h"
+#include "kernels/base/error.h"
 #include "kernels/geom/mesh_intersections.h"
 #include "kernels/geom/point_text.h"
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <vector>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 
 namespace selfsim::print {
 

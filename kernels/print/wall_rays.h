@@ -13,7 +13,7 @@
 #include <functional>
 #include <span>
 
-#include "kernels/geom/progress.h"
+#include "kernels/base/progress.h"
 #include "kernels/geom/vec3.h"
 
 namespace selfsim::print {

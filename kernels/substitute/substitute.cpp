@@ -3,9 +3,9 @@
 #include <cmath>
 #include <string>
 
-#include "kernels/geom/budget.h"
-#include "kernels/geom/check.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/budget.h"
+#include "kernels/base/check.h"
+#include "kernels/base/error.h"
 #include "kernels/geom/similarity.h"
 
 namespace selfsim::substitute {

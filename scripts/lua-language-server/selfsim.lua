@@ -5,8 +5,7 @@
 -- from resolving to it; the modules have their own files beside it (selfsim/curves.lua, selfsim/sheet.lua),
 -- since one meta file answers to one require name.
 --
--- The functions are selfsim's own (interpreter/bind_*.cpp, curve_value.cpp, mesh_value.cpp,
--- value_types.cpp); what they do in full is in docs/*.md. The test cli.meta (tests/meta/) checks this file
+-- The functions are selfsim's own (frontend/bindings/bind_*.cpp, frontend/lua/value_types.cpp); what they do in full is in docs/*.md. The test cli.meta (tests/meta/) checks this file
 -- against what the interpreter registers: every global, every field of a global table and of a module, and
 -- every method of every value type, missing or extra, fails it. Its parser reads these shapes only, one
 -- declaration per line, so keep to them:

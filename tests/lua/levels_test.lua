@@ -1,4 +1,4 @@
--- v:levels() and v:level(k) (interpreter/growth.h): every kernel that grows by levels hands back a value
+-- v:levels() and v:level(k) (frontend/lua/growth.h): every kernel that grows by levels hands back a value
 -- that knows them. Each level is checked against what defines it: a direct call of the kernel at that level
 -- (L-system, substitute, hoist.iterate, develop), the final curve's points of level <= k (exclusion.curve),
 -- or the kernel's own step (exclusion.surface).

@@ -163,12 +163,13 @@ def module_names(scripts):
     return sorted(names)
 
 
-def registered_types(interpreter):
+def registered_types(frontend):
     types = set()
-    for f in sorted(os.listdir(interpreter)):
-        if f.endswith((".cpp", ".h")):
-            with open(os.path.join(interpreter, f), encoding="utf-8") as src:
-                types |= set(TYPE_NAME.findall(src.read()))
+    for root, _, names in sorted(os.walk(frontend)):
+        for f in sorted(names):
+            if f.endswith((".cpp", ".h")):
+                with open(os.path.join(root, f), encoding="utf-8") as src:
+                    types |= set(TYPE_NAME.findall(src.read()))
     return types
 
 
@@ -234,8 +235,8 @@ def main():
     compare("value type", set(types), set(declared_types))
     for t in sorted(set(types) & set(declared_types)):
         compare(f"method {t}", types[t], methods_of(d, declared_types[t]), ":")
-    for t in sorted(registered_types(os.path.join(src, "interpreter")) - set(types)):
-        problems.append(f"value type {t}: registered in interpreter/, but tests/meta/dsl_names.lua builds no "
+    for t in sorted(registered_types(os.path.join(src, "frontend")) - set(types)):
+        problems.append(f"value type {t}: registered in frontend/, but tests/meta/dsl_names.lua builds no "
                         "value of it (add one there, and its class to the definitions)")
 
     if problems:

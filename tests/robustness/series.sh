@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ParaView time series (kernels/io/series_file.h) and the run's view.py (kernels/io/paraview_view.h), read
+# ParaView time series (kernels/io/view/series_file.h) and the run's view.py (kernels/io/view/paraview_view.h), read
 # back the way ParaView reads them: the .pvd names exactly its steps with their times, the .vtp.series
 # likewise, VTK's own reader reads each step with the points the recipe's level had; a series written again
 # into the same folder names only its new steps and removes its old extra ones, leaving other files alone;

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <mutex>
 
-#include "kernels/geom/check.h"
+#include "kernels/base/check.h"
 
 namespace selfsim::vdb {
 

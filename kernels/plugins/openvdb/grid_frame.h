@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "kernels/base/error.h"
+#include "kernels/base/progress.h"
 #include "kernels/geom/bbox.h"
-#include "kernels/geom/error.h"
 #include "kernels/geom/mesh.h"
-#include "kernels/geom/progress.h"
 
 namespace selfsim::vdb {
 

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <string>
 
-#include "kernels/geom/budget.h"
-#include "kernels/geom/check.h"
+#include "kernels/base/budget.h"
+#include "kernels/base/check.h"
 #include "kernels/geom/mesh_check.h"
 #include "kernels/plugins/openvdb/grid_frame.h"
 #include "kernels/print/grid_thicken.h"

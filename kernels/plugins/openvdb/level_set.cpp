@@ -1,7 +1,7 @@
 // Every OpenVDB conversion of selfsim lives here, in one translation unit of the OpenVDB plugin (plugin.h;
 // reading .vdb files is vdb_read.cpp): volumes converted to level sets in a local frame, their
 // boundaries, .vdb files, and the walls' distance grid (wall_grid.h).
-#include "kernels/geom/level_set.h"
+#include "kernels/region/level_set.h"
 
 #include <openvdb/io/Stream.h>
 #include <openvdb/openvdb.h>
@@ -22,13 +22,13 @@
 #include <utility>
 #include <vector>
 
-#include "kernels/geom/box_mesh.h"
-#include "kernels/geom/check.h"
+#include "kernels/base/check.h"
 #include "kernels/geom/mesh_check.h"
 #include "kernels/geom/mesh_intersections.h"
-#include "kernels/geom/wall_grid.h"
 #include "kernels/plugins/openvdb/grid_frame.h"
 #include "kernels/plugins/openvdb/winding_sign.h"
+#include "kernels/region/box_mesh.h"
+#include "kernels/region/wall_grid.h"
 
 namespace selfsim {
 

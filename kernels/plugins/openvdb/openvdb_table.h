@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "kernels/geom/level_set.h"
-#include "kernels/geom/wall_grid.h"
-#include "kernels/io/vdb_read.h"
+#include "kernels/io/vdb/vdb_read.h"
 #include "kernels/print/grid_thicken.h"
+#include "kernels/region/level_set.h"
+#include "kernels/region/wall_grid.h"
 
 namespace selfsim {
 

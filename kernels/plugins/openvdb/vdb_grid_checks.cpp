@@ -8,11 +8,11 @@
 #include <cstdio>
 #include <optional>
 
-#include "kernels/geom/budget.h"
-#include "kernels/geom/check.h"
-#include "kernels/geom/count_text.h"
-#include "kernels/geom/error.h"
-#include "kernels/io/dataset.h"
+#include "kernels/base/budget.h"
+#include "kernels/base/check.h"
+#include "kernels/base/count_text.h"
+#include "kernels/base/error.h"
+#include "kernels/io/dataset/dataset.h"
 #include "kernels/io/read_error.h"
 
 namespace selfsim::io {

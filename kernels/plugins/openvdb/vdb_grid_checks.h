@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <string>
 
-#include "kernels/io/vdb_read.h"
+#include "kernels/io/vdb/vdb_read.h"
 
 namespace selfsim::io {
 

@@ -1,6 +1,6 @@
 // OpenVDB's part of reading .vdb files (see vdb_read.h). Only the file reader and volumeToMesh: a small
 // translation unit next to level_set.cpp, which holds the writing side.
-#include "kernels/io/vdb_read.h"
+#include "kernels/io/vdb/vdb_read.h"
 
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
@@ -11,10 +11,10 @@
 #include <cmath>
 #include <mutex>
 
-#include "kernels/geom/check.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/check.h"
+#include "kernels/base/error.h"
 #include "kernels/io/child_process.h"
-#include "kernels/io/dataset_pipe.h"
+#include "kernels/io/dataset/dataset_pipe.h"
 #include "kernels/io/read_error.h"
 #include "kernels/io/regular_file.h"
 #include "kernels/plugins/openvdb/vdb_grid_checks.h"

@@ -1,5 +1,5 @@
 // VTK's part of `selfsim preview` (see preview_png.h for what the picture holds).
-#include "kernels/io/preview_png.h"
+#include "kernels/io/view/preview_png.h"
 
 #include <vtkActor.h>
 #include <vtkAutoInit.h>
@@ -35,12 +35,12 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/io/child_process.h"
-#include "kernels/io/dataset_pipe.h"
-#include "kernels/io/natural_field.h"
+#include "kernels/io/dataset/dataset_pipe.h"
 #include "kernels/io/read_error.h"
-#include "kernels/io/vtk_error_text.h"
+#include "kernels/io/view/natural_field.h"
+#include "kernels/io/vtk/vtk_error_text.h"
 #include "kernels/plugins/render/preview_scene.h"
 
 // VTK's rendering classes are abstract until their OpenGL implementations register with the object

@@ -4,8 +4,8 @@
 
 #include <vector>
 
-#include "kernels/io/dataset.h"
-#include "kernels/io/natural_field.h"
+#include "kernels/io/dataset/dataset.h"
+#include "kernels/io/view/natural_field.h"
 
 class vtkLookupTable;
 class vtkPolyData;

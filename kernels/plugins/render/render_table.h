@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "kernels/io/preview_png.h"
+#include "kernels/io/view/preview_png.h"
 
 namespace selfsim {
 

@@ -11,9 +11,9 @@
 
 #include <string>
 
-#include "kernels/geom/check.h"
-#include "kernels/geom/count_text.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/check.h"
+#include "kernels/base/count_text.h"
+#include "kernels/base/error.h"
 #include "kernels/geom/mesh_check.h"
 
 namespace selfsim::print {

@@ -37,16 +37,16 @@
 
 #include <cstdlib>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/io/child_process.h"
-#include "kernels/io/dataset_check.h"
-#include "kernels/io/dataset_pipe.h"
-#include "kernels/io/provenance.h"
+#include "kernels/io/dataset/dataset_check.h"
+#include "kernels/io/dataset/dataset_pipe.h"
+#include "kernels/io/provenance/provenance.h"
 #include "kernels/io/read.h"
 #include "kernels/io/read_error.h"
 #include "kernels/io/regular_file.h"
-#include "kernels/io/vtk_error_text.h"
-#include "kernels/io/vtk_header_check.h"
+#include "kernels/io/vtk/vtk_error_text.h"
+#include "kernels/io/vtk/vtk_header_check.h"
 
 namespace selfsim::io {
 

@@ -5,9 +5,9 @@
 
 #include <filesystem>
 
+#include "kernels/base/progress.h"
 #include "kernels/geom/mesh.h"
-#include "kernels/geom/progress.h"
-#include "kernels/io/dataset.h"
+#include "kernels/io/dataset/dataset.h"
 
 namespace selfsim {
 

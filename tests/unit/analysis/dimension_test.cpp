@@ -6,8 +6,8 @@
 
 #include <cmath>
 
+#include "kernels/base/error.h"
 #include "kernels/exclusion/exclusion_curve.h"
-#include "kernels/geom/error.h"
 
 using namespace selfsim;
 using namespace selfsim::analysis;

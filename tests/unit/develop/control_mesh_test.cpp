@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "../lsystem/table1.h"
+#include "kernels/base/error.h"
 #include "kernels/develop/level_stack.h"
-#include "kernels/geom/error.h"
 #include "kernels/geom/mesh_check.h"
-#include "kernels/lsystem/turtle2d.h"
+#include "kernels/lsystem/turtle/turtle2d.h"
 
 using namespace selfsim;
 using namespace selfsim::develop;

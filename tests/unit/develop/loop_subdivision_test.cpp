@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "../lsystem/table1.h"
+#include "kernels/base/error.h"
 #include "kernels/develop/control_mesh.h"
-#include "kernels/geom/error.h"
 #include "kernels/geom/mesh_check.h"
-#include "kernels/lsystem/turtle2d.h"
+#include "kernels/lsystem/turtle/turtle2d.h"
 
 using namespace selfsim;
 using namespace selfsim::develop;

@@ -8,8 +8,8 @@
 #include <numbers>
 
 #include "../lsystem/table1.h"
-#include "kernels/geom/error.h"
-#include "kernels/lsystem/turtle2d.h"
+#include "kernels/base/error.h"
+#include "kernels/lsystem/turtle/turtle2d.h"
 
 using namespace selfsim;
 using namespace selfsim::develop;

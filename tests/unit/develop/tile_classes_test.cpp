@@ -12,7 +12,7 @@
 
 #include "../lsystem/table1.h"
 #include "kernels/develop/develop.h"
-#include "kernels/lsystem/turtle2d.h"
+#include "kernels/lsystem/turtle/turtle2d.h"
 
 using namespace selfsim;
 using namespace selfsim::develop;

@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "kernels/base/error.h"
 #include "kernels/exclusion/exclusion_curve.h"
-#include "kernels/geom/error.h"
 
 using namespace selfsim;
 

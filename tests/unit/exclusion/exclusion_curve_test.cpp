@@ -5,8 +5,8 @@
 
 #include <string>
 
+#include "kernels/base/error.h"
 #include "kernels/exclusion/discs.h"
-#include "kernels/geom/error.h"
 #include "kernels/geom/segment2.h"
 
 using namespace selfsim;

@@ -5,13 +5,13 @@
 
 #include <cmath>
 
-#include "kernels/geom/box_mesh.h"
 #include "kernels/geom/distance3.h"
 #include "kernels/geom/mesh_check.h"
 #include "kernels/geom/mesh_intersections.h"
-#include "kernels/geom/volume.h"
-#include "kernels/geom/wall_grid.h"
 #include "kernels/geom/winding_number.h"
+#include "kernels/region/box_mesh.h"
+#include "kernels/region/volume.h"
+#include "kernels/region/wall_grid.h"
 
 using namespace selfsim;
 using namespace selfsim::exclusion;

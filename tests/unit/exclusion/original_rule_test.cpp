@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 
 namespace selfsim::exclusion {
 namespace {

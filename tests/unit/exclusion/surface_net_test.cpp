@@ -6,9 +6,9 @@
 #include <random>
 #include <set>
 
-#include "kernels/geom/box_mesh.h"
-#include "kernels/geom/volume.h"
-#include "kernels/geom/wall_grid.h"
+#include "kernels/region/box_mesh.h"
+#include "kernels/region/volume.h"
+#include "kernels/region/wall_grid.h"
 
 namespace selfsim::exclusion {
 namespace {  // The same with the walls measured on a distance grid: the walls' steps depend only on the move.

@@ -1,4 +1,4 @@
-#include "kernels/geom/budget.h"
+#include "kernels/base/budget.h"
 
 #include <gtest/gtest.h>
 

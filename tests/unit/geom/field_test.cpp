@@ -5,7 +5,7 @@
 #include <limits>
 #include <string>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 
 using namespace selfsim;
 

@@ -16,7 +16,7 @@
 #include <string>
 #include <utility>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 
 using namespace selfsim;
 

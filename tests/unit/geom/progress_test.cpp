@@ -1,4 +1,4 @@
-#include "kernels/geom/progress.h"
+#include "kernels/base/progress.h"
 
 #include <gtest/gtest.h>
 

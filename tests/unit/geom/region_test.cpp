@@ -1,13 +1,13 @@
 // Seed 004's regions: any simple polygon, also non-convex (Figure 10's L), and polygons with holes; what
 // is inside, how far from the boundary, and every malformed ring refused naming its problem.
-#include "kernels/geom/region.h"
+#include "kernels/region/region.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/geom/segment2.h"
 #include "kernels/geom/segment_grid.h"
 

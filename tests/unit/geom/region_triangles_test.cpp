@@ -2,7 +2,7 @@
 // with h holes), areas equal to the region's, every triangle counter-clockwise and every boundary edge used
 // once, on Koch snowflakes, nested rings, staircases and combs (equal y-coordinates, collinear runs), and
 // every malformed input refused naming its path and point.
-#include "kernels/geom/region_triangles.h"
+#include "kernels/region/region_triangles.h"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 #include <string>
 #include <utility>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 
 using namespace selfsim;
 

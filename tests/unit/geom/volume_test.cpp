@@ -1,4 +1,4 @@
-#include "kernels/geom/volume.h"
+#include "kernels/region/volume.h"
 
 #include <gtest/gtest.h>
 
@@ -6,11 +6,11 @@
 #include <numbers>
 #include <vector>
 
-#include "kernels/geom/box_mesh.h"
-#include "kernels/geom/level_set.h"
 #include "kernels/geom/mesh_check.h"
 #include "kernels/geom/mesh_intersections.h"
 #include "kernels/geom/winding_number.h"
+#include "kernels/region/box_mesh.h"
+#include "kernels/region/level_set.h"
 
 namespace selfsim {
 namespace {

@@ -1,4 +1,4 @@
-#include "kernels/geom/wall_grid.h"
+#include "kernels/region/wall_grid.h"
 
 #include <gtest/gtest.h>
 

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/hoist/iterate.h"
 #include "kernels/hoist/multiply.h"
 #include "kernels/hoist/spline.h"

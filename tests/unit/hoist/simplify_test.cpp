@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 
 using namespace selfsim;
 

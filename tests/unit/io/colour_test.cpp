@@ -1,4 +1,4 @@
-#include "kernels/io/colour.h"
+#include "kernels/io/svg/colour.h"
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
-#include "kernels/io/curve_style.h"
+#include "kernels/io/svg/curve_style.h"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
 
 #include "io_fixtures.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/io/read.h"
 
 using namespace selfsim;

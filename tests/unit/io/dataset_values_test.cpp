@@ -1,10 +1,10 @@
-#include "kernels/io/dataset_values.h"
+#include "kernels/io/dataset/dataset_values.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 
 using namespace selfsim;
 

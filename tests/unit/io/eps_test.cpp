@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "io_fixtures.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/io/save.h"
 
 using namespace selfsim;

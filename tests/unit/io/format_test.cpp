@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 
 using namespace selfsim;
 using io::ValueKind;

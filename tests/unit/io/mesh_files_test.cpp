@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "io_fixtures.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/geom/mesh.h"
 #include "kernels/io/read.h"
 #include "kernels/io/save.h"

@@ -6,8 +6,8 @@
 #include <fstream>
 
 #include "io_fixtures.h"
-#include "kernels/geom/error.h"
-#include "kernels/io/dataset_values.h"
+#include "kernels/base/error.h"
+#include "kernels/io/dataset/dataset_values.h"
 #include "kernels/io/read.h"
 
 using namespace selfsim;

@@ -1,6 +1,6 @@
 // The field views and previews colour by: class fields categorical, levels that vary, arclength for a plain
 // curve, ranges over a whole series.
-#include "kernels/io/natural_field.h"
+#include "kernels/io/view/natural_field.h"
 
 #include <gtest/gtest.h>
 

@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "io_fixtures.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 
 using namespace selfsim;
 namespace fs = std::filesystem;

@@ -1,6 +1,6 @@
 // view.py's header: every dataset with its role, series flag and colouring as Python literals the body
 // reads, names quoted so no file name can end the string, and the body appended.
-#include "kernels/io/paraview_view.h"
+#include "kernels/io/view/paraview_view.h"
 
 #include <gtest/gtest.h>
 

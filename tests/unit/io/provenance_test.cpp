@@ -1,13 +1,13 @@
 // The provenance record read back strictly: what provenance_json writes reads back whole (non-UTF-8 bytes,
 // control characters, "--"), and a string JSON would refuse, or one holding a NUL, is an Error naming the
 // field instead of a character made up (\uzzzz read as a NUL, which cut the recipe path for rerun).
-#include "kernels/io/provenance.h"
+#include "kernels/io/provenance/provenance.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 
 using namespace selfsim;
 

@@ -12,7 +12,7 @@
 
 #include "io_fixtures.h"
 #include "kernels/analysis/dataset_diff.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/io/save.h"
 
 using namespace selfsim;

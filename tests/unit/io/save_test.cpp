@@ -6,9 +6,9 @@
 
 #include "io_fixtures.h"
 #include "kernels/analysis/dataset_diff.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/io/read.h"
-#include "kernels/lsystem/turtle2d.h"
+#include "kernels/lsystem/turtle/turtle2d.h"
 
 using namespace selfsim;
 namespace fs = std::filesystem;

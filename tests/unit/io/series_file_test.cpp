@@ -1,13 +1,13 @@
 // ParaView time series: step files in a folder named for the series, the series file naming them with
 // their times, written last; rewritten in place without stale steps; bad names and times refused.
-#include "kernels/io/series_file.h"
+#include "kernels/io/view/series_file.h"
 
 #include <gtest/gtest.h>
 
 #include <regex>
 
 #include "io_fixtures.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/io/read.h"
 
 using namespace selfsim;

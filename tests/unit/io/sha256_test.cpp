@@ -1,4 +1,4 @@
-#include "kernels/io/sha256.h"
+#include "kernels/io/provenance/sha256.h"
 
 #include <gtest/gtest.h>
 

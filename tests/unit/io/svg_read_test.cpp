@@ -1,4 +1,4 @@
-// The SVG reader (kernels/io/svg_read.cpp): transforms, what is not drawn (definitions, hidden elements,
+// The SVG reader (kernels/io/svg/svg_read.cpp): transforms, what is not drawn (definitions, hidden elements,
 // other XML namespaces), duplicate attributes, incomplete commands, one-point subpaths and SVG's compact
 // number syntax. Files are written as selfsim writes them, inside <g transform="scale(1,-1)">, so the
 // points read back are the path data's own numbers.
@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "io_fixtures.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/io/read.h"
 #include "kernels/io/save.h"
 

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "io_fixtures.h"
-#include "kernels/geom/box_mesh.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/io/save.h"
+#include "kernels/region/box_mesh.h"
 
 using namespace selfsim;
 using io_fixtures::TempDir;

@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "io_fixtures.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
+#include "kernels/io/mesh/zip_part.h"
 #include "kernels/io/read.h"
-#include "kernels/io/zip_part.h"
 
 using namespace selfsim;
 using io_fixtures::TempDir;

@@ -1,6 +1,6 @@
 // The .vdb reader on files selfsim writes: a sphere's level set meshes back to a closed surface of the
 // sphere's radius; info reads the grid's metadata; bad files are one-line errors.
-#include "kernels/io/vdb_read.h"
+#include "kernels/io/vdb/vdb_read.h"
 
 #include <gtest/gtest.h>
 
@@ -8,9 +8,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "kernels/geom/level_set.h"
-#include "kernels/geom/volume.h"
-#include "kernels/geom/wall_grid.h"
+#include "kernels/region/level_set.h"
+#include "kernels/region/volume.h"
+#include "kernels/region/wall_grid.h"
 
 namespace selfsim::io {
 namespace {

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "io_fixtures.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/geom/mesh.h"
 #include "kernels/geom/polyline.h"
 #include "kernels/io/read.h"

@@ -7,7 +7,7 @@
 
 #include "kernels/lsystem/production_count.h"
 #include "kernels/lsystem/rewrite.h"
-#include "kernels/lsystem/turtle2d.h"
+#include "kernels/lsystem/turtle/turtle2d.h"
 #include "table1.h"
 
 using namespace selfsim;

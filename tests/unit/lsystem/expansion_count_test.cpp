@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "kernels/geom/budget.h"
+#include "kernels/base/budget.h"
 #include "kernels/lsystem/module_rewrite.h"
 #include "kernels/lsystem/rule_parser.h"
 #include "module_grammar.h"

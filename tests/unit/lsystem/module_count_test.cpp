@@ -4,10 +4,10 @@
 
 #include <cmath>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/lsystem/module_rewrite.h"
-#include "kernels/lsystem/module_turtle.h"
 #include "kernels/lsystem/rule_parser.h"
+#include "kernels/lsystem/turtle/module_turtle.h"
 #include "module_grammar.h"
 
 using namespace selfsim;

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "kernels/geom/budget.h"
+#include "kernels/base/budget.h"
 #include "kernels/lsystem/rule_parser.h"
 #include "module_grammar.h"
 

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "kernels/geom/budget.h"
+#include "kernels/base/budget.h"
 #include "kernels/lsystem/rewrite.h"
 #include "kernels/lsystem/rule_parser.h"
 

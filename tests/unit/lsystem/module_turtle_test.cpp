@@ -1,4 +1,4 @@
-#include "kernels/lsystem/module_turtle.h"
+#include "kernels/lsystem/turtle/module_turtle.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <set>
 
-#include "kernels/geom/budget.h"
+#include "kernels/base/budget.h"
 #include "kernels/lsystem/rule_parser.h"
 #include "module_grammar.h"
 #include "table1.h"

@@ -4,9 +4,9 @@
 
 #include <numeric>
 
-#include "kernels/geom/budget.h"
-#include "kernels/lsystem/module_turtle.h"
+#include "kernels/base/budget.h"
 #include "kernels/lsystem/rule_parser.h"
+#include "kernels/lsystem/turtle/module_turtle.h"
 #include "module_grammar.h"
 
 using namespace selfsim;

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "kernels/lsystem/rewrite.h"
-#include "kernels/lsystem/turtle2d.h"
+#include "kernels/lsystem/turtle/turtle2d.h"
 #include "table1.h"
 
 using namespace selfsim::lsystem;

@@ -1,4 +1,4 @@
-#include "kernels/lsystem/turtle2d.h"
+#include "kernels/lsystem/turtle/turtle2d.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <numbers>
 #include <set>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/lsystem/production_count.h"
 #include "kernels/lsystem/rewrite.h"
 #include "table1.h"

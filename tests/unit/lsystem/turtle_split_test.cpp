@@ -1,4 +1,4 @@
-#include "kernels/lsystem/turtle_split.h"
+#include "kernels/lsystem/turtle/turtle_split.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -8,7 +8,7 @@
 
 #include "kernels/lsystem/production_count.h"
 #include "kernels/lsystem/rewrite.h"
-#include "kernels/lsystem/turtle2d.h"
+#include "kernels/lsystem/turtle/turtle2d.h"
 #include "table1.h"
 
 using namespace selfsim;

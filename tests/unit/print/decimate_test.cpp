@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/geom/mesh_check.h"
 #include "kernels/print/grid_thicken.h"
 

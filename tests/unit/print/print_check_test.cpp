@@ -7,8 +7,8 @@
 
 #include <algorithm>
 
-#include "kernels/geom/box_mesh.h"
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
+#include "kernels/region/box_mesh.h"
 #include "print_fixtures.h"
 
 using namespace selfsim;

@@ -11,10 +11,10 @@
 #include <numbers>
 #include <utility>
 
-#include "kernels/geom/box_mesh.h"
-#include "kernels/geom/volume.h"
-#include "kernels/geom/wall_grid.h"
 #include "kernels/print/print_check.h"
+#include "kernels/region/box_mesh.h"
+#include "kernels/region/volume.h"
+#include "kernels/region/wall_grid.h"
 #include "print_fixtures.h"
 
 using namespace selfsim;

@@ -10,7 +10,7 @@
 #include <numbers>
 #include <string>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/geom/mesh_check.h"
 #include "kernels/geom/mesh_intersections.h"
 

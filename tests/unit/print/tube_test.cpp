@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "kernels/geom/error.h"
+#include "kernels/base/error.h"
 #include "kernels/geom/mesh_check.h"
 
 using namespace selfsim;

@@ -1,0 +1,80 @@
+// SVG for browsers and vector editors. Path data keeps the curve's own coordinates (a flip of y in a group
+// transform makes y point up, as in the papers); the viewBox fits the curve with a small margin, and the
+// stroke width is given in pixels of the drawing's width/height, converted to curve units, so a curve of
+// any size reads the same. (vector-effect: non-scaling-stroke would say this too, but librsvg and some
+// other renderers ignore it.)
+#include <algorithm>
+#include <cmath>
+
+#include "kernels/base/error.h"
+#include "kernels/io/provenance/provenance.h"
+#include "kernels/io/svg/curve_style.h"
+#include "kernels/io/text/put_number.h"
+#include "kernels/io/writers.h"
+
+namespace selfsim::io {
+
+void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progress& progress) {
+  const Polyline& c = *std::get<const Polyline*>(v);  // the registry sends only 2D curves here
+  const DrawingFrame frame = drawing_frame(c, opt.size);
+  const Vec2 lo = frame.lo, extent = frame.extent;
+  const double px = frame.scale, big = frame.diameter;
+  const CurveStyles styles(c, opt);
+  const int digits = coordinate_digits(frame);
+
+  std::string s;  // written out every megabyte or so: memory stays flat whatever the curve
+  auto flush = [&] {
+    out.write(s);
+    s.clear();
+  };
+  // Width and height in the size's unit (pixels, or mm/cm/in for plotters); the stroke width is in that unit too.
+  s += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"";
+  put_number(s, extent.x * px);
+  s += opt.size_unit + "\" height=\"";
+  put_number(s, extent.y * px);
+  s += opt.size_unit + "\" viewBox=\"";
+  for (double v : {lo.x, -(lo.y + extent.y), extent.x, extent.y}) {
+    put_number(s, v, digits);
+    s += ' ';
+  }
+  s.back() = '"';
+  s += ">\n";
+  if (!opt.provenance.empty()) s += "<!-- " + std::string(provenance_key) + " " + opt.provenance + " -->\n";
+  s += "<g transform=\"scale(1,-1)\" fill-rule=\"evenodd\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
+  const double noise = 1e-12 * big;
+  std::size_t written = 0;
+  PathStyle style;
+  // One <path> element per run of paths of one style: a group's member, or the whole of a plain curve.
+  for (std::size_t i = 0; i < c.paths(); ++i) {
+    if (const PathStyle next = styles.at(i); i == 0 || !(next == style)) {
+      if (i > 0) s += "\"/>\n";
+      style = next;
+      s += "<path fill=\"" + style.fill + "\" stroke=\"" + style.stroke + "\" stroke-width=\"";
+      if (!std::isfinite(style.width / px)) throw Error(drawing_overflow);
+      put_number(s, style.width / px);
+      s += "\" d=\"";
+    }
+    char cmd = 'M';
+    // A closed path (back at its start) ends with Z, so renderers join its last corner like the others.
+    auto path = c.path(i);
+    const bool closed = closed_path(path);
+    if (closed) path = path.first(path.size() - 1);
+    for (Vec2 p : path) {
+      // Rounding noise around zero (-1.36e-19 on a unit curve) is written as the 0 it means.
+      p = {std::abs(p.x) < noise ? 0.0 : p.x, std::abs(p.y) < noise ? 0.0 : p.y};
+      if (++written % (1u << 20) == 0)
+        progress.step(0.9 * static_cast<double>(written) / static_cast<double>(c.points.size()));
+      s += cmd;
+      put_number(s, p.x, digits);
+      s += ' ';
+      put_number(s, p.y, digits);
+      cmd = cmd == 'M' ? 'L' : ' ';
+      if (s.size() > (1u << 20)) flush();
+    }
+    if (closed) s += 'Z';
+  }
+  s += "\"/>\n</g>\n</svg>\n";  // c has at least one path: save() refuses empty curves
+  flush();
+}
+
+}  // namespace selfsim::io

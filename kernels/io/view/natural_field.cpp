@@ -1,0 +1,151 @@
+#include "kernels/io/view/natural_field.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "kernels/base/error.h"
+
+namespace selfsim::io {
+namespace {
+
+bool is_class_field(const std::string& name) {
+  return name == "tile_class" || name == "surface" || name == "curve" || name == "tile";
+}
+
+// Fills min, max and (for integer fields) distinct from values(i), i < count.
+template <class Get>
+void measure(FieldSummary& s, std::size_t count, Get values, Progress& progress = no_progress()) {
+  std::set<int> seen;
+  bool first = true;
+  for (std::size_t i = 0; i < count; ++i) {
+    if ((i & 0xfffff) == 0xfffff && progress.cancelled()) throw Cancelled();
+    const double v = values(i);
+    if (first || v < s.min) s.min = v;
+    if (first || v > s.max) s.max = v;
+    first = false;
+    if (s.integer && seen.size() <= max_categories) seen.insert(static_cast<int>(v));
+  }
+  // Values that differ only by rounding (a tube's walls all read as the 1.2 mm cap) are one value: a colour
+  // scale spread over 1e-15 would paint the noise.
+  if (!first && s.max - s.min <= 1e-9 * std::max(std::abs(s.min), std::abs(s.max))) s.max = s.min;
+  s.distinct.assign(seen.begin(), seen.end());
+}
+
+void add_fields(std::vector<FieldSummary>& out, const Fields& fields, std::size_t count, bool on_points,
+                Progress& progress) {
+  for (const Field& f : fields.list) {
+    FieldSummary s{f.name, on_points, f.scalar() == Scalar::Int32, f.components, 0, 0, {}};
+    if (f.components == 1)
+      measure(
+          s, f.uniform ? std::min<std::size_t>(count, 1) : count, [&](std::size_t i) { return f.at(i); }, progress);
+    out.push_back(std::move(s));
+  }
+}
+
+void add_values(std::vector<FieldSummary>& out, const std::map<std::string, FieldValues>& fields, bool on_points) {
+  for (const auto& entry : fields) {  // not a structured binding: clang 14 cannot capture one in a lambda
+    const FieldValues& f = entry.second;
+    FieldSummary s{entry.first, on_points, true, f.components, 0, 0, {}};
+    s.integer =
+        std::all_of(f.values.begin(), f.values.end(), [](double v) { return std::abs(v) < 2e9 && v == std::floor(v); });
+    if (f.components == 1) measure(s, f.values.size(), [&](std::size_t i) { return f.values[i]; });
+    out.push_back(std::move(s));
+  }
+}
+
+}  // namespace
+
+Colouring natural_colouring(std::span<const FieldSummary> fields) {
+  auto pick = [&](const std::string& name, bool must_vary) -> const FieldSummary* {
+    // Cell fields first: a face's class or level is what the picture shows.
+    for (bool points : {false, true})
+      for (const FieldSummary& f : fields)
+        if (f.name == name && f.on_points == points && f.components == 1 && (!must_vary || f.max > f.min)) return &f;
+    return nullptr;
+  };
+  const FieldSummary* chosen = nullptr;
+  // A print check's copy shows its walls (print_check.h): that is what it was made for.
+  for (const char* name : {"wall", "tile_class", "surface", "curve", "level", "arclength", "t"})
+    if ((chosen = pick(name, true))) break;
+  if (!chosen)
+    for (const FieldSummary& f : fields)
+      if (f.components == 1 && f.max > f.min && f.name != "path") {
+        chosen = &f;
+        break;
+      }
+  Colouring c;
+  if (!chosen) return c;
+  c.field = chosen->name;
+  c.on_points = chosen->on_points;
+  c.min = chosen->min;
+  c.max = chosen->max;
+  c.categorical = chosen->integer && is_class_field(chosen->name) && chosen->distinct.size() <= max_categories;
+  if (c.categorical) c.categories = chosen->distinct;
+  return c;
+}
+
+std::vector<FieldSummary> summarise(const Fields& points, std::size_t point_count, const Fields& cells,
+                                    std::size_t cell_count, Progress& progress) {
+  std::vector<FieldSummary> out;
+  add_fields(out, points, point_count, true, progress);
+  add_fields(out, cells, cell_count, false, progress);
+  return out;
+}
+
+std::vector<FieldSummary> summarise(const Dataset& d) {
+  std::vector<FieldSummary> out;
+  add_values(out, d.point_fields, true);
+  add_values(out, d.cell_fields, false);
+  return out;
+}
+
+std::vector<FieldSummary> summarise(const ValueRef& v, Progress& progress) {
+  return std::visit(
+      [&](const auto* value) {
+        using T = std::decay_t<decltype(*value)>;
+        if constexpr (std::is_same_v<T, Mesh>) {
+          return summarise(value->point_fields, value->points.size(), value->face_fields, value->faces(), progress);
+        } else {
+          std::vector<FieldSummary> out =
+              summarise(value->point_fields, value->points.size(), value->cell_fields, value->paths(), progress);
+          if (!value->point_fields.find("arclength")) {
+            double longest = 0;
+            for (std::size_t p = 0; p < value->paths(); ++p) {
+              double length = 0;
+              const auto path = value->path(p);
+              for (std::size_t i = 1; i < path.size(); ++i) {
+                if ((i & 0xfffff) == 0xfffff && progress.cancelled()) throw Cancelled();
+                length += norm(path[i] - path[i - 1]);
+              }
+              longest = std::max(longest, length);
+            }
+            out.push_back(FieldSummary{"arclength", true, false, 1, 0, longest, {}});
+          }
+          return out;
+        }
+      },
+      v);
+}
+
+Colouring series_colouring(std::span<const ValueRef> steps, Progress& progress) {
+  if (steps.empty()) return {};
+  Colouring c = natural_colouring(summarise(steps.back(), progress));
+  if (c.field.empty()) return c;
+  std::set<int> categories(c.categories.begin(), c.categories.end());
+  for (const ValueRef& step : steps)
+    for (const FieldSummary& f : summarise(step, progress))
+      if (f.name == c.field && f.on_points == c.on_points && f.components == 1) {
+        c.min = std::min(c.min, f.min);
+        c.max = std::max(c.max, f.max);
+        categories.insert(f.distinct.begin(), f.distinct.end());
+      }
+  if (c.categorical) {
+    if (categories.size() > max_categories) c.categorical = false;
+    c.categories.assign(categories.begin(), categories.end());
+    if (!c.categorical) c.categories.clear();
+  }
+  return c;
+}
+
+}  // namespace selfsim::io

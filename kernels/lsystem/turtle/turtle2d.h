@@ -1,0 +1,39 @@
+// The 2D turtle interpretation of an L-system level (seed 002 §1, Table 1), streamed: the level's string is
+// never built. rewrite() (rewrite.h) expands depth-first straight into the turtle, and the output is
+// reserved from the production-matrix prediction, so memory is the vertex array and nothing more.
+// Lattice grammars without branches or moves are drawn by several threads at once (turtle_split.h), each
+// into its own slice of the array; the result is byte-identical whatever the number of threads.
+#pragma once
+
+#include "kernels/base/budget.h"
+#include "kernels/base/progress.h"
+#include "kernels/geom/polyline.h"
+#include "kernels/geom/similarity.h"
+#include "kernels/lsystem/grammar.h"
+
+namespace selfsim::lsystem {
+
+struct TurtleOptions {
+  int level = 0;          // rewriting steps applied to the axiom, in [0, max_level]
+  bool normalize = true;  // open curves run from (0,0) to (1,0); see below
+  PointBudget budget;     // refuse (before any work) a level predicted not to fit
+
+  void validate() const;
+};
+
+// Where a turtle's drawing in unit steps goes: open curves (turtle ending at `end`, away from its start after
+// `steps` unit steps) onto (0,0)-(1,0) when opt.normalize, others scaled by shrink^level (see below).
+Similarity2 turtle_placement(const Grammar& g, const TurtleOptions& opt, Vec2 end, double steps);
+
+// The curve of grammar g at opt.level, with a uniform point field `level`.
+// Normalisation: when the turtle ends away from where it started, the direct similarity taking its start
+// to (0,0) and its end to (1,0) is applied, so every level of an open curve spans the same unit segment.
+// A closed curve (turtle back at its start) is left where the turtle drew it: starting at (0,0), heading
+// start_angle, with steps of length shrink^level. With normalize = false every curve is left that way.
+// Branches '[' ']' and move symbols start new paths. Throws BudgetError if the level, or the branches it
+// keeps open, would not fit opt.budget; Cancelled when progress says so (checked from every thread).
+Polyline turtle2d(const Grammar& g, const TurtleOptions& opt, Progress& progress);
+// The same into `out`, reusing its memory (for repeated runs; benches).
+void turtle2d_into(const Grammar& g, const TurtleOptions& opt, Progress& progress, Polyline& out);
+
+}  // namespace selfsim::lsystem
