@@ -1,4 +1,4 @@
-// Fuzz target: the .vdb reader (kernels/io/vdb/vdb_read.cpp), as `selfsim info FILE.vdb`, `selfsim preview`,
+// Fuzz target: the .vdb reader (kernels/plugins/openvdb/vdb_read.cpp), as `selfsim info FILE.vdb`, `selfsim preview`,
 // load() and volume.vdb() reach it: the grids' metadata, then the surface of the first level set. OpenVDB
 // trusts its files, so the reader checks what a file declares before reading and runs OpenVDB in a limited
 // child process; a selfsim::Error is a proper refusal, a crash, hang or other exception here is a finding,
