@@ -65,17 +65,19 @@ check "the second run wrote its own folder" test -s late/level=2/m.vtp
 rm -f go.lua
 
 # The same for `run --watch` (and the studio, which runs the same way): a link put in place of its staging
-# folder after it was made is refused by the run, not written through. The hold is go/ahead.lua, in a folder
-# inside the recipe's, which the watcher does not watch (a change it saw would start the run again).
-mkdir -p wt/go
-sed 's/require, "go"/require, "go.ahead"/' hold.lua >wt/hold.lua
+# folder after it was made is refused by the run, not written through. The hold is a/b/c/go/ahead.lua, four
+# folders below the recipe's: the watcher watches three levels of subfolders (file_watcher.h), and a change it
+# saw would start a second run, which makes a real staging folder and publishes m.vtp (before, the hold was
+# one folder down, and a second run could publish before the test's Ctrl-C reached the watcher).
+mkdir -p wt/a/b/c/go
+sed 's/require, "go"/require, "a.b.c.go.ahead"/' hold.lua >wt/hold.lua
 "$selfsim" run wt/hold.lua -o wo --watch -q >"$tmp/out" 2>"$tmp/err" &
 watch=$!
 for _ in $(seq 1200); do [ -d wo/.selfsim-next ] && break; sleep 0.05; done
 check "the watched run started" test -d wo/.selfsim-next
 rm -rf wo/.selfsim-next
 ln -s "$tmp/outside" wo/.selfsim-next
-echo 'return true' >wt/go/ahead.lua
+echo 'return true' >wt/a/b/c/go/ahead.lua
 for _ in $(seq 600); do grep -q "link" "$tmp/err" && break; sleep 0.05; done
 kill -INT "$watch"
 wait "$watch"
