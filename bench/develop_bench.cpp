@@ -11,7 +11,6 @@
 #include "kernels/develop/control_mesh.h"
 #include "kernels/develop/develop.h"
 #include "kernels/develop/loop_subdivision.h"
-#include "kernels/develop/thicken.h"
 #include "kernels/geom/mesh_intersections.h"
 #include "kernels/lsystem/grammar.h"
 #include "kernels/lsystem/turtle/turtle2d.h"

@@ -1,5 +1,5 @@
-// Fuzz target: the .vtp reader (kernels/io/vtk_read.cpp, VTK's vtkXMLPolyDataReader underneath), as
-// `selfsim info FILE.vtp` and `selfsim diff` reach it. See read_fuzz.h.
+// Fuzz target: the .vtp reader (kernels/plugins/vtk/vtk_read.cpp behind kernels/io/vtk/vtk_header_check.cpp, VTK's
+// vtkXMLPolyDataReader underneath), as `selfsim info FILE.vtp` and `selfsim diff` reach it. See read_fuzz.h.
 #include <vtkObject.h>
 
 #include "fuzz/read_fuzz.h"

@@ -12,7 +12,7 @@
 #include "kernels/base/check.h"
 #include "kernels/geom/curve_join.h"
 #include "kernels/io/save.h"
-#include "kernels/io/svg/colour.h"
+#include "kernels/io/text/colour.h"
 
 namespace selfsim::interp {
 

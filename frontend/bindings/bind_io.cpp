@@ -25,7 +25,7 @@
 #include "kernels/base/lower_case.h"
 #include "kernels/io/csv_file.h"
 #include "kernels/io/save.h"
-#include "kernels/io/svg/colour.h"
+#include "kernels/io/text/colour.h"
 #include "kernels/io/view/series_file.h"
 #include "kernels/region/level_set.h"
 

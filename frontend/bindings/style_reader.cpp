@@ -1,7 +1,7 @@
 #include "frontend/bindings/style_reader.h"
 
 #include "kernels/base/lower_case.h"
-#include "kernels/io/svg/colour.h"
+#include "kernels/io/text/colour.h"
 
 namespace selfsim::interp {
 

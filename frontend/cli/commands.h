@@ -31,8 +31,6 @@ ParamsRead read_params(const RunConfig& config);
 int studio_command(const RunConfig& config, int port);
 // `selfsim run --watch` (watch_command.cpp).
 int watch_command(const RunConfig& config);
-// The running selfsim's own path (/proc/self/exe), for the runs a sweep or --watch starts.
-std::string selfsim_executable();
 int diff_command(const std::string& a, const std::string& b, double tol);  // diff_command.cpp
 int info_command(const std::string& file);                                 // info_command.cpp
 // Called inside a catch (command_failure.cpp): prints "selfsim COMMAND: what" whatever was thrown (an Error,

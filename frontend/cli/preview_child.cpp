@@ -11,7 +11,6 @@
 #include <cstdio>
 
 #include "frontend/cli/commands.h"
-#include "frontend/cli/sweep/sweep.h"
 #include "frontend/process/spawn_selfsim.h"
 
 namespace selfsim::interp {

@@ -62,4 +62,11 @@ int exit_code(int status) {
   return 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
 }
 
+std::string selfsim_executable() {
+  std::error_code ec;
+  const std::filesystem::path p = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) throw Error("cannot find the selfsim executable (/proc/self/exe): " + ec.message());
+  return p.string();
+}
+
 }  // namespace selfsim::interp

@@ -10,6 +10,9 @@
 
 namespace selfsim::interp {
 
+// The running selfsim's own path (/proc/self/exe), for the runs a sweep, --watch, rerun or a preview starts.
+std::string selfsim_executable();
+
 // Starts `exe` with `args` (after the program name); its stdout and stderr go to root/log (created or
 // truncated through the confined writer's folders, output_file.h: never through a link) or, when `log` is
 // empty, where ours go. Returns its pid; throws Error.

@@ -6,7 +6,7 @@
 #include "kernels/base/error.h"
 #include "kernels/io/provenance/provenance.h"
 #include "kernels/io/read_error.h"
-#include "kernels/io/svg/colour.h"
+#include "kernels/io/text/colour.h"
 
 namespace selfsim::io {
 

@@ -35,7 +35,7 @@ bool has_module_syntax(std::string_view text);
 
 // The text on one line and a caret under the character at byte `column` on the next, for messages:
 //   "    A(x) : x > -> F\n               ^"
-// Placed by the columns a terminal gives the characters before it (io/text_width.h: 2 for a wide one, 0 for a
+// Placed by the columns a terminal gives the characters before it (base/text_width.h: 2 for a wide one, 0 for a
 // combining mark), not by bytes or characters; control and format characters shown escaped ("\u{202e}").
 std::string caret_lines(std::string_view text, std::size_t column);
 // The column (0-based) of the byte at `column` of text as an editor counts it: the characters before it.

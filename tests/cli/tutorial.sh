@@ -58,5 +58,9 @@ done <tutorial.md
 [ "$blocks" -ge 4 ] || fail "found only $blocks code blocks in the tutorial"
 [ "${#saves[@]}" -ge 3 ] || fail "found only ${#saves[@]} saved files in the tutorial's recipes"
 for f in "${saves[@]}"; do [ -s "out/$f" ] || fail "the tutorial's recipes save $f, but out/$f is missing"; done
-[ $failures = 0 ] && echo "tutorial: $blocks blocks, ${#saves[@]} files written"
+# Every output file the tutorial's text names (`out/view.py`, `sweep/sheet_dragon.svg`, ...) is there.
+named=$(grep -o '`\(out\|sweep\)/[^` ]*[^/` ]`' tutorial.md | tr -d '`' | sort -u)
+for f in $named; do [ -e "$f" ] || fail "the tutorial names $f, but the commands did not make it"; done
+[ -n "$named" ] || fail "the tutorial names no output file"
+[ $failures = 0 ] && echo "tutorial: $blocks blocks, ${#saves[@]} files written, $(echo $named | wc -w) named files there"
 exit $((failures > 0))

@@ -9,20 +9,6 @@
 
 namespace selfsim::interp {
 
-std::string url_path(const std::string& path) {
-  std::string s;
-  for (unsigned char c : path) {
-    if (std::isalnum(c) || std::string_view("-._~/=,").find(static_cast<char>(c)) != std::string_view::npos) {
-      s += static_cast<char>(c);
-    } else {
-      char buf[4];
-      std::snprintf(buf, sizeof buf, "%%%02X", c);
-      s += buf;
-    }
-  }
-  return s;
-}
-
 std::optional<std::string> url_decoded(std::string_view text, bool query) {
   std::string s;
   for (std::size_t i = 0; i < text.size(); ++i) {

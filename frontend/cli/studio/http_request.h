@@ -27,9 +27,6 @@ std::optional<HttpRequest> parse_http_request(std::string_view head);
 // %XX (and, in a query, '+' for a space) undone; nullopt for a bad escape or a NUL byte.
 std::optional<std::string> url_decoded(std::string_view text, bool query = true);
 
-// A relative path as a URL path: every byte but letters, digits and -._~/=, percent-encoded.
-std::string url_path(const std::string& path);
-
 // "a=1&b=two" as {a: 1, b: two}, decoded; nullopt when a part does not decode.
 std::optional<std::map<std::string, std::string>> query_values(std::string_view query);
 

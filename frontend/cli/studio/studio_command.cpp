@@ -25,6 +25,7 @@
 #include "kernels/base/lower_case.h"
 #include "kernels/io/output_file.h"
 #include "kernels/io/text/json_text.h"
+#include "kernels/io/text/url_path.h"
 
 namespace selfsim::interp {
 
@@ -91,11 +92,11 @@ struct Studio {
       if (f.ends_with(".stl.json") || f.ends_with(".vdb.json")) continue;  // provenance beside a file
       std::string image = "null";
       if (lower_case(std::filesystem::path(f).extension().string()) == ".svg")
-        image = io::json_string("/out/" + url_path(f) + "?g=" + std::to_string(shown_generation));
+        image = io::json_string("/out/" + io::url_path(f) + "?g=" + std::to_string(shown_generation));
       else if (std::filesystem::is_regular_file(base.out_dir / preview_png(f), ec))
-        image = io::json_string("/out/" + url_path(preview_png(f)) + "?g=" + std::to_string(shown_generation));
+        image = io::json_string("/out/" + io::url_path(preview_png(f)) + "?g=" + std::to_string(shown_generation));
       list += std::string(list.empty() ? "" : ", ") + "{\"name\": " + io::json_string(f) +
-              ", \"url\": " + io::json_string("/out/" + url_path(f)) + ", \"image\": " + image + "}";
+              ", \"url\": " + io::json_string("/out/" + io::url_path(f)) + ", \"image\": " + image + "}";
     }
     return "{\"version\": " + std::to_string(version) + ", \"generation\": " + std::to_string(generation) +
            ", \"running\": " + (running ? "true" : "false") +

@@ -11,12 +11,12 @@
 
 #include "frontend/cli/commands.h"
 #include "frontend/cli/preview_child.h"
-#include "frontend/cli/studio/http_server.h"
 #include "frontend/cli/sweep/sweep.h"
 #include "frontend/lua/lua_support.h"
 #include "frontend/lua/parse_text.h"
 #include "kernels/base/lower_case.h"
 #include "kernels/io/output_file.h"
+#include "kernels/io/text/url_path.h"
 #include "kernels/io/text/xml_text.h"
 #include "kernels/io/view/series_file.h"
 
@@ -72,7 +72,7 @@ std::string sheet_svg(const SweepPlan& plan, const std::string& title, const std
     s += "<rect " + at + " width=\"" + std::to_string(cell) + "\" height=\"" + std::to_string(cell) +
          "\" fill=\"none\" stroke=\"#ccc\"/>\n";
     if (!images[i].empty()) {
-      const std::string href = io::xml_escaped(url_path(images[i]));
+      const std::string href = io::xml_escaped(io::url_path(images[i]));
       s += "<image " + at + " width=\"" + std::to_string(cell) + "\" height=\"" + std::to_string(cell) + "\" href=\"" +
            href + "\" xlink:href=\"" + href + "\" preserveAspectRatio=\"xMidYMid meet\"/>\n";
     } else {

@@ -166,13 +166,6 @@ void check_sweep_folders(const SweepConfig& c, const SweepPlan& plan) {
   }
 }
 
-std::string selfsim_executable() {
-  std::error_code ec;
-  const std::filesystem::path p = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (ec) throw Error("cannot find the selfsim executable (/proc/self/exe): " + ec.message());
-  return p.string();
-}
-
 int sweep_command(const SweepConfig& c) {
   const SweepPlan plan = plan_sweep(c.run.sets);
   const std::filesystem::path& out = c.run.out_dir;

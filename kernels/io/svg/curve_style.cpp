@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "kernels/base/error.h"
-#include "kernels/io/svg/colour.h"
+#include "kernels/io/text/colour.h"
 
 namespace selfsim::io {
 

@@ -8,8 +8,8 @@
 #include <cmath>
 
 #include "kernels/base/error.h"
-#include "kernels/io/svg/colour.h"
 #include "kernels/io/svg/curve_style.h"
+#include "kernels/io/text/colour.h"
 #include "kernels/io/text/put_number.h"
 #include "kernels/io/writers.h"
 

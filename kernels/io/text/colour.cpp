@@ -1,4 +1,4 @@
-#include "kernels/io/svg/colour.h"
+#include "kernels/io/text/colour.h"
 
 #include <algorithm>
 #include <cmath>

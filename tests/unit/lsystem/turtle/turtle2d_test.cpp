@@ -6,10 +6,10 @@
 #include <numbers>
 #include <set>
 
+#include "../table1.h"
 #include "kernels/base/error.h"
 #include "kernels/lsystem/production_count.h"
 #include "kernels/lsystem/rewrite.h"
-#include "table1.h"
 
 using namespace selfsim;
 using namespace selfsim::lsystem;

@@ -6,10 +6,10 @@
 #include <atomic>
 #include <cstring>
 
+#include "../table1.h"
 #include "kernels/lsystem/production_count.h"
 #include "kernels/lsystem/rewrite.h"
 #include "kernels/lsystem/turtle/turtle2d.h"
-#include "table1.h"
 
 using namespace selfsim;
 using namespace selfsim::lsystem;

@@ -1,3 +1,5 @@
+#include "kernels/io/read.h"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -5,7 +7,6 @@
 
 #include "kernels/base/error.h"
 #include "kernels/base/lower_case.h"
-#include "kernels/io/read.h"
 #include "kernels/io/read_error.h"
 #include "kernels/io/regular_file.h"
 

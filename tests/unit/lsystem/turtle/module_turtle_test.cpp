@@ -6,10 +6,10 @@
 #include <cmath>
 #include <set>
 
+#include "../module_grammar.h"
+#include "../table1.h"
 #include "kernels/base/budget.h"
 #include "kernels/lsystem/rule_parser.h"
-#include "module_grammar.h"
-#include "table1.h"
 
 using namespace selfsim;
 using namespace selfsim::lsystem;
