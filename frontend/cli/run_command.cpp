@@ -8,10 +8,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <set>
 #include <string_view>
 
 #include "frontend/bindings/bindings.h"
 #include "frontend/cli/commands.h"
+#include "frontend/cli/sweep/literal_params.h"
 #include "frontend/cli/sweep/sweep.h"
 #include "frontend/lua/lua_support.h"
 #include "frontend/lua/options_reader.h"
@@ -218,8 +220,13 @@ void check_sweep_params(const RunConfig& sweep, const SweepPlan& plan) {
     const auto spec =
         std::find_if(read.specs.begin(), read.specs.end(), [&k = key](const ParamSpec& p) { return p.name == k; });
     if (spec == read.specs.end()) {
+      // Stopped at a heavy step, the recipe may declare it later: its text tells, where every param() in
+      // it names a literal (else each run checks it, after a warning here).
+      const std::optional<std::set<std::string>> literal =
+          read.stopped_at.empty() ? std::nullopt : recipe_literal_params(config.recipe);
+      if (literal) names.insert(names.end(), literal->begin(), literal->end());
       const std::string near = suggestion(key, names);
-      if (!read.stopped_at.empty()) {  // perhaps declared after the first heavy step: each run checks it
+      if (!read.stopped_at.empty() && (!literal || literal->contains(key))) {
         std::fprintf(stderr, "selfsim: warning: --set %s: no param '%s' is read before %s%s\n", shown_text(key).c_str(),
                      shown_text(key).c_str(), read.stopped_at.c_str(),
                      near.empty() ? "" : (" (did you mean '" + near + "'?)").c_str());
