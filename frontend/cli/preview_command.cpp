@@ -41,10 +41,10 @@ namespace selfsim::interp {
 
 namespace {
 
-const char* const formats = ".vtp, .vtu, .svg, .stl, .obj, .ply, .vdb, .pvd or .series";
+const char* const formats = ".vtp, .vtu, .svg, .stl, .obj, .ply, .3mf, .vdb, .pvd or .series";
 
 bool known(const std::string& ext) {
-  for (const char* e : {".vtp", ".vtu", ".svg", ".stl", ".obj", ".ply", ".vdb"})
+  for (const char* e : {".vtp", ".vtu", ".svg", ".stl", ".obj", ".ply", ".3mf", ".vdb"})
     if (ext == e) return true;
   return false;
 }

@@ -17,6 +17,7 @@ local c = curves.dragon():curve{ level = 8 }
 save(c, "curve.vtp"); save(c, "curve.svg")
 local s = develop(curves.dragon(), { levels = 4, smooth = 2 })
 save(s, "mesh.vtp"); save(s, "mesh.vtu"); save(s, "mesh.stl"); save(s, "mesh.obj"); save(s, "mesh.ply")
+save(solid.thicken(solid.size(s, 40), { thickness = 1.5, check = false }), "solid.3mf")  -- the solid a user prints
 save(volume.sphere{ center = {0, 0, 0}, radius = 1 }, "sphere.vdb")
 LUA
 "$selfsim" run "$tmp/all.lua" -o "$tmp/in" -q 2>"$tmp/run_err"
@@ -39,7 +40,7 @@ if len(colours) < 8 or drawn < 0.01: sys.exit(f"{path}: {len(colours)} colours, 
 PY
 }
 
-sizes="curve.vtp:800:800 curve.svg:800:800 mesh.vtp:1200:600 mesh.vtu:1200:600 mesh.stl:1200:600 mesh.obj:1200:600 mesh.ply:1200:600 sphere.vdb:1200:600"
+sizes="curve.vtp:800:800 curve.svg:800:800 mesh.vtp:1200:600 mesh.vtu:1200:600 mesh.stl:1200:600 mesh.obj:1200:600 mesh.ply:1200:600 solid.3mf:1200:600 sphere.vdb:1200:600"
 for entry in $sizes; do
   IFS=: read -r name w h <<<"$entry"
   env -u DISPLAY "$selfsim" preview "$tmp/in/$name" -o "$tmp/png/${name#*.}" >"$tmp/out" 2>"$tmp/err"
@@ -68,6 +69,12 @@ no_own_xvfb() {
   return 0
 }
 check "no Xvfb left" no_own_xvfb
+
+# A sweep's contact sheet holds pictures (<image>), no path: preview says it is for a browser.
+printf '<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink"><image href="a/c.svg"/><image href="b/c.svg"/></svg>\n' >"$tmp/sheet_c.svg"
+run_selfsim preview "$tmp/sheet_c.svg" -o "$tmp/bad"
+check "contact sheet: exit 1" test "$code" = 1
+check "contact sheet: says so ($(head -1 "$tmp/err"))" grep -q "^selfsim preview: cannot read '$tmp/sheet_c.svg': a contact sheet of 2 pictures .*open it in a browser" "$tmp/err"
 
 # Errors: one line naming the file, exit 1; usage errors exit 2.
 echo hello >"$tmp/x.txt"

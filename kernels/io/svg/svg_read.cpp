@@ -59,6 +59,8 @@ Keep kept(const std::string& attribute) {
 class SvgParser {
  public:
   explicit SvgParser(Dataset& d) : d_(d), path_(d) {}
+  // The <image> elements met: pictures that a browser draws (a sweep's contact sheet is made of them).
+  std::size_t images() const { return images_; }
 
   void feed(std::string_view chunk) {
     for (char c : chunk) {
@@ -317,6 +319,7 @@ class SvgParser {
       if (!e.svg) throw Error("not an SVG file (the root <" + shown(name_) + "> is not in the SVG namespace)");
       root_seen_ = true;
     }
+    if (e.svg && e.local == "image") ++images_;
     if (path_read_) end_path(e);
     if (self_closing) return;
     if (stack_.size() >= max_depth)
@@ -355,6 +358,7 @@ class SvgParser {
   };
 
   Dataset& d_;
+  std::size_t images_ = 0;
   PathData path_;
   SvgScopes scopes_;
   State state_ = State::text;
@@ -385,6 +389,10 @@ Dataset read_svg(const std::filesystem::path& file) {
     SvgParser parser(d);
     for (std::string_view chunk = reader.next(); !chunk.empty(); chunk = reader.next()) parser.feed(chunk);
     parser.finish();
+    if (d.points.empty() && parser.images() > 0)
+      throw Error("a contact sheet of " + std::to_string(parser.images()) + " picture" +
+                  (parser.images() == 1 ? "" : "s") +
+                  " (<image> elements, as a sweep's sheets hold) and no path of its own: open it in a browser");
     check_dataset(d);
     return d;
   } catch (const std::bad_alloc&) {
