@@ -174,6 +174,8 @@ int level_argument(lua_State* L, int index) {
 
 // g:curve{ level, normalize } or g:curve(level).
 lsystem::TurtleOptions turtle_options(lua_State* L, const char* method) {
+  takes_arguments(L, 1,
+                  std::string("one argument: a level, or a table: g:") + method + "{ level = 5, normalize = false }");
   lsystem::TurtleOptions opt;
   if (lua_type(L, 2) == LUA_TNUMBER) {
     opt.level = level_argument(L, 2);
@@ -241,6 +243,7 @@ int grammar_string(lua_State* L) {
   const Held<Grammar> held = self(L, "string");
   const Grammar& g = *held;
   return call_kernel(L, "string", [&] {
+    takes_arguments(L, 1, "one argument: the level, g:string(5)");
     const int level = level_argument(L, 2);
     const std::string s = g.modules() ? lsystem::module_string_text(g, level, 1e7, RunContext::of(L))
                                       : lsystem::expand_string(g, level, 1e7);
@@ -253,6 +256,7 @@ int grammar_count(lua_State* L) {
   const Held<Grammar> held = self(L, "count");
   const Grammar& g = *held;
   return call_kernel(L, "count", [&] {
+    takes_arguments(L, 1, "one argument: the level, g:count(5)");
     const int level = level_argument(L, 2);
     RunContext& run = RunContext::of(L);
     const double n = g.modules() ? lsystem::module_segments(g, level, run.budget().left(), run)

@@ -73,6 +73,17 @@ int method_index(lua_State* L) {
   return lua_error(L);
 }
 
+void takes_arguments(lua_State* L, int count, const std::string& takes) {
+  const int given = lua_gettop(L) - 1;  // after the value itself
+  if (given <= count) return;
+  throw Error("takes " + takes + ", got " + std::to_string(given) + " arguments (the " + std::to_string(count + 1) +
+              (count == 0   ? "st"
+               : count == 1 ? "nd"
+               : count == 2 ? "rd"
+                            : "th") +
+              " is " + describe(L, count + 2) + ")");
+}
+
 lua_Integer list_length(lua_State* L, int index, const std::string& what, const std::string& hint) {
   index = lua_absindex(L, index);
   const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, index));

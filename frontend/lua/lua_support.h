@@ -201,6 +201,10 @@ Held<T> check_self(lua_State* L, const char* type, const char* method) {
   std::abort();  // not reached: lua_error does not return
 }
 
+// Refuses arguments beyond the `count` a method takes after its value (`g:curve(5, false)`: a `false` that
+// would otherwise be ignored); the Error names what it takes, `takes` ("a level, or { level, normalize }").
+void takes_arguments(lua_State* L, int count, const std::string& takes);
+
 // Registers a metatable for T: __name, __gc, __tostring, __index = the given methods, and __metatable so
 // that getmetatable() gives recipes a string, never the table whose __gc runs destructors.
 // A type's __index: its method, or an error naming the type, the likeliest method meant and all of them
