@@ -237,6 +237,9 @@ grep -qF "warning: --set num: no param 'num' is read before later.lua:1" err.txt
 printf 'local p = param\nlocal c = lsystem { axiom = \"F\", rules = { F = \"F+F\" }, angle = 90 }:curve(3)\nlocal k = p("k", 1)\nsave(c, "c.svg")\n' >alias.lua
 "$selfsim" run alias.lua -o al --set k=1,2 -q >out.txt 2>err.txt
 [ $? = 0 ] && [ -s "al/k=2/c.svg" ] || fail "param aliased: the sweep should run: $(cat err.txt)"
+printf 'local c = lsystem { axiom = \"F\", rules = { F = \"F+F\" }, angle = 90 }:curve(3)\nlocal g = _G.param("g", 1)\nsave(c, "c.svg")\n' >global.lua
+"$selfsim" run global.lua -o gl --set g=1,2 -q >out.txt 2>err.txt
+[ $? = 0 ] && [ -s "gl/g=2/c.svg" ] || fail "_G.param: the sweep should run: $(cat err.txt)"
 mkdir -p lib && printf 'return param("width", 1)\n' >lib/w.lua
 printf 'local c = lsystem { axiom = \"F\", rules = { F = \"F+F\" }, angle = 90 }:curve(3)\nlocal w = require "lib.w"\nsave(c, "c.svg")\n' >mod.lua
 "$selfsim" run mod.lua -o md --set width=1,2 -q >out.txt 2>err.txt

@@ -38,13 +38,16 @@ std::optional<std::string> literal_argument(std::string_view t, std::size_t i) {
   return std::nullopt;  // "fac" .. "ter": the name is computed
 }
 
-// Each mention of the global `word` (not a field `t.word` or a method `t:word`), by the position after it.
+// Each mention of `word` as a name of its own, by the position after it; false when `f` says the text
+// cannot tell, or at a field `t.word` or method `t:word`.
 template <class F>
 bool each_mention(std::string_view t, std::string_view word, F&& f) {
   for (std::size_t at = t.find(word); at != std::string_view::npos; at = t.find(word, at + 1)) {
     const std::size_t end = at + word.size();
-    if (at > 0 && (identifier_char(t[at - 1]) || t[at - 1] == '.' || t[at - 1] == ':')) continue;
+    if (at > 0 && identifier_char(t[at - 1])) continue;  // part of another name
     if (end < t.size() && identifier_char(t[end])) continue;
+    // `_G.param(...)` is the global itself, `t.param` may be anything: neither tells.
+    if (at > 0 && (t[at - 1] == '.' || t[at - 1] == ':')) return false;
     if (!f(end)) return false;
   }
   return true;
