@@ -126,19 +126,21 @@ int make_polyline(lua_State* L, const char* fn, bool closed) {
 }  // namespace
 
 void open_curve(lua_State* L) {
-  register_geometry<Polyline>(L, {{"segments", curve_segments<Polyline>},
-                                  {"paths", curve_paths<Polyline>},
-                                  {"length", curve_length<Polyline>},
-                                  {"level", curve_level<Polyline>},
-                                  {"transform", curve_transform},
-                                  {"reverse", curve_reverse<Vec2>},
-                                  {"rounded", curve_rounded}});
-  register_geometry<Polyline3>(L, {{"segments", curve_segments<Polyline3>},
-                                   {"paths", curve_paths<Polyline3>},
-                                   {"length", curve_length<Polyline3>},
-                                   {"level", curve_level<Polyline3>},
-                                   {"transform", curve3_transform},
-                                   {"reverse", curve_reverse<Vec3>}});
+  const char* const level_takes = "one level number: c:level(3) (or none: the level it was made at)";
+  const char* const transform_takes = "one table: c:transform{ mirror, scale, rotate, translate }";
+  register_geometry<Polyline>(L, {{"segments", curve_segments<Polyline>, 0, "no arguments: c:segments()"},
+                                  {"paths", curve_paths<Polyline>, 0, "no arguments: c:paths()"},
+                                  {"length", curve_length<Polyline>, 0, "no arguments: c:length()"},
+                                  {"level", curve_level<Polyline>, 1, level_takes},
+                                  {"transform", curve_transform, 1, transform_takes},
+                                  {"reverse", curve_reverse<Vec2>, 0, "no arguments: c:reverse()"},
+                                  {"rounded", curve_rounded, 1, "a table of options, c:rounded{ samples = 8 }"}});
+  register_geometry<Polyline3>(L, {{"segments", curve_segments<Polyline3>, 0, "no arguments: c:segments()"},
+                                   {"paths", curve_paths<Polyline3>, 0, "no arguments: c:paths()"},
+                                   {"length", curve_length<Polyline3>, 0, "no arguments: c:length()"},
+                                   {"level", curve_level<Polyline3>, 1, level_takes},
+                                   {"transform", curve3_transform, 1, transform_takes},
+                                   {"reverse", curve_reverse<Vec3>, 0, "no arguments: c:reverse()"}});
   lua_register(L, "polyline", [](lua_State* S) { return make_polyline(S, "polyline", false); });
   lua_register(L, "polygon", [](lua_State* S) { return make_polyline(S, "polygon", true); });
 }

@@ -174,8 +174,6 @@ int level_argument(lua_State* L, int index) {
 
 // g:curve{ level, normalize } or g:curve(level).
 lsystem::TurtleOptions turtle_options(lua_State* L, const char* method) {
-  takes_arguments(L, 1,
-                  std::string("one argument: a level, or a table: g:") + method + "{ level = 5, normalize = false }");
   lsystem::TurtleOptions opt;
   if (lua_type(L, 2) == LUA_TNUMBER) {
     opt.level = level_argument(L, 2);
@@ -243,7 +241,6 @@ int grammar_string(lua_State* L) {
   const Held<Grammar> held = self(L, "string");
   const Grammar& g = *held;
   return call_kernel(L, "string", [&] {
-    takes_arguments(L, 1, "one argument: the level, g:string(5)");
     const int level = level_argument(L, 2);
     const std::string s = g.modules() ? lsystem::module_string_text(g, level, 1e7, RunContext::of(L))
                                       : lsystem::expand_string(g, level, 1e7);
@@ -256,7 +253,6 @@ int grammar_count(lua_State* L) {
   const Held<Grammar> held = self(L, "count");
   const Grammar& g = *held;
   return call_kernel(L, "count", [&] {
-    takes_arguments(L, 1, "one argument: the level, g:count(5)");
     const int level = level_argument(L, 2);
     RunContext& run = RunContext::of(L);
     const double n = g.modules() ? lsystem::module_segments(g, level, run.budget().left(), run)
@@ -312,12 +308,14 @@ int make_lsystem(lua_State* L) {
 }  // namespace
 
 void open_lsystem(lua_State* L) {
-  static const luaL_Reg methods[] = {{"curve", grammar_curve},
-                                     {"polygons", grammar_polygons},
-                                     {"string", grammar_string},
-                                     {"count", grammar_count},
-                                     {nullptr, nullptr}};
-  register_type<Grammar>(L, grammar_type, methods, grammar_tostring);
+  register_type<Grammar>(
+      L, grammar_type,
+      {{"curve", grammar_curve, 1, "one argument: a level, or a table: g:curve{ level = 5, normalize = false }"},
+       {"polygons", grammar_polygons, 1,
+        "one argument: a level, or a table: g:polygons{ level = 5, normalize = false }"},
+       {"string", grammar_string, 1, "one argument: the level, g:string(5)"},
+       {"count", grammar_count, 1, "one argument: the level, g:count(5)"}},
+      grammar_tostring);
   lua_register(L, "lsystem", make_lsystem);
 }
 

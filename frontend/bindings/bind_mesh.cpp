@@ -68,7 +68,7 @@ int make_mesh(lua_State* L) {
 }  // namespace
 
 void open_mesh(lua_State* L) {
-  register_geometry<Mesh>(L, {{"faces", mesh_faces}});
+  register_geometry<Mesh>(L, {{"faces", mesh_faces, 0, "no arguments: m:faces()"}});
   lua_register(L, "mesh", make_mesh);
 }
 

@@ -186,8 +186,10 @@ int volume_tostring(lua_State* L) {
 Held<Volume> test_volume(lua_State* L, int index) { return test_value<Volume>(L, index, volume_type); }
 
 void open_volume(lua_State* L) {
-  const luaL_Reg methods[] = {{"bbox", volume_bbox}, {"boundary", volume_boundary_method}, {nullptr, nullptr}};
-  register_type<Volume>(L, volume_type, methods, volume_tostring);
+  register_type<Volume>(L, volume_type,
+                        {{"bbox", volume_bbox, 0, "no arguments: v:bbox()"},
+                         {"boundary", volume_boundary_method, 1, "one table of options: v:boundary{ voxel = 0.02 }"}},
+                        volume_tostring);
   const luaL_Reg functions[] = {{"box", volume_box}, {"sphere", volume_sphere}, {"mesh", volume_mesh},
                                 {"vdb", volume_vdb}, {"union", volume_union},   {"difference", volume_difference},
                                 {nullptr, nullptr}};

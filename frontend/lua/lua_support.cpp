@@ -73,15 +73,27 @@ int method_index(lua_State* L) {
   return lua_error(L);
 }
 
-void takes_arguments(lua_State* L, int count, const std::string& takes) {
+std::string extra_arguments(lua_State* L, int count, const std::string& takes) {
   const int given = lua_gettop(L) - 1;  // after the value itself
-  if (given <= count) return;
-  throw Error("takes " + takes + ", got " + std::to_string(given) + " arguments (the " + std::to_string(count + 1) +
-              (count == 0   ? "st"
-               : count == 1 ? "nd"
-               : count == 2 ? "rd"
-                            : "th") +
-              " is " + describe(L, count + 2) + ")");
+  if (given <= count) return {};
+  const int first = count + 1;
+  const char* const suffix = first == 1 ? "st" : first == 2 ? "nd" : first == 3 ? "rd" : "th";
+  return "takes " + takes + ", got " + std::to_string(given) + (given == 1 ? " argument" : " arguments") + " (the " +
+         std::to_string(first) + suffix + " is " + describe(L, count + 2) + ")";
+}
+
+int checked_method(lua_State* L) {
+  bool refused = false;
+  {
+    const std::string message = extra_arguments(L, static_cast<int>(lua_tointeger(L, lua_upvalueindex(2))),
+                                                lua_tostring(L, lua_upvalueindex(3)));
+    if (!message.empty()) {
+      push_error(L, lua_tostring(L, lua_upvalueindex(4)), message);
+      refused = true;
+    }
+  }  // message freed before the error
+  if (refused) return lua_error(L);
+  return lua_tocfunction(L, lua_upvalueindex(1))(L);
 }
 
 lua_Integer list_length(lua_State* L, int index, const std::string& what, const std::string& hint) {

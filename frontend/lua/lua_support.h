@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "kernels/base/budget.h"
 #include "kernels/base/error.h"
@@ -201,9 +202,19 @@ Held<T> check_self(lua_State* L, const char* type, const char* method) {
   std::abort();  // not reached: lua_error does not return
 }
 
-// Refuses arguments beyond the `count` a method takes after its value (`g:curve(5, false)`: a `false` that
-// would otherwise be ignored); the Error names what it takes, `takes` ("a level, or { level, normalize }").
-void takes_arguments(lua_State* L, int count, const std::string& takes);
+// A method of a value type and what it takes after the value. More arguments are an error naming `takes`
+// before the method runs (`g:curve(5, false)` would otherwise ignore its false).
+struct Method {
+  const char* name;
+  lua_CFunction function;
+  int arguments;      // the most it takes after the value
+  const char* takes;  // for the message: "no arguments: c:length()"
+};
+// The message for a call with more arguments than `count` ("takes ..., got 2 arguments (the 2nd is false)"),
+// or empty when it has no more.
+std::string extra_arguments(lua_State* L, int count, const std::string& takes);
+// A registered method: upvalues the function, its Method::arguments, takes and name.
+int checked_method(lua_State* L);
 
 // Registers a metatable for T: __name, __gc, __tostring, __index = the given methods, and __metatable so
 // that getmetatable() gives recipes a string, never the table whose __gc runs destructors.
@@ -213,7 +224,7 @@ void takes_arguments(lua_State* L, int count, const std::string& takes);
 int method_index(lua_State* L);
 
 template <class T>
-void register_type(lua_State* L, const char* type, const luaL_Reg* methods, lua_CFunction tostring) {
+void register_type(lua_State* L, const char* type, const std::vector<Method>& methods, lua_CFunction tostring) {
   luaL_newmetatable(L, type);
   lua_pushstring(L, type);
   // Type-checked and idempotent: only a live Box of this type is emptied, once.
@@ -229,7 +240,14 @@ void register_type(lua_State* L, const char* type, const luaL_Reg* methods, lua_
   lua_pushcfunction(L, tostring);
   lua_setfield(L, -2, "__tostring");
   lua_newtable(L);
-  luaL_setfuncs(L, methods, 0);
+  for (const Method& m : methods) {
+    lua_pushcfunction(L, m.function);
+    lua_pushinteger(L, m.arguments);
+    lua_pushstring(L, m.takes);
+    lua_pushstring(L, m.name);
+    lua_pushcclosure(L, checked_method, 4);
+    lua_setfield(L, -2, m.name);
+  }
   lua_pushstring(L, type);
   lua_pushcclosure(L, method_index, 2);
   lua_setfield(L, -2, "__index");

@@ -165,21 +165,25 @@ void push_geometry(lua_State* L, T&& value) {
 }
 
 template <class T>
-void register_geometry(lua_State* L, const std::vector<luaL_Reg>& own) {
-  std::vector<luaL_Reg> methods{{"points", value_points<T>}, {"point", value_point<T>}, {"bbox", value_bbox<T>},
-                                {"fields", value_fields<T>}, {"range", value_range<T>}, {"levels", value_levels},
-                                {"level", value_level}};
-  methods.insert(methods.end(), own.begin(), own.end());
-  methods.push_back({nullptr, nullptr});
-  register_type<T>(L, ValueType<T>::name, methods.data(), value_tostring<T>);
+void register_geometry(lua_State* L, const std::vector<Method>& own) {
+  std::vector<Method> methods{
+      {"points", value_points<T>, 0, "no arguments: v:points()"},
+      {"point", value_point<T>, 1, "one argument, the point's index: v:point(1)"},
+      {"bbox", value_bbox<T>, 0, "no arguments: v:bbox()"},
+      {"fields", value_fields<T>, 0, "no arguments: v:fields()"},
+      {"range", value_range<T>, 2, "a field name and optionally \"points\" or \"cells\", v:range(\"level\")"},
+      {"levels", value_levels, 0, "no arguments: v:levels() (one level: v:level(k))"},
+      {"level", value_level, 1, "one level number: v:level(3)"}};
+  methods.insert(methods.end(), own.begin(), own.end());  // a type's own method of the same name comes last: it wins
+  register_type<T>(L, ValueType<T>::name, methods, value_tostring<T>);
 }
 
 template void push_geometry(lua_State*, Polyline&&);
 template void push_geometry(lua_State*, Polyline3&&);
 template void push_geometry(lua_State*, Mesh&&);
-template void register_geometry<Polyline>(lua_State*, const std::vector<luaL_Reg>&);
-template void register_geometry<Polyline3>(lua_State*, const std::vector<luaL_Reg>&);
-template void register_geometry<Mesh>(lua_State*, const std::vector<luaL_Reg>&);
+template void register_geometry<Polyline>(lua_State*, const std::vector<Method>&);
+template void register_geometry<Polyline3>(lua_State*, const std::vector<Method>&);
+template void register_geometry<Mesh>(lua_State*, const std::vector<Method>&);
 
 io::ValueRef AnyValue::ref() const {
   return std::visit([](const auto& h) -> io::ValueRef { return h.get(); }, held);

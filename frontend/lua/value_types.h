@@ -73,7 +73,7 @@ std::string spread_report_advice(lua_State* L, int index, int before, const std:
 
 // Registers T's metatable with the common methods and T's own.
 template <class T>
-void register_geometry(lua_State* L, const std::vector<luaL_Reg>& own);
+void register_geometry(lua_State* L, const std::vector<Method>& own);
 
 // {x, y} or {x, y, z} as a new Lua table.
 void push_point(lua_State* L, Vec2 p);
