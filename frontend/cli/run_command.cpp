@@ -214,17 +214,17 @@ void check_sweep_params(const RunConfig& sweep, const SweepPlan& plan) {
   config.sets = plan.runs.front().sets;
   for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, on_interrupt);
   const ParamsRead read = read_params(config);
+  // Stopped at a heavy step, the recipe may declare a parameter later: its text tells, where every param()
+  // in it names a literal (else each run checks the key, after a warning here).
+  const std::optional<std::set<std::string>> literal =
+      read.stopped_at.empty() ? std::nullopt : recipe_literal_params(config.recipe);
   std::vector<std::string> names;
   for (const ParamSpec& p : read.specs) names.push_back(p.name);
+  if (literal) names.insert(names.end(), literal->begin(), literal->end());
   for (const auto& [key, text] : sweep.sets) {
     const auto spec =
         std::find_if(read.specs.begin(), read.specs.end(), [&k = key](const ParamSpec& p) { return p.name == k; });
     if (spec == read.specs.end()) {
-      // Stopped at a heavy step, the recipe may declare it later: its text tells, where every param() in
-      // it names a literal (else each run checks it, after a warning here).
-      const std::optional<std::set<std::string>> literal =
-          read.stopped_at.empty() ? std::nullopt : recipe_literal_params(config.recipe);
-      if (literal) names.insert(names.end(), literal->begin(), literal->end());
       const std::string near = suggestion(key, names);
       if (!read.stopped_at.empty() && (!literal || literal->contains(key))) {
         std::fprintf(stderr, "selfsim: warning: --set %s: no param '%s' is read before %s%s\n", shown_text(key).c_str(),

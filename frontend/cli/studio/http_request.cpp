@@ -1,7 +1,6 @@
 #include "frontend/cli/studio/http_request.h"
 
 #include <cctype>
-#include <cstdio>
 #include <tuple>
 #include <vector>
 
