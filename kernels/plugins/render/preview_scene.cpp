@@ -14,55 +14,28 @@
 #include <cmath>
 #include <string>
 
+#include "kernels/io/view/palette.h"
+
 namespace selfsim::io {
 
-// A perceptually even blue-green-yellow ramp (after matplotlib's viridis), 256 entries.
+// The shared ramp (palette.h), 256 entries.
 void continuous_table(vtkLookupTable* lut, double lo, double hi) {
-  static const double stops[][3] = {{0.267, 0.005, 0.329},
-                                    {0.231, 0.322, 0.545},
-                                    {0.129, 0.569, 0.549},
-                                    {0.369, 0.788, 0.384},
-                                    {0.992, 0.906, 0.145}};
   lut->SetNumberOfTableValues(256);
   for (int i = 0; i < 256; ++i) {
-    const double t = i / 255.0 * 4;
-    const int k = std::min(3, static_cast<int>(t));
-    const double f = t - k;
-    double c[3];
-    for (int j = 0; j < 3; ++j) c[j] = stops[k][j] * (1 - f) + stops[k + 1][j] * f;
+    const Rgb c = ramp_colour(i / 255.0);
     lut->SetTableValue(i, c[0], c[1], c[2], 1);
   }
   lut->SetTableRange(lo, hi > lo ? hi : lo + 1);
 }
 
-namespace {
-
-// One channel of a colour given as hue, lightness and saturation (the standard HLS model).
-double hls_channel(double m1, double m2, double h) {
-  h -= std::floor(h);
-  if (h < 1.0 / 6) return m1 + (m2 - m1) * h * 6;
-  if (h < 0.5) return m2;
-  if (h < 2.0 / 3) return m1 + (m2 - m1) * (2.0 / 3 - h) * 6;
-  return m1;
-}
-
-}  // namespace
-
-// Distinct colours for classes, the same as a ParaView view's (paraview_view_body.py, category_colours):
-// hues a golden angle apart from a blue, three lightness and saturation steps out of phase with them, so
-// that neighbouring class numbers never look alike and 256 classes still separate.
+// The shared class colours (palette.h), each annotated with its value.
 void category_table(vtkLookupTable* lut, const std::vector<int>& categories) {
   const auto n = static_cast<vtkIdType>(categories.size());
   lut->IndexedLookupOn();
   lut->SetNumberOfTableValues(std::max<vtkIdType>(n, 1));
-  const double golden = (3 - std::sqrt(5.0)) / 2;  // the golden angle, in turns
-  static const double lightness[3] = {0.50, 0.68, 0.36}, saturation[3] = {0.75, 0.55, 0.90};
   for (vtkIdType i = 0; i < n; ++i) {
-    const double hue = std::fmod(0.58 + static_cast<double>(i) * golden, 1.0);
-    const double l = lightness[i % 3], sat = saturation[(i / 3) % 3];
-    const double m2 = l <= 0.5 ? l * (1 + sat) : l + sat - l * sat, m1 = 2 * l - m2;
-    lut->SetTableValue(i, hls_channel(m1, m2, hue + 1.0 / 3), hls_channel(m1, m2, hue),
-                       hls_channel(m1, m2, hue - 1.0 / 3), 1);
+    const Rgb c = class_colour(static_cast<std::size_t>(i));
+    lut->SetTableValue(i, c[0], c[1], c[2], 1);
     lut->SetAnnotation(vtkVariant(static_cast<double>(categories[static_cast<std::size_t>(i)])),
                        std::to_string(categories[static_cast<std::size_t>(i)]));
   }
