@@ -191,6 +191,10 @@ int param(lua_State* L) {
     const std::string name = text_value(L, 1, "argument 1 (the parameter name)");
     ParamSpec spec = read_param_spec(L, name, 2, 3);
     spec.where = recipe_where(L);
+    // results.csv has a column per parameter swept and per result: one name cannot be both (bind_result.cpp).
+    if (const auto r = run.result_where.find(name); r != run.result_where.end())
+      throw Error("'" + name + "' is the name of a result (given at " + r->second.substr(0, r->second.size() - 2) +
+                  "): give the parameter another name");
     const auto [at, first] = run.param_index.try_emplace(name, run.params.size());
     if (first)
       run.params.push_back(spec);

@@ -22,6 +22,7 @@ void open_mesh(lua_State* L);        // bind_mesh.cpp: Mesh, mesh{}
 void open_lsystem(lua_State* L);     // bind_lsystem.cpp: lsystem{}
 void open_substitute(lua_State* L);  // bind_substitute.cpp: substitute{}
 void open_io(lua_State* L);          // bind_io.cpp: save(), param()
+void open_result(lua_State* L);      // bind_result.cpp: result()
 void open_load(lua_State* L);        // bind_load.cpp: load()
 void open_group(lua_State* L);       // bind_group.cpp: group{}, concat()
 void open_hoist(lua_State* L);       // bind_hoist.cpp: bspline{}, catmull_rom{}, hoist.*, simplify()
@@ -56,6 +57,7 @@ inline void open_all(lua_State* L) {
   open_lsystem(L);
   open_substitute(L);
   open_io(L);
+  open_result(L);
   open_load(L);
   open_group(L);
   open_hoist(L);

@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "frontend/bindings/bindings.h"
+#include "frontend/bindings/save_support.h"
 #include "frontend/cli/commands.h"
 #include "frontend/cli/sweep/literal_params.h"
 #include "frontend/cli/sweep/sweep.h"
@@ -20,6 +21,7 @@
 #include "frontend/lua/sandbox.h"
 #include "frontend/process/spawn_selfsim.h"
 #include "frontend/process/watchdog.h"
+#include "kernels/io/output_file.h"
 #include "kernels/io/provenance/sha256.h"
 #include "kernels/io/regular_file.h"
 #include "kernels/io/text/json_text.h"
@@ -125,6 +127,21 @@ void write_view(const RunContext& run) {
   } catch (const Error& e) {
     std::fprintf(stderr, "selfsim: warning: no ParaView view written: %s\n", e.what());
   }
+}
+
+// results.json beside the run's outputs when the recipe gave results (result(), bind_result.cpp): what a
+// sweep gathers into results.csv. A run that gave none writes nothing, as before results existed.
+void write_results(lua_State* L, const RunContext& run) {
+  if (run.results.empty()) return;
+  const std::string text = io::results_json(run.results, run_provenance(L, io::results_file));
+  io::write_whole(run.config.out_dir, io::results_file, text);
+  if (run.config.quiet) return;
+  std::string shown;
+  for (std::size_t i = 0; i < run.results.size() && i < 4; ++i)
+    shown += (i ? ", " : "") + run.results[i].name + " = " + io::json_number(run.results[i].value);
+  if (run.results.size() > 4) shown += ", ... (" + std::to_string(run.results.size()) + " results)";
+  std::printf("wrote %s (%s)\n", shown_text((run.config.out_dir / io::results_file).string(), 4096).c_str(),
+              shown.c_str());
 }
 
 // Sends stdout to /dev/null while it lives: under `selfsim params` the recipe's print() and a kernel's
@@ -287,6 +304,12 @@ int run_command(const RunConfig& given) {
     code = interrupted.load() ? 130 : 1;
   } else {
     write_view(run);
+    try {
+      write_results(L, run);
+    } catch (const Error& e) {  // the results are part of what the run made: the run fails without them
+      std::fprintf(stderr, "selfsim: %s\n", e.what());
+      code = 1;
+    }
     const std::vector<std::string> read(run.used_params.begin(), run.used_params.end());
     for (const auto& [key, value] : config.sets)
       if (!run.used_params.contains(key)) {

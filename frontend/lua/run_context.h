@@ -17,6 +17,7 @@
 #include "frontend/lua/param_spec.h"
 #include "kernels/base/budget.h"
 #include "kernels/base/progress.h"
+#include "kernels/io/run_results.h"
 #include "kernels/io/view/paraview_view.h"
 
 namespace selfsim::interp {
@@ -64,6 +65,9 @@ class RunContext : public Progress {
   LuaMemory memory;                                // the Lua state's allocator and its --max-memory limit
   LiveValues values;                               // the C++ values the recipe's Lua values stand for
   std::string pending_warning;                     // a warning Lua is still sending in pieces
+  // The results the recipe gave (result(name, value), bind_result.cpp), in order, and where each was given.
+  std::vector<io::RunResult> results;
+  std::map<std::string, std::string> result_where;
   // The files save() has written in this run (bind_io.cpp): by their name inside the output folder, made
   // lexically normal, the name as written and the recipe location ("dragon.lua:3: ") that wrote it; and
   // by their identity (device, inode), the normal name, for names that differ but open the same file.

@@ -487,6 +487,15 @@ function Volume:boundary(options) end
 ---@return T
 function param(name, default, options) end
 
+---Records a named number for the run (results.json in the output folder); a sweep gathers every run's into
+---results.csv and, when one number varies, plots each result against it. The name is letters, digits, '_',
+---'-' and '.' (starting with a letter or '_'), and no parameter's; the value a finite number. Giving a
+---name again with another value is an error. Returns the value.
+---@param name string
+---@param value number
+---@return number
+function result(name, value) end
+
 ---Writes a value into the output folder; the extension picks the format (.vtp .vtu .svg .eps .3mf .stl .obj
 ---.ply .vdb; .pvd and .vtp.series for a value's levels or a list; .csv for a table of rows).
 ---@param value selfsim.Curve|selfsim.Curve3|selfsim.Mesh|selfsim.Volume|table

@@ -1,0 +1,2 @@
+result("x", 2)
+local x = param("x", 1)

@@ -1,0 +1,1 @@
+result("d", 1, "units")

@@ -1,0 +1,3 @@
+result("d", 1)
+result("d", 1)
+result("d", 2)

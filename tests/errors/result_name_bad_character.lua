@@ -1,0 +1,1 @@
+result("fit dimension", 1.26)

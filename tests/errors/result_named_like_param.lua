@@ -1,0 +1,2 @@
+local x = param("x", 1)
+result("x", 2 * x)

@@ -1,0 +1,1 @@
+result("count", math.maxinteger)
