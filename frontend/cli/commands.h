@@ -44,7 +44,8 @@ int rerun_command(const std::string& file, const std::string& out);
 // passes, 1 with its findings, 2 when the file cannot be read or is not a closed solid.
 int print_info_command(const std::string& file, const print::PrintRules& rules, const PointBudget& budget);
 
-// `selfsim preview FILE... [-o DIR] [-q] [--timeout S] [--max-memory SIZE] [--as NAME FILE]...`.
+// `selfsim preview FILE... [-o DIR] [-q] [--field NAME] [--up x|y|z] [--steps] [--timeout S] [--max-memory SIZE]
+// [--as NAME FILE]...`.
 struct PreviewConfig {
   std::vector<std::string> files;
   std::string out_dir;             // empty: each PNG beside its input
@@ -53,6 +54,9 @@ struct PreviewConfig {
   double timeout = 0;                      // seconds for all the previews, 0 = none (as run's --timeout)
   double max_memory = 0;                   // bytes the previews may add, 0 = none (as run's --max-memory)
   double max_points = default_max_points;  // a .vdb's tiles weighed against it (as run's --max-points)
+  std::string field;                       // --field: colour by it (empty: the natural field)
+  int up = -1;                             // --up: 0, 1, 2 for x, y, z; -1: each file's own (up_axis.h)
+  bool steps = false;                      // --steps: also NAME.steps.png and NAME.apng of a series' steps
 };
 // Throws UsageError.
 PreviewConfig parse_preview_arguments(const std::vector<std::string>& args);

@@ -34,8 +34,10 @@
 #include "kernels/io/read.h"
 #include "kernels/io/read_error.h"
 #include "kernels/io/vdb/vdb_read.h"
+#include "kernels/io/view/apng.h"
 #include "kernels/io/view/preview_png.h"
 #include "kernels/io/view/series_file.h"
+#include "kernels/io/view/up_axis.h"
 
 namespace selfsim::interp {
 
@@ -100,6 +102,26 @@ class PreviewTimer {
   std::thread thread_;
 };
 
+// A PNG's width and height, from its header.
+struct PngSize {
+  int width = 0, height = 0;
+};
+PngSize png_size(const std::string& png) {
+  if (png.size() < 24) return {};
+  auto at = [&](std::size_t i) {
+    return static_cast<int>((static_cast<unsigned char>(png[i]) << 24) |
+                            (static_cast<unsigned char>(png[i + 1]) << 16) |
+                            (static_cast<unsigned char>(png[i + 2]) << 8) | static_cast<unsigned char>(png[i + 3]));
+  };
+  return {at(16), at(20)};
+}
+
+// How long each frame of an animation shows: half a second, a growth of many steps a little faster, so that
+// it plays through in about 10 s.
+double frame_seconds(std::size_t frames) {
+  return std::clamp(10.0 / static_cast<double>(std::max<std::size_t>(frames, 1)), 0.1, 0.5);
+}
+
 }  // namespace
 
 PreviewConfig parse_preview_arguments(const std::vector<std::string>& args) {
@@ -123,6 +145,16 @@ PreviewConfig parse_preview_arguments(const std::vector<std::string>& args) {
     } else if (options && a == "--max-points") {  // a .vdb's tiles are weighed against it, as in a run
       if (i + 1 >= args.size()) throw UsageError("--max-points expects a number");
       c.max_points = std::floor(number_argument(a, args[++i], 1, highest_max_points));
+    } else if (options && a == "--field") {
+      if (i + 1 >= args.size() || args[i + 1].empty()) throw UsageError("--field expects a field's name");
+      c.field = args[++i];
+    } else if (options && a == "--up") {
+      if (i + 1 >= args.size() || io::axis_from_name(args[i + 1]) < 0)
+        throw UsageError("--up expects x, y or z" +
+                         (i + 1 < args.size() ? ", got '" + args[i + 1] + "'" : std::string()));
+      c.up = io::axis_from_name(args[++i]);
+    } else if (options && a == "--steps") {
+      c.steps = true;
     } else if (options && a == "--as") {
       // --as NAME FILE: FILE's PNG is DIR/NAME (folders in NAME made inside DIR, never through a link).
       if (i + 2 >= args.size() || args[i + 1].empty()) throw UsageError("--as expects a PNG name and a file");
@@ -157,30 +189,31 @@ int preview_command(const PreviewConfig& config) {
   for (const std::string& name : config.files) {
     const std::filesystem::path file(name);
     try {
-      // A time series is drawn as its last step, the grown result.
+      // A time series is drawn as its last step, the grown result, in the camera and colours of all its steps.
       const bool series = io::is_series_name(name);
       std::string stem = file.stem().string(), title = file.filename().string(), note;
-      std::filesystem::path source = file;
+      std::vector<std::filesystem::path> sources{file};
       if (series) {
-        const std::vector<std::filesystem::path> steps = io::read_series_steps(file);
-        source = steps.back();
+        sources = io::read_series_steps(file);
         // growth.vtp.series draws growth.png, as growth.pvd does.
         for (const char* inner : {".vtp", ".vtu"})
           if (stem.size() > 4 && lower_case(stem.substr(stem.size() - 4)) == inner) stem.erase(stem.size() - 4);
-        title += " (last of " + std::to_string(steps.size()) + " steps)";
-        note = ", the last of " + std::to_string(steps.size()) + " steps";
+        title += " (last of " + std::to_string(sources.size()) + " steps)";
+        note = ", the last of " + std::to_string(sources.size()) + " steps";
       }
-      const std::string ext = lower_case(source.extension().string());
-      if (!known(ext)) throw Error(io::cannot_read(source, std::string("expected a ") + formats + " file"));
-      io::Dataset d;
-      if (ext == ".vdb") {
-        io::VdbReadOptions read;
-        read.budget.limit = config.max_points;
-        io::VdbSurface s = io::read_vdb_surface(source, read);
-        d = std::move(s.mesh);
-        note = ", " + s.what;
-      } else {
-        d = io::read_dataset(source);
+      std::vector<io::Dataset> steps;
+      for (const std::filesystem::path& source : sources) {
+        const std::string ext = lower_case(source.extension().string());
+        if (!known(ext)) throw Error(io::cannot_read(source, std::string("expected a ") + formats + " file"));
+        if (ext == ".vdb") {
+          io::VdbReadOptions read;
+          read.budget.limit = config.max_points;
+          io::VdbSurface s = io::read_vdb_surface(source, read);
+          steps.push_back(std::move(s.mesh));
+          note = ", " + s.what;
+        } else {
+          steps.push_back(io::read_dataset(source));
+        }
       }
       if (!display) display = std::make_unique<DisplayServer>();
       // NAME.png beside the input (its folder the root) or in DIR, or DIR/NAME given by --as.
@@ -197,11 +230,44 @@ int preview_command(const PreviewConfig& config) {
         for (int n = 2; !written.insert((root / leaf).lexically_normal().string()).second; ++n)
           leaf = base + "_" + std::to_string(n) + ".png";
       }
-      const io::PreviewSize size = io::preview_size(d);
-      const std::string out = io::write_preview_png(d, title, root, leaf, no_progress());
-      if (!config.quiet)
-        std::printf("wrote %s (%dx%d%s)\n", shown_text(out, 4096).c_str(), size.width, size.height,
-                    shown_text(note, 300).c_str());
+      io::PreviewOptions options;
+      options.field = config.field;
+      options.up = config.up;
+      options.steps = config.steps;
+      options.name = file.filename().string();
+      for (std::size_t k = 0; k < steps.size(); ++k)
+        options.labels.push_back("step " + std::to_string(k + 1) + " of " + std::to_string(steps.size()));
+      const io::PreviewPictures pictures = io::render_preview(steps, title, options, no_progress());
+      // With --steps: NAME.steps.png (the filmstrip) and NAME.apng (the animation) beside NAME.png, written
+      // before it, so that the still appearing says the others are there.
+      const std::string base = leaf.size() > 4 && lower_case(leaf.substr(leaf.size() - 4)) == ".png"
+                                   ? leaf.substr(0, leaf.size() - 4)
+                                   : leaf;
+      std::vector<std::pair<std::string, const std::string*>> files;
+      std::string animation;
+      if (config.steps) {
+        std::vector<io::ApngFrame> frames;
+        for (const std::string& png : pictures.frames) frames.push_back({png, frame_seconds(pictures.frames.size())});
+        animation = io::animated_png(frames);
+        files.emplace_back(base + ".steps.png", &pictures.filmstrip);
+        files.emplace_back(base + ".apng", &animation);
+      }
+      files.emplace_back(leaf, &pictures.still);
+      for (const auto& [leaf_name, bytes] : files) {
+        io::OutputFile out_file(root, leaf_name);  // every folder of the name opened below root, never through a link
+        out_file.write(*bytes);
+        out_file.commit();
+        if (!config.quiet) {
+          const PngSize size = png_size(*bytes);
+          std::printf(
+              "wrote %s (%dx%d%s)\n", shown_text(out_file.path(), 4096).c_str(), size.width, size.height,
+              shown_text(leaf_name == leaf              ? note
+                         : leaf_name.ends_with(".apng") ? ", " + std::to_string(pictures.frames.size()) + " frames"
+                                                        : ", " + std::to_string(steps.size()) + " steps",
+                         300)
+                  .c_str());
+        }
+      }
       std::fflush(stdout);
     } catch (const std::exception& e) {
       std::string message = error_line(e);

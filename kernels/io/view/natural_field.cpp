@@ -10,7 +10,7 @@ namespace selfsim::io {
 namespace {
 
 bool is_class_field(const std::string& name) {
-  return name == "tile_class" || name == "surface" || name == "curve" || name == "tile";
+  return name == "tile_class" || name == "surface" || name == "curve" || name == "tile" || name == "color";
 }
 
 // Fills min, max and (for integer fields) distinct from values(i), i < count.
@@ -54,6 +54,19 @@ void add_values(std::vector<FieldSummary>& out, const std::map<std::string, Fiel
   }
 }
 
+// The colouring by one field's summary; none for nullptr.
+Colouring colouring_of(const FieldSummary* chosen) {
+  Colouring c;
+  if (!chosen) return c;
+  c.field = chosen->name;
+  c.on_points = chosen->on_points;
+  c.min = chosen->min;
+  c.max = chosen->max;
+  c.categorical = chosen->integer && is_class_field(chosen->name) && chosen->distinct.size() <= max_categories;
+  if (c.categorical) c.categories = chosen->distinct;
+  return c;
+}
+
 }  // namespace
 
 Colouring natural_colouring(std::span<const FieldSummary> fields) {
@@ -66,7 +79,9 @@ Colouring natural_colouring(std::span<const FieldSummary> fields) {
   };
   const FieldSummary* chosen = nullptr;
   // A print check's copy shows its walls (print_check.h): that is what it was made for.
-  for (const char* name : {"wall", "tile_class", "surface", "curve", "level", "arclength", "t"})
+  // Then a grammar's own colours ('), a plant's branch depth, before the ids and arclength of each branch.
+  for (const char* name :
+       {"wall", "tile_class", "color", "branch_order", "surface", "curve", "level", "arclength", "t"})
     if ((chosen = pick(name, true))) break;
   if (!chosen)
     for (const FieldSummary& f : fields)
@@ -74,15 +89,26 @@ Colouring natural_colouring(std::span<const FieldSummary> fields) {
         chosen = &f;
         break;
       }
-  Colouring c;
-  if (!chosen) return c;
-  c.field = chosen->name;
-  c.on_points = chosen->on_points;
-  c.min = chosen->min;
-  c.max = chosen->max;
-  c.categorical = chosen->integer && is_class_field(chosen->name) && chosen->distinct.size() <= max_categories;
-  if (c.categorical) c.categories = chosen->distinct;
-  return c;
+  return colouring_of(chosen);
+}
+
+Colouring named_colouring(std::span<const FieldSummary> fields, const std::string& name) {
+  const FieldSummary* named = nullptr;
+  for (bool points : {true, false})
+    for (const FieldSummary& f : fields)
+      if (!named && f.name == name && f.on_points == points) named = &f;
+  if (!named) {
+    std::set<std::string> names;
+    for (const FieldSummary& f : fields) names.insert(f.name);
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+    throw Error("--field: no field named '" + name + "'" +
+                (names.empty() ? std::string("; it holds no fields") : "; it holds " + list));
+  }
+  if (named->components != 1)
+    throw Error("--field: '" + name + "' has " + std::to_string(named->components) +
+                " components; a picture is coloured by a field of one");
+  return colouring_of(named);
 }
 
 std::vector<FieldSummary> summarise(const Fields& points, std::size_t point_count, const Fields& cells,
@@ -128,13 +154,16 @@ std::vector<FieldSummary> summarise(const ValueRef& v, Progress& progress) {
       v);
 }
 
-Colouring series_colouring(std::span<const ValueRef> steps, Progress& progress) {
-  if (steps.empty()) return {};
-  Colouring c = natural_colouring(summarise(steps.back(), progress));
-  if (c.field.empty()) return c;
+namespace {
+
+// c's range and categories widened to those of the same field in every one of `steps` (summarised by
+// `summary`), so that the colours mean the same at every step.
+template <class Step, class Summary>
+void widen(Colouring& c, std::span<const Step> steps, Summary summary) {
+  if (c.field.empty()) return;
   std::set<int> categories(c.categories.begin(), c.categories.end());
-  for (const ValueRef& step : steps)
-    for (const FieldSummary& f : summarise(step, progress))
+  for (const Step& step : steps)
+    for (const FieldSummary& f : summary(step))
       if (f.name == c.field && f.on_points == c.on_points && f.components == 1) {
         c.min = std::min(c.min, f.min);
         c.max = std::max(c.max, f.max);
@@ -145,6 +174,22 @@ Colouring series_colouring(std::span<const ValueRef> steps, Progress& progress) 
     c.categories.assign(categories.begin(), categories.end());
     if (!c.categorical) c.categories.clear();
   }
+}
+
+}  // namespace
+
+Colouring series_colouring(std::span<const ValueRef> steps, Progress& progress) {
+  if (steps.empty()) return {};
+  Colouring c = natural_colouring(summarise(steps.back(), progress));
+  widen(c, steps, [&](const ValueRef& v) { return summarise(v, progress); });
+  return c;
+}
+
+Colouring steps_colouring(std::span<const Dataset> steps, const std::string& name) {
+  if (steps.empty()) return {};
+  const std::vector<FieldSummary> last = summarise(steps.back());
+  Colouring c = name.empty() ? natural_colouring(last) : named_colouring(last, name);
+  widen(c, steps, [](const Dataset& d) { return summarise(d); });
   return c;
 }
 

@@ -35,10 +35,15 @@ struct Colouring {
   std::vector<int> categories;  // the distinct values, when categorical
 };
 
-// The natural colouring among `fields`: a print check's wall (mm), then tile_class, then a surface or curve id that
-// differs between elements, then a level that does, then arclength, then t; else the first other one-component field;
-// else none.
+// The natural colouring among `fields`, the first that varies of: a print check's wall (mm), tile_class, a
+// grammar's colour index `color` (from '), a plant's `branch_order` (bracket depth), a surface or curve id,
+// `level`, arclength, t; else the first other one-component field (not `path`); else none.
 Colouring natural_colouring(std::span<const FieldSummary> fields);
+
+// The colouring by the field called `name` (a point field before a cell field of that name), whether or not
+// it varies. Throws Error "--field: no field named 'NAME'; it holds A, B" (or "it holds no fields"), or for
+// a field of more than one component.
+Colouring named_colouring(std::span<const FieldSummary> fields, const std::string& name);
 
 // The summaries of a value's fields (points first, then cells), and of a file's fields read back.
 // Each looks for a stop every 2^20 values.
@@ -51,5 +56,8 @@ std::vector<FieldSummary> summarise(const ValueRef& v, Progress& progress = no_p
 // The natural colouring of a time series: the last step's field, its range and categories over every step
 // (so the colours mean the same at every step). Empty steps: none.
 Colouring series_colouring(std::span<const ValueRef> steps, Progress& progress = no_progress());
+// The same for datasets read back (a preview's steps): the field named `name` (named_colouring), or the
+// natural one when `name` is empty, chosen on the last step, its range and categories over every step.
+Colouring steps_colouring(std::span<const Dataset> steps, const std::string& name = {});
 
 }  // namespace selfsim::io

@@ -1,33 +1,21 @@
-// VTK's part of `selfsim preview` (see preview_png.h for what the picture holds).
+// VTK's part of `selfsim preview` (see preview_png.h for what the pictures hold).
 #include "kernels/io/view/preview_png.h"
 
 #include <vtkActor.h>
 #include <vtkAutoInit.h>
 #include <vtkCamera.h>
-#include <vtkCellArray.h>
-#include <vtkCellData.h>
-#include <vtkDoubleArray.h>
 #include <vtkLightKit.h>
 #include <vtkLogger.h>
 #include <vtkLookupTable.h>
-#include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkOutputWindow.h>
 #include <vtkPNGWriter.h>
-#include <vtkPointData.h>
-#include <vtkPoints.h>
-#include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
-#include <vtkPolyDataNormals.h>
-#include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
-#include <vtkScalarBarActor.h>
 #include <vtkTextActor.h>
-#include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
-#include <vtkVariant.h>
 #include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
@@ -40,7 +28,10 @@
 #include "kernels/io/dataset/dataset_pipe.h"
 #include "kernels/io/read_error.h"
 #include "kernels/io/view/natural_field.h"
+#include "kernels/io/view/up_axis.h"
 #include "kernels/io/vtk/vtk_error_text.h"
+#include "kernels/plugins/render/preview_camera.h"
+#include "kernels/plugins/render/preview_legend.h"
 #include "kernels/plugins/render/preview_scene.h"
 
 // VTK's rendering classes are abstract until their OpenGL implementations register with the object
@@ -54,7 +45,7 @@ namespace selfsim::io {
 
 namespace {
 
-// The child sends its first VTK error at once ('E', flushed: VTK may abort right after it), or the PNG.
+// The child sends its first VTK error at once ('E', flushed: VTK may abort right after it), or the PNGs.
 class ErrorToPipe : public vtkOutputWindow {
  public:
   static ErrorToPipe* New();
@@ -80,234 +71,18 @@ class ErrorToPipe : public vtkOutputWindow {
 vtkStandardNewMacro(ErrorToPipe);
 
 constexpr double white[3] = {1, 1, 1};
-constexpr double ink[3] = {0.1, 0.1, 0.1};
 
-vtkSmartPointer<vtkTextActor> text(const std::string& s, int size, double x, double y, int justify) {
-  auto t = vtkSmartPointer<vtkTextActor>::New();
-  t->SetInput(s.c_str());
-  vtkTextProperty* p = t->GetTextProperty();
-  p->SetFontSize(size);
-  p->SetColor(ink[0], ink[1], ink[2]);
-  p->SetFontFamilyToArial();
-  p->SetJustification(justify);
-  p->SetVerticalJustificationToCentered();
-  t->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  t->GetPositionCoordinate()->SetValue(x, y);
-  return t;
-}
+// What the parent decided, for the child to draw.
+struct Plan {
+  std::string title;
+  PreviewOptions options;
+  Colouring colouring;
+  bool direct = false;  // an SVG's own colours
+  int up = 1;
+};
 
-std::string count_text(std::size_t n, const char* one, const char* many) {
-  std::string digits = std::to_string(n), s;
-  for (std::size_t i = 0; i < digits.size(); ++i) {
-    if (i > 0 && (digits.size() - i) % 3 == 0) s += ',';
-    s += digits[i];
-  }
-  return s + " " + (n == 1 ? one : many);
-}
-
-std::string shown_title(const std::string& title) {
-  std::string t = one_line(title);
-  return t.size() > 90 ? "..." + t.substr(t.size() - 87) : t;
-}
-
-// Places a perspective camera looking along -dir at centre at the distance where every point of d just
-// fits the view (with a small margin): tighter than VTK's ResetCamera, which fits the bounding sphere.
-void fit(vtkCamera* camera, const Dataset& d, const double centre[3], const double dir[3], double aspect) {
-  double back[3] = {dir[0], dir[1], dir[2]}, up[3] = {0, 0, 1}, right[3];
-  vtkMath::Normalize(back);
-  vtkMath::Cross(up, back, right);
-  vtkMath::Normalize(right);
-  vtkMath::Cross(back, right, up);
-  const double angle = 30;
-  camera->SetViewAngle(angle);
-  const double tan_v = std::tan(vtkMath::RadiansFromDegrees(angle / 2)) / 1.12, tan_h = tan_v * aspect;
-  double distance = 0;
-  for (const auto& p : d.points) {
-    const double q[3] = {p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]};
-    const double x = vtkMath::Dot(q, right), y = vtkMath::Dot(q, up), z = vtkMath::Dot(q, back);
-    distance = std::max({distance, z + std::abs(x) / tan_h, z + std::abs(y) / tan_v});
-  }
-  if (!(distance > 0)) distance = 1;
-  camera->SetFocalPoint(centre);
-  camera->SetPosition(centre[0] + distance * back[0], centre[1] + distance * back[1], centre[2] + distance * back[2]);
-  camera->SetViewUp(up);
-}
-
-// Everything VTK does, in the child: build the scene, render, send 'P' and the PNG's bytes.
-int render_in_child(PipeOut& out, const Dataset& d, const std::string& title) {
-  ::setenv("VTK_SMP_BACKEND_IN_USE", "Sequential", 1);  // no TBB threads in a forked child
-  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-  vtkNew<ErrorToPipe> window_errors;
-  window_errors->out = &out;
-  vtkOutputWindow::SetInstance(window_errors);
-
-  const bool flat = flat_dataset(d);
-  const PreviewSize size = preview_size(d);
-  const Colouring colouring = natural_colouring(summarise(d));
-  vtkSmartPointer<vtkPolyData> poly = poly_data(d, colouring);
-  const bool coloured =
-      (colouring.on_points ? poly->GetPointData()->GetScalars() : poly->GetCellData()->GetScalars()) != nullptr;
-  const bool surface = poly->GetNumberOfPolys() > 0;
-
-  vtkNew<vtkPolyDataMapper> mapper;
-  vtkNew<vtkPolyDataNormals> normals;
-  if (surface && !flat) {
-    normals->SetInputData(poly);
-    normals->SetFeatureAngle(60);
-    normals->SplittingOn();
-    normals->ConsistencyOn();
-    normals->ComputeCellNormalsOff();
-    mapper->SetInputConnection(normals->GetOutputPort());
-  } else {
-    mapper->SetInputData(poly);
-  }
-  vtkNew<vtkLookupTable> lut;
-  if (coloured) {
-    if (colouring.categorical)
-      category_table(lut, colouring.categories);
-    else
-      continuous_table(lut, colouring.min, colouring.max);
-    lut->Build();
-    mapper->SetLookupTable(lut);
-    mapper->UseLookupTableScalarRangeOn();
-    mapper->ScalarVisibilityOn();
-    if (colouring.on_points)
-      mapper->SetScalarModeToUsePointData();
-    else
-      mapper->SetScalarModeToUseCellData();
-  } else {
-    mapper->ScalarVisibilityOff();
-  }
-
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetSize(size.width, size.height);
-  window->SetMultiSamples(8);
-  window->SetWindowName("selfsim preview");
-
-  // The views between a title strip at the top and a legend strip at the bottom.
-  const double top = 0.93, bottom = coloured ? 0.13 : 0.02;
-  const int views = flat ? 1 : 2;
-  std::size_t segments = 0;
-  for (std::size_t i = 0, begin = 0; i < d.cell_ends.size(); begin = d.cell_ends[i++])
-    segments += d.cell_ends[i] - begin;
-  for (int v = 0; v < views; ++v) {
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    vtkProperty* p = actor->GetProperty();
-    if (!coloured) p->SetColor(0.45, 0.58, 0.78);
-    if (surface) {
-      p->SetAmbient(0.15);
-      p->SetDiffuse(0.8);
-      p->SetSpecular(flat ? 0 : 0.15);
-      p->SetSpecularPower(25);
-    }
-    p->SetLineWidth(segments < 4000 ? 2.5f : segments < 40000 ? 1.5f : 1.0f);
-    p->SetPointSize(3);
-    if (!surface) p->LightingOff();  // lines and points in their own colour, not shaded
-    vtkNew<vtkRenderer> view;
-    view->SetViewport(v * 1.0 / views, bottom, (v + 1) * 1.0 / views, top);
-    view->SetBackground(white[0], white[1], white[2]);
-    view->AddActor(actor);
-    vtkCamera* camera = view->GetActiveCamera();
-    double b[6];
-    poly->GetBounds(b);
-    const double centre[3] = {(b[0] + b[1]) / 2, (b[2] + b[3]) / 2, (b[4] + b[5]) / 2};
-    // 2D from +z; 3D from the front left above, then from the back right, lower.
-    static const double directions[2][3] = {{-1.0, -1.4, 1.0}, {1.3, 1.0, 0.45}};
-    const double* dir = flat ? nullptr : directions[v];
-    camera->SetFocalPoint(centre);
-    if (flat) {
-      camera->SetPosition(centre[0], centre[1], centre[2] + 1);
-      camera->SetViewUp(0, 1, 0);
-      camera->ParallelProjectionOn();
-    } else {
-      camera->SetPosition(centre[0] + dir[0], centre[1] + dir[1], centre[2] + dir[2]);
-      camera->SetViewUp(0, 0, 1);
-      vtkNew<vtkLightKit> lights;
-      lights->AddLightsToRenderer(view);
-    }
-    const double aspect = (size.width / double(views)) / (size.height * (top - bottom));
-    if (flat) {
-      // Fit the bounding box itself: the longer side fills 94% of the view.
-      view->ResetCamera();
-      const double w = std::max(b[1] - b[0], 1e-300), h = std::max(b[3] - b[2], 1e-300);
-      camera->SetParallelScale(0.53 * std::max(h, w / aspect));
-    } else {
-      fit(camera, d, centre, dir, aspect);
-    }
-    view->ResetCameraClippingRange();
-    window->AddRenderer(view);
-  }
-
-  // Title strip: the file name, and what it holds.
-  vtkNew<vtkRenderer> head;
-  head->SetViewport(0, top, 1, 1);
-  head->SetBackground(white[0], white[1], white[2]);
-  head->AddActor2D(text(shown_title(title), 20, 0.012, 0.5, VTK_TEXT_LEFT));
-  std::string what = count_text(d.points.size(), "point", "points");
-  if (!d.cell_ends.empty())
-    what += ", " + count_text(d.cell_ends.size(), surface ? "face" : "curve", surface ? "faces" : "curves");
-  head->AddActor2D(text(what, 14, 0.988, 0.5, VTK_TEXT_RIGHT));
-  window->AddRenderer(head);
-
-  // Legend strip: a colour bar for a continuous field, swatches for a few classes, a line for many.
-  vtkNew<vtkRenderer> legend;
-  legend->SetViewport(0, 0, 1, bottom);
-  legend->SetBackground(white[0], white[1], white[2]);
-  vtkNew<vtkScalarBarActor> bar;
-  if (coloured) {
-    const bool swatches = colouring.categorical && colouring.categories.size() <= (flat ? 10u : 16u);
-    if (swatches) {  // a swatch per class with its value under it
-      const std::size_t n = colouring.categories.size();
-      legend->AddActor2D(text(colouring.field, 16, 0.19, 0.5, VTK_TEXT_RIGHT));
-      for (std::size_t i = 0; i < n; ++i) {
-        const double x = 0.22 + (static_cast<double>(i) + 0.5) * 0.6 / static_cast<double>(n);
-        double rgb[3];
-        lut->GetTableValue(static_cast<vtkIdType>(i), rgb);
-        vtkSmartPointer<vtkTextActor> swatch = text("      ", 14, x, 0.68, VTK_TEXT_CENTERED);
-        swatch->GetTextProperty()->SetBackgroundColor(rgb);
-        swatch->GetTextProperty()->SetBackgroundOpacity(1);
-        legend->AddActor2D(swatch);
-        legend->AddActor2D(text(std::to_string(colouring.categories[i]), 14, x, 0.3, VTK_TEXT_CENTERED));
-      }
-    } else if (!colouring.categorical) {
-      bar->SetLookupTable(lut);
-      bar->SetOrientationToHorizontal();
-      const double range = colouring.max - colouring.min;
-      const bool whole = std::floor(colouring.min) == colouring.min && std::floor(range) == range && range <= 10;
-      bar->SetNumberOfLabels(whole ? static_cast<int>(range) + 1 : 5);
-      bar->SetLabelFormat(whole ? "%.0f" : "%.4g");
-      legend->AddActor2D(text(colouring.field, 16, 0.19, 0.7, VTK_TEXT_RIGHT));
-      bar->UnconstrainedFontSizeOn();
-      bar->SetTextPositionToPrecedeScalarBar();
-      bar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-      bar->GetPositionCoordinate()->SetValue(0.2, 0.04);
-      bar->GetPosition2Coordinate()->SetCoordinateSystemToNormalizedViewport();
-      bar->GetPosition2Coordinate()->SetValue(0.6, 0.92);
-      bar->SetBarRatio(0.3);
-      for (vtkTextProperty* p :
-           {bar->GetTitleTextProperty(), bar->GetLabelTextProperty(), bar->GetAnnotationTextProperty()}) {
-        p->SetColor(ink[0], ink[1], ink[2]);
-        p->ShadowOff();
-        p->BoldOff();
-        p->ItalicOff();
-        p->SetFontSize(14);
-        p->SetFontFamilyToArial();
-      }
-      legend->AddActor2D(bar);
-    } else {
-      const std::size_t n = colouring.categories.size();
-      legend->AddActor2D(text(colouring.field + ": " + std::to_string(n) + " classes (" +
-                                  std::to_string(colouring.categories.front()) + " to " +
-                                  std::to_string(colouring.categories.back()) + "), one colour each",
-                              16, 0.5, 0.5, VTK_TEXT_CENTERED));
-    }
-  }
-  window->AddRenderer(legend);
-
-  window->Render();
-  if (window_errors->sent) return 0;
+// The window's picture as PNG bytes; empty when VTK reported an error.
+std::string grab_png(vtkRenderWindow* window) {
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
   grab->SetInputBufferTypeToRGB();
@@ -316,15 +91,161 @@ int render_in_child(PipeOut& out, const Dataset& d, const std::string& title) {
   png->SetInputConnection(grab->GetOutputPort());
   png->WriteToMemoryOn();
   png->Write();
-  if (window_errors->sent) return 0;
   vtkUnsignedCharArray* bytes = png->GetResult();
-  if (bytes == nullptr || bytes->GetNumberOfValues() == 0) {
-    send_failure(out, "VTK wrote no PNG");
-    return 0;
+  if (bytes == nullptr || bytes->GetNumberOfValues() == 0) return {};
+  return std::string(reinterpret_cast<const char*>(bytes->GetPointer(0)),
+                     static_cast<std::size_t>(bytes->GetNumberOfValues()));
+}
+
+// A white renderer over `viewport` of `window` ([x0, y0, x1, y1]).
+vtkSmartPointer<vtkRenderer> strip(vtkRenderWindow* window, double x0, double y0, double x1, double y1) {
+  auto r = vtkSmartPointer<vtkRenderer>::New();
+  r->SetViewport(x0, y0, x1, y1);
+  r->SetBackground(white[0], white[1], white[2]);
+  window->AddRenderer(r);
+  return r;
+}
+
+// A view of the drawing: the top view of a flat one, else the front (`oblique` false) or oblique view,
+// fitted to every step, lit by a light kit.
+void place_view(vtkRenderer* view, std::span<const Dataset> steps, bool flat, bool oblique, int up, double aspect) {
+  vtkCamera* camera = view->GetActiveCamera();
+  if (flat) {
+    fit_top(camera, steps, aspect);
+  } else {
+    const ViewFrame frame = view_frame(up);
+    fit_perspective(camera, steps, steps_centre(steps), oblique ? oblique_direction(frame) : front_direction(frame),
+                    frame, aspect);
+    vtkNew<vtkLightKit> lights;
+    lights->AddLightsToRenderer(view);
   }
+  view->ResetCameraClippingRange();
+}
+
+// Everything VTK does, in the child: build the scenes, render, send 'P', the number of pictures and each
+// PNG's bytes (the still, then with steps the filmstrip and the frames).
+int render_in_child(PipeOut& out, std::span<const Dataset> steps, const Plan& plan) {
+  ::setenv("VTK_SMP_BACKEND_IN_USE", "Sequential", 1);  // no TBB threads in a forked child
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  vtkNew<ErrorToPipe> window_errors;
+  window_errors->out = &out;
+  vtkOutputWindow::SetInstance(window_errors);
+
+  vtkNew<vtkLookupTable> lut;
+  SceneStyle style = scene_style(steps, plan.colouring, plan.direct);
+  const bool coloured = !plan.colouring.field.empty();
+  if (coloured) {
+    if (plan.colouring.categorical)
+      category_table(lut, plan.colouring.categories);
+    else
+      continuous_table(lut, plan.colouring.min, plan.colouring.max);
+    lut->Build();
+    style.lut = lut;
+  }
+  const bool flat = style.flat;
+  const PreviewSize size = flat ? PreviewSize{800, 800} : PreviewSize{1200, 600};
+  const std::size_t n = steps.size();
+  const bool frames = plan.options.steps && n > 0;
+  std::vector<StepDrawing> drawings(n);
+  auto drawing = [&](std::size_t k) -> const StepDrawing& {
+    if (!drawings[k].mapper) drawings[k] = step_drawing(steps[k], style);
+    return drawings[k];
+  };
+  auto label = [&](std::size_t k) {
+    return k < plan.options.labels.size() ? plan.options.labels[k] : "step " + std::to_string(k + 1);
+  };
+
+  // The still and the frames: the views between a title strip at the top and a legend strip at the bottom.
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(size.width, size.height);
+  window->SetMultiSamples(8);
+  window->SetWindowName("selfsim preview");
+  const double top = 0.93, bottom = coloured ? 0.13 : 0.02;
+  const int views = flat ? 1 : 2;
+  std::vector<vtkSmartPointer<vtkActor>> actors;
+  for (int v = 0; v < views; ++v) {
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    vtkSmartPointer<vtkRenderer> view = strip(window, v * 1.0 / views, bottom, (v + 1) * 1.0 / views, top);
+    view->AddActor(actor);
+    place_view(view, steps, flat, v == 1, plan.up, (size.width / double(views)) / (size.height * (top - bottom)));
+    actors.push_back(actor);
+  }
+  vtkSmartPointer<vtkRenderer> head = strip(window, 0, top, 1, 1);
+  vtkSmartPointer<vtkTextActor> title = text(shown_title(plan.title), 20, 0.012, 0.5, VTK_TEXT_LEFT);
+  vtkSmartPointer<vtkTextActor> holds = text("", 14, 0.988, 0.5, VTK_TEXT_RIGHT);
+  head->AddActor2D(title);
+  head->AddActor2D(holds);
+  vtkSmartPointer<vtkRenderer> legend = strip(window, 0, 0, 1, bottom);
+  if (coloured) add_legend(legend, plan.colouring, lut, flat ? 10 : 16);
+
+  // Each frame captioned with its step, then the still: the last step under the plain title.
+  std::vector<std::string> pictures(1);
+  auto picture = [&](std::size_t k, const std::string& caption) {
+    const StepDrawing& d = drawing(k);
+    for (vtkActor* actor : actors) show_step(actor, d, style);
+    holds->SetInput(holds_text(steps[k], d.surface && !d.tubes).c_str());
+    title->SetInput(shown_title(caption).c_str());
+    window->Render();
+    return window_errors->sent ? std::string() : grab_png(window);
+  };
+  if (frames)
+    for (std::size_t k = 0; k < n && !window_errors->sent; ++k)
+      pictures.push_back(picture(k, plan.title + ": " + label(k)));
+  if (!window_errors->sent) pictures[0] = picture(n - 1, plan.title);
+  if (window_errors->sent) return 0;
+
+  if (frames) {
+    // The filmstrip: every step in a grid of cells (the oblique view of a 3D drawing), each captioned,
+    // under one title and over one legend, in a window of its own.
+    const int cell = 300,
+              cols = static_cast<int>(std::min<std::size_t>(
+                  n, static_cast<std::size_t>(std::ceil(std::sqrt(2.0 * static_cast<double>(n)))))),
+              rows = static_cast<int>((n + static_cast<std::size_t>(cols) - 1) / static_cast<std::size_t>(cols));
+    const int head_px = 40, legend_px = coloured ? 80 : 0;
+    const int width = std::max(cols * cell, 600), height = rows * cell + head_px + legend_px;
+    vtkNew<vtkRenderWindow> strip_window;
+    strip_window->SetOffScreenRendering(1);
+    strip_window->SetSize(width, height);
+    strip_window->SetMultiSamples(8);
+    strip(strip_window, 0, 0, 1, 1);  // white under the cells a short last row leaves empty
+    const double cell_w = static_cast<double>(cell) / width, cell_h = static_cast<double>(cell) / height;
+    const double grid_top = 1 - static_cast<double>(head_px) / height;
+    for (std::size_t k = 0; k < n; ++k) {
+      const int c = static_cast<int>(k) % cols, r = static_cast<int>(k) / cols;
+      vtkSmartPointer<vtkRenderer> view =
+          strip(strip_window, c * cell_w, grid_top - (r + 1) * cell_h, (c + 1) * cell_w, grid_top - r * cell_h);
+      vtkNew<vtkActor> actor;
+      show_step(actor, drawing(k), style);
+      view->AddActor(actor);
+      view->AddActor2D(text(label(k), 13, 0.04, 0.94, VTK_TEXT_LEFT));
+      place_view(view, steps, flat, true, plan.up, 1.0);
+    }
+    vtkSmartPointer<vtkRenderer> strip_head = strip(strip_window, 0, grid_top, 1, 1);
+    strip_head->AddActor2D(
+        text(shown_title(plan.options.name.empty() ? plan.title : plan.options.name), 18, 0.012, 0.5, VTK_TEXT_LEFT));
+    strip_head->AddActor2D(
+        text(std::to_string(n) + " steps, one camera, one colour range", 13, 0.988, 0.5, VTK_TEXT_RIGHT));
+    if (coloured) {
+      vtkSmartPointer<vtkRenderer> strip_legend = strip(strip_window, 0, 0, 1, static_cast<double>(legend_px) / height);
+      add_legend(strip_legend, plan.colouring, lut, 10);
+    }
+    strip_window->Render();
+    if (window_errors->sent) return 0;
+    pictures.insert(pictures.begin() + 1, grab_png(strip_window));
+    if (window_errors->sent) return 0;
+  }
+  for (const std::string& p : pictures)
+    if (p.empty()) {
+      send_failure(out, "VTK wrote no PNG");
+      return 0;
+    }
   out.write("P", 1);
-  put_count(out, static_cast<std::uint64_t>(bytes->GetNumberOfValues()));
-  out.write(bytes->GetPointer(0), static_cast<std::size_t>(bytes->GetNumberOfValues()));
+  put_count(out, pictures.size());
+  for (const std::string& p : pictures) {
+    put_count(out, p.size());
+    out.write(p.data(), p.size());
+  }
   out.flush();
   return 0;
 }
@@ -347,19 +268,33 @@ bool flat_dataset(const Dataset& d) {
 
 PreviewSize preview_size(const Dataset& d) { return flat_dataset(d) ? PreviewSize{800, 800} : PreviewSize{1200, 600}; }
 
-std::string render_preview_png(const Dataset& d, const std::string& title, Progress& progress) {
-  if (d.points.empty()) throw Error("it holds no points");
-  for (const auto& p : d.points)
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-      throw Error("it holds a point that is not finite");
+PreviewPictures render_preview(std::span<const Dataset> steps, const std::string& title, const PreviewOptions& options,
+                               Progress& progress) {
+  if (steps.empty()) throw Error("it holds no steps");
+  std::size_t total = 0;
+  for (const Dataset& d : steps) {
+    if (d.points.empty()) throw Error(steps.size() > 1 ? "a step holds no points" : "it holds no points");
+    for (const auto& p : d.points)
+      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+        throw Error("it holds a point that is not finite");
+    total += d.points.size() + d.cell_points.size();
+  }
   if (progress.cancelled()) throw Cancelled();
+  Plan plan;
+  plan.title = title;
+  plan.options = options;
+  const Dataset& last = steps.back();
+  if (auto f = last.cell_fields.find(stroke_field); options.field.empty() && f != last.cell_fields.end())
+    plan.direct = f->second.components == 3;
+  if (!plan.direct) plan.colouring = steps_colouring(steps, options.field);  // throws for a field not there
+  plan.up = options.up >= 0 && options.up <= 2 ? options.up : up_axis(last);
   ChildLimits limits;
   limits.what = "the VTK renderer";
-  limits.seconds = 60 + static_cast<double>(d.points.size() + d.cell_points.size()) / 2e5;
-  std::string png;
+  limits.seconds = 60 + static_cast<double>(total) / 2e5;
+  PreviewPictures pictures;
   try {
     run_in_child(
-        limits, [&](PipeOut& out) { return render_in_child(out, d, title); },
+        limits, [&](PipeOut& out) { return render_in_child(out, steps, plan); },
         [&](PipeIn& in) {
           char kind = 0;
           in.read(&kind, 1);
@@ -371,11 +306,22 @@ std::string render_preview_png(const Dataset& d, const std::string& title, Progr
             throw Error(one_line(reason));
           }
           if (kind != 'P') throw Error("the VTK renderer sent a malformed answer");
-          std::uint64_t n = 0;
-          in.read(&n, sizeof n);
-          if (n > (std::uint64_t{1} << 30)) throw Error("the VTK renderer sent a malformed answer");
-          png.resize(static_cast<std::size_t>(n));
-          in.read(png.data(), png.size());
+          std::uint64_t count = 0;
+          in.read(&count, sizeof count);
+          if (count != (options.steps ? steps.size() + 2 : 1)) throw Error("the VTK renderer sent a malformed answer");
+          std::vector<std::string> got;
+          for (std::uint64_t i = 0; i < count; ++i) {
+            std::uint64_t n = 0;
+            in.read(&n, sizeof n);
+            if (n > (std::uint64_t{1} << 30)) throw Error("the VTK renderer sent a malformed answer");
+            got.emplace_back(static_cast<std::size_t>(n), '\0');
+            in.read(got.back().data(), got.back().size());
+          }
+          pictures.still = std::move(got[0]);
+          if (options.steps) {
+            pictures.filmstrip = std::move(got[1]);
+            pictures.frames.assign(std::make_move_iterator(got.begin() + 2), std::make_move_iterator(got.end()));
+          }
         });
   } catch (const Cancelled&) {
     throw;
@@ -383,7 +329,7 @@ std::string render_preview_png(const Dataset& d, const std::string& title, Progr
     throw Error(explained(e.what()));
   }
   if (progress.cancelled()) throw Cancelled();
-  return png;
+  return pictures;
 }
 
 }  // namespace selfsim::io

@@ -1,5 +1,6 @@
 #include "kernels/plugins/render/preview_scene.h"
 
+#include <vtkActor.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
@@ -7,11 +8,16 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkSmartPointer.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkPolyDataNormals.h>
+#include <vtkProperty.h>
+#include <vtkTubeFilter.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkVariant.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "kernels/io/view/palette.h"
@@ -52,6 +58,31 @@ vtkSmartPointer<vtkDoubleArray> field_array(const std::string& name, const Field
   return a;
 }
 
+// An SVG's stroke colours as bytes, which the mapper draws as they are.
+vtkSmartPointer<vtkUnsignedCharArray> colour_bytes(const FieldValues& f) {
+  auto a = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  a->SetName(stroke_field);
+  a->SetNumberOfComponents(3);
+  a->SetNumberOfTuples(static_cast<vtkIdType>(f.values.size() / 3));
+  for (std::size_t i = 0; i < f.values.size(); ++i)
+    a->SetValue(static_cast<vtkIdType>(i),
+                static_cast<unsigned char>(std::lround(255 * std::clamp(f.values[i], 0.0, 1.0))));
+  return a;
+}
+
+std::size_t segments(const Dataset& d) {
+  std::size_t n = 0;
+  for (std::size_t i = 0, begin = 0; i < d.cell_ends.size(); begin = d.cell_ends[i++]) n += d.cell_ends[i] - begin;
+  return n;
+}
+
+// Tube geometry (8 sides per segment) is built up to this many segments; past it lines are drawn as tubes
+// by the line shader, which costs nothing per segment but cannot vary the width.
+constexpr std::size_t max_tube_segments = 200000;
+// Past this many faces normals are computed without splitting at sharp edges or reorienting: both cost
+// more than the rest of a preview of a million-triangle mesh.
+constexpr vtkIdType max_careful_normals = 300000;
+
 }  // namespace
 
 // Points, cells and the colouring field as VTK polydata. Polylines become lines, polygons polys; in a
@@ -84,13 +115,134 @@ vtkSmartPointer<vtkPolyData> poly_data(const Dataset& d, const Colouring& c) {
   if (!c.field.empty()) {
     if (c.on_points) {
       if (auto f = d.point_fields.find(c.field); f != d.point_fields.end())
-        poly->GetPointData()->SetScalars(field_array(c.field, f->second));
+        poly->GetPointData()->AddArray(field_array(c.field, f->second));
     } else if (!reordered) {
       if (auto f = d.cell_fields.find(c.field); f != d.cell_fields.end())
-        poly->GetCellData()->SetScalars(field_array(c.field, f->second));
+        poly->GetCellData()->AddArray(field_array(c.field, f->second));
     }
   }
   return poly;
+}
+
+SceneStyle scene_style(std::span<const Dataset> steps, const Colouring& colouring, bool direct) {
+  SceneStyle s;
+  s.colouring = colouring;
+  s.direct = direct;
+  s.flat = true;
+  const double inf = std::numeric_limits<double>::infinity();
+  double lo[3] = {inf, inf, inf}, hi[3] = {-inf, -inf, -inf};
+  for (const Dataset& d : steps) {
+    for (const auto& p : d.points) {
+      if (p[2] != 0) s.flat = false;
+      for (int a = 0; a < 3; ++a) {
+        lo[a] = std::min(lo[a], p[a]);
+        hi[a] = std::max(hi[a], p[a]);
+      }
+    }
+    if (auto w = d.point_fields.find("width"); w != d.point_fields.end() && w->second.components == 1)
+      for (double v : w->second.values)
+        if (std::isfinite(v)) s.max_width = std::max(s.max_width, std::abs(v));
+  }
+  double diagonal = 0;
+  for (int a = 0; a < 3; ++a) diagonal += hi[a] > lo[a] ? (hi[a] - lo[a]) * (hi[a] - lo[a]) : 0;
+  s.size = diagonal > 0 ? std::sqrt(diagonal) : 1;
+  return s;
+}
+
+StepDrawing step_drawing(const Dataset& d, const SceneStyle& style) {
+  StepDrawing out;
+  vtkSmartPointer<vtkPolyData> poly = poly_data(d, style.colouring);
+  out.mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  out.surface = poly->GetNumberOfPolys() > 0;
+  const std::size_t n = segments(d);
+  out.line_width = n < 4000 ? 2.5f : n < 40000 ? 1.5f : 1.0f;
+  const auto width = d.point_fields.find("width");
+  const bool widths = !out.surface && poly->GetNumberOfLines() > 0 && style.max_width > 0 &&
+                      width != d.point_fields.end() && width->second.components == 1 && n <= max_tube_segments;
+  if (style.direct)
+    if (auto f = d.cell_fields.find(stroke_field);
+        f != d.cell_fields.end() && f->second.components == 3 && poly->GetNumberOfPolys() == 0)
+      poly->GetCellData()->AddArray(colour_bytes(f->second));
+  if (widths) {
+    // The widest branch a tube of radius 1.2% of the drawing's size, the others in proportion, none thinner
+    // than a tenth of that (a width of 0 would vanish).
+    auto radius = vtkSmartPointer<vtkDoubleArray>::New();
+    radius->SetName("selfsim_radius");
+    radius->SetNumberOfTuples(poly->GetNumberOfPoints());
+    const double largest = 0.012 * style.size;
+    for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i) {
+      const double w = static_cast<std::size_t>(i) < width->second.values.size()
+                           ? std::abs(width->second.values[static_cast<std::size_t>(i)])
+                           : 0;
+      radius->SetValue(i, largest * std::max(0.1, std::isfinite(w) ? w / style.max_width : 0.1));
+    }
+    poly->GetPointData()->SetScalars(radius);
+    vtkNew<vtkTubeFilter> tubes;
+    tubes->SetInputData(poly);
+    tubes->SetNumberOfSides(8);
+    tubes->SetVaryRadiusToVaryRadiusByAbsoluteScalar();
+    tubes->CappingOn();
+    tubes->Update();
+    out.mapper->SetInputData(tubes->GetOutput());
+    out.surface = true;
+    out.tubes = true;
+  } else if (out.surface && !style.flat) {
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputData(poly);
+    const bool careful = poly->GetNumberOfPolys() <= max_careful_normals;
+    normals->SetFeatureAngle(60);
+    normals->SetSplitting(careful);
+    normals->SetConsistency(careful);
+    normals->ComputeCellNormalsOff();
+    normals->Update();
+    out.mapper->SetInputData(normals->GetOutput());
+  } else {
+    out.mapper->SetInputData(poly);
+    // A 3D curve's lines are shaded as tubes by the line shader, so that depth reads.
+    out.lit_lines = !out.surface && !style.flat && poly->GetNumberOfLines() > 0;
+    out.tubes = out.lit_lines;
+  }
+  vtkPolyDataMapper* m = out.mapper;
+  if (style.direct && d.cell_fields.count(stroke_field) > 0) {
+    m->SetColorModeToDirectScalars();
+    m->SetScalarModeToUseCellFieldData();
+    m->SelectColorArray(stroke_field);
+    m->ScalarVisibilityOn();
+  } else if (!style.colouring.field.empty() && style.lut != nullptr) {
+    m->SetLookupTable(style.lut);
+    m->UseLookupTableScalarRangeOn();
+    m->SetColorModeToMapScalars();
+    m->SetScalarModeToUsePointFieldData();
+    if (!style.colouring.on_points) m->SetScalarModeToUseCellFieldData();
+    m->SelectColorArray(style.colouring.field.c_str());
+    m->ScalarVisibilityOn();
+  } else {
+    m->ScalarVisibilityOff();
+  }
+  return out;
+}
+
+void show_step(vtkActor* actor, const StepDrawing& drawing, const SceneStyle& style) {
+  actor->SetMapper(drawing.mapper);
+  vtkProperty* p = actor->GetProperty();
+  if (drawing.mapper->GetScalarVisibility() == 0) p->SetColor(0.45, 0.58, 0.78);
+  p->LightingOn();
+  if (drawing.surface) {
+    p->SetAmbient(0.15);
+    p->SetDiffuse(0.8);
+    p->SetSpecular(style.flat && !drawing.tubes ? 0 : 0.15);
+    p->SetSpecularPower(25);
+  } else if (drawing.lit_lines) {
+    p->SetRenderLinesAsTubes(true);
+    p->SetAmbient(0.25);
+    p->SetDiffuse(0.75);
+    p->SetSpecular(0.1);
+    p->SetRenderPointsAsSpheres(true);
+  } else {
+    p->LightingOff();  // flat lines and points in their own colour, not shaded
+  }
+  p->SetLineWidth(drawing.lit_lines ? drawing.line_width + 1.5f : drawing.line_width);
+  p->SetPointSize(3);
 }
 
 }  // namespace selfsim::io

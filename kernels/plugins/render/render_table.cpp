@@ -3,7 +3,7 @@
 
 namespace {
 
-const selfsim::RenderTable table{selfsim::io::flat_dataset, selfsim::io::preview_size, selfsim::io::render_preview_png};
+const selfsim::RenderTable table{selfsim::io::flat_dataset, selfsim::io::preview_size, selfsim::io::render_preview};
 
 }  // namespace
 

@@ -2,7 +2,7 @@
 // preview_png.h.
 #pragma once
 
-#include <filesystem>
+#include <span>
 #include <string>
 
 #include "kernels/io/view/preview_png.h"
@@ -12,8 +12,9 @@ namespace selfsim {
 struct RenderTable {
   bool (*flat_dataset)(const io::Dataset&);
   io::PreviewSize (*preview_size)(const io::Dataset&);
-  // The PNG's bytes only: the file is written by the interpreter's one confined writer (preview_plugin.cpp).
-  std::string (*render_preview_png)(const io::Dataset&, const std::string&, Progress&);
+  // The PNGs' bytes only: the files are written by the command through the one confined writer.
+  io::PreviewPictures (*render_preview)(std::span<const io::Dataset>, const std::string&, const io::PreviewOptions&,
+                                        Progress&);
 };
 
 inline constexpr const char* render_plugin = "selfsim_render.so";
