@@ -4,7 +4,7 @@ SANITIZE_BUILD ?= build-sanitize
 JOBS       ?= $(shell nproc)
 PACKAGES   := cmake g++ make libopenvdb-dev libboost-iostreams-dev liblua5.4-dev libopenmesh-dev libvtk9-dev \
               libtbb-dev lib3mf-dev libgtest-dev libgmock-dev libbenchmark-dev python3-vtk9 xvfb xauth libgl1-mesa-dri \
-              libglx-mesa0 librsvg2-bin clang-format ghostscript python3-openvdb paraview
+              libglx-mesa0 librsvg2-bin clang-format ghostscript python3-openvdb paraview libjs-three
 # Only `make test` installs these: GNU parallel and a Slurm with munge, which the sweep tests start on
 # localhost in a temporary folder (tests/cli/check_slurm.sh), and headless Chromium with Selenium for the
 # studio's browser test (tests/browser/check_studio.py). selfsim itself never needs them.

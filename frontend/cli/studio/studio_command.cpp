@@ -1,8 +1,9 @@
 // `selfsim studio RECIPE.lua [--port N]`: a page on http://127.0.0.1:N/ with a control per annotated
-// parameter (param_spec.h), the run's outputs drawn (SVGs as they are, 3D results as `selfsim preview`
-// PNGs), re-running when a control moves (the run going is stopped) or the recipe is saved. The runs are
-// live_run.h's, into the same output folder `run` writes: a failed run shows its error line in the page and
-// leaves the last good files and pictures. One loop polls the socket, the file watcher and the run: no
+// parameter (param_spec.h), the run's outputs drawn (SVGs as they are, 3D results as a view to orbit,
+// drawn by three.js from view_files.h's payloads, and as `selfsim preview` PNGs where the browser has no
+// WebGL or three.js is not installed), re-running when a control moves (the run going is stopped) or the recipe is
+// saved. The runs are live_run.h's, into the same output folder `run` writes: a failed run shows its error line in the
+// page and leaves the last good files and pictures. One loop polls the socket, the file watcher and the run: no
 // threads, no state shared between them.
 #include <fcntl.h>
 #include <poll.h>
@@ -18,6 +19,8 @@
 #include "frontend/cli/commands.h"
 #include "frontend/cli/preview_child.h"
 #include "frontend/cli/studio/http_server.h"
+#include "frontend/cli/studio/three_files.h"
+#include "frontend/cli/studio/view_files.h"
 #include "frontend/cli/sweep/sweep_plan.h"
 #include "frontend/cli/watch/file_watcher.h"
 #include "frontend/cli/watch/live_run.h"
@@ -43,7 +46,7 @@ std::string preview_png(const std::string& f) {
 
 bool previewable(const std::string& leaf) {
   const std::string ext = lower_case(std::filesystem::path(leaf).extension().string());
-  for (const char* e : {".vtp", ".vtu", ".stl", ".obj", ".ply", ".vdb", ".pvd", ".series"})
+  for (const char* e : {".vtp", ".vtu", ".stl", ".obj", ".ply", ".3mf", ".vdb", ".pvd", ".series"})
     if (ext == e) return true;
   return false;
 }
@@ -95,8 +98,13 @@ struct Studio {
         image = io::json_string("/out/" + io::url_path(f) + "?g=" + std::to_string(shown_generation));
       else if (std::filesystem::is_regular_file(base.out_dir / preview_png(f), ec))
         image = io::json_string("/out/" + io::url_path(preview_png(f)) + "?g=" + std::to_string(shown_generation));
+      // The 3D view's folder, once its index is there (the page reads index.json, then the steps).
+      std::string view = "null";
+      if (previewable(f) && std::filesystem::is_regular_file(base.out_dir / view_folder(f) / "index.json", ec))
+        view = io::json_string("/out/" + io::url_path(view_folder(f)) + "/");
       list += std::string(list.empty() ? "" : ", ") + "{\"name\": " + io::json_string(f) +
-              ", \"url\": " + io::json_string("/out/" + io::url_path(f)) + ", \"image\": " + image + "}";
+              ", \"url\": " + io::json_string("/out/" + io::url_path(f)) + ", \"image\": " + image +
+              ", \"view\": " + view + "}";
     }
     return "{\"version\": " + std::to_string(version) + ", \"generation\": " + std::to_string(generation) +
            ", \"running\": " + (running ? "true" : "false") +
@@ -148,6 +156,19 @@ void serve_output(HttpServer& http, HttpServer::Id id, const Studio& s, const st
   http.respond_file(id, content_type(rel), dir, st.st_size);
 }
 
+// A file of the three.js package, by its address on three_files.h's list: any other address is not found.
+void serve_three(HttpServer& http, HttpServer::Id id, const std::string& path) {
+  const std::optional<std::filesystem::path> file = three_file(path);
+  if (!file) return http.respond(id, 404, "text/plain", "not found\n");
+  const int fd = ::open(file->c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+  struct stat st {};
+  if (fd < 0 || ::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size > (std::int64_t{64} << 20)) {
+    if (fd >= 0) ::close(fd);
+    return http.respond(id, 404, "text/plain", three_missing);
+  }
+  http.respond_file(id, "text/javascript; charset=utf-8", fd, st.st_size);
+}
+
 }  // namespace
 
 int studio_command(const RunConfig& config, int port) {
@@ -167,6 +188,7 @@ int studio_command(const RunConfig& config, int port) {
   // The previews' folder: a link there is refused now, as the confined writer refuses it at every write.
   io::make_folder(config.out_dir, previews_folder);
   std::unique_ptr<PreviewBatches> drawing;  // the previews of `drawn`, the last good run, being drawn
+  std::unique_ptr<ViewChild> viewing;       // and its 3D views being made
   LiveResult drawn;
   HttpServer http(port);
   const char* scripts = std::getenv("SELFSIM_SCRIPTS");
@@ -185,8 +207,9 @@ int studio_command(const RunConfig& config, int port) {
     s.error.clear();
   };
   auto start = [&] {
-    if (drawing) {  // the previews of the run before: stopped, its files shown as they are
+    if (drawing || viewing) {  // the previews of the run before: stopped, its files shown as they are
       drawing.reset();
+      viewing.reset();
       show(drawn);
     }
     ++s.generation;
@@ -233,6 +256,8 @@ int studio_command(const RunConfig& config, int port) {
       } catch (const Error& e) {
         http.respond(id, 400, "application/json", "{\"error\": " + io::json_string(e.what()) + "}\n");
       }
+    } else if (q.path.starts_with("/three/")) {
+      serve_three(http, id, q.path);
     } else if (q.path.starts_with("/out/")) {
       serve_output(http, id, s, q.path.substr(5));
     } else {
@@ -240,7 +265,10 @@ int studio_command(const RunConfig& config, int port) {
     }
   };
   while (!interrupted.load()) {
-    std::vector<pollfd> p{{watcher.fd(), POLLIN, 0}, {live.fd(), POLLIN, 0}, {drawing ? drawing->fd() : -1, POLLIN, 0}};
+    std::vector<pollfd> p{{watcher.fd(), POLLIN, 0},
+                          {live.fd(), POLLIN, 0},
+                          {drawing ? drawing->fd() : -1, POLLIN, 0},
+                          {viewing ? viewing->fd() : -1, POLLIN, 0}};
     http.add_poll(p);  // its socket and every connection's after these, none waiting on another
     if (::poll(p.data(), p.size(), 250) < 0) continue;
     if (LiveResult r; live.finished(r)) {
@@ -252,15 +280,22 @@ int studio_command(const RunConfig& config, int port) {
         for (const std::string& f : r.files)
           if (lower_case(std::filesystem::path(f).extension().string()) == ".svg")
             svgs.insert(std::filesystem::path(f).stem().string());
-        std::vector<std::string> files, names;
+        std::vector<std::string> files, names, views;
         for (const std::string& f : r.files)
           if (previewable(f) && !svgs.contains(std::filesystem::path(f).stem().string())) {
             files.push_back((config.out_dir / f).string());
             names.push_back(preview_png(f));
+            views.push_back(f);
           }
         if (!files.empty()) drawing = std::make_unique<PreviewBatches>(config, config.out_dir, files, names);
         if (drawing && drawing->finished()) drawing.reset();  // no batch could start (each warned about)
-        if (drawing)
+        // The 3D views beside the PNGs, at the same time: the page shows both once both are made.
+        if (!views.empty()) try {
+            viewing = std::make_unique<ViewChild>(config, config.out_dir, views);
+          } catch (const Error& e) {
+            std::fprintf(stderr, "selfsim: warning: no 3D views: %s\n", e.what());
+          }
+        if (drawing || viewing)
           drawn = r;
         else
           show(r);
@@ -272,8 +307,9 @@ int studio_command(const RunConfig& config, int port) {
         s.error_generation = s.generation;
       }
     }
-    if (drawing && drawing->finished()) {
+    if ((drawing || viewing) && (!drawing || drawing->finished()) && (!viewing || viewing->finished())) {
       drawing.reset();
+      viewing.reset();
       show(drawn);
     }
     const bool back = watcher.restore();  // a folder deleted and brought back (git checkout)

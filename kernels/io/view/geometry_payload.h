@@ -1,0 +1,50 @@
+// A dataset as the studio's 3D view draws it (scripts/studio.html, with three.js): binary arrays a browser
+// takes as they are (typed arrays over the bytes, no number parsing), coloured here with the preview's
+// chooser and palette (natural_field.h, palette.h), so the view and the PNG agree.
+//
+// The bytes, little-endian, every array starting at a multiple of 4:
+//   "SSG1", uint32 H, H bytes of JSON header (padded with spaces to a multiple of 4),
+//   float32 positions[3 V] (relative to the header's origin: float32 keeps a far-off part's detail),
+//   uint32 indices[3 T + 2 S] (T triangles, then S line segments, into the V vertices),
+//   uint8 colours[3 V] (RGB per vertex), padded with zeros to a multiple of 4.
+// The header: {"vertices": V, "triangles": T, "segments": S, "origin": [x, y, z], "bounds": [xmin, xmax,
+// ymin, ymax, zmin, zmax], "legend": colouring_json(...)}. Neither triangles nor segments: draw the points.
+//
+// A field on cells colours each cell whole: a vertex shared by cells of different colours is sent once per
+// colour (a copy of it per colour, not per cell, so a surface of few classes stays about as small as it is).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "kernels/base/progress.h"
+#include "kernels/io/dataset/dataset.h"
+#include "kernels/io/view/natural_field.h"
+
+namespace selfsim::io {
+
+// The colouring of a series from its steps' summaries alone (one step read at a time; steps_colouring holds
+// them all): the last step's natural choice, with its range and classes taken over every step, so the colours
+// mean the same at every step (series_colouring's rule).
+Colouring summaries_colouring(std::span<const std::vector<FieldSummary>> steps);
+
+// The legend the page draws, as JSON: {"field": NAME or "", "on": "points" or "cells", "categorical": B,
+// "min": A, "max": B, "ramp": [9 colours "#rrggbb" from min to max], "classes": [values],
+// "colours": [one "#rrggbb" per class]} (classes and colours empty for a continuous field).
+std::string colouring_json(const Colouring& c);
+
+// The colour of a value under c (no field: the preview's one solid colour; a value not finite or no class
+// of c: grey), as 0-255 RGB.
+std::array<std::uint8_t, 3> value_colour(const Colouring& c, double v);
+
+// The payload bytes of d coloured by c (a field d lacks, or holds with a count that does not match, draws in
+// the solid colour). Polygons are split into triangles (a fan),
+// polylines into segments. Throws Error when a point is not finite, or when the payload would pass
+// max_bytes (naming its size and the limit); Cancelled when progress says stop.
+std::string geometry_payload(const Dataset& d, const Colouring& c, std::uint64_t max_bytes,
+                             Progress& progress = no_progress());
+
+}  // namespace selfsim::io

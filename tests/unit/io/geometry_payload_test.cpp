@@ -1,0 +1,158 @@
+// The studio's 3D view payload: the arrays a browser reads, coloured as the preview colours, vertices split
+// only where a cell field changes colour, sizes refused before they are made.
+#include "kernels/io/view/geometry_payload.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "kernels/base/error.h"
+#include "kernels/io/view/palette.h"
+
+using namespace selfsim;
+
+namespace {
+
+// The payload read back as the page reads it.
+struct Decoded {
+  std::string header;
+  std::size_t vertices = 0, triangles = 0, segments = 0;
+  std::vector<float> positions;
+  std::vector<std::uint32_t> indices;
+  std::vector<std::uint8_t> colours;
+};
+
+std::size_t header_count(const std::string& header, const std::string& key) {
+  const std::size_t at = header.find("\"" + key + "\": ");
+  EXPECT_NE(at, std::string::npos) << key;
+  return std::stoul(header.substr(at + key.size() + 4));
+}
+
+Decoded decode(const std::string& bytes) {
+  Decoded d;
+  EXPECT_EQ(bytes.substr(0, 4), "SSG1");
+  EXPECT_EQ(bytes.size() % 4, 0u);
+  std::uint32_t h = 0;
+  std::memcpy(&h, bytes.data() + 4, 4);
+  EXPECT_EQ(h % 4, 0u);  // the arrays start aligned
+  d.header = bytes.substr(8, h);
+  d.vertices = header_count(d.header, "vertices");
+  d.triangles = header_count(d.header, "triangles");
+  d.segments = header_count(d.header, "segments");
+  std::size_t at = 8 + h;
+  d.positions.resize(3 * d.vertices);
+  std::memcpy(d.positions.data(), bytes.data() + at, 12 * d.vertices);
+  at += 12 * d.vertices;
+  d.indices.resize(3 * d.triangles + 2 * d.segments);
+  std::memcpy(d.indices.data(), bytes.data() + at, 4 * d.indices.size());
+  at += 4 * d.indices.size();
+  d.colours.assign(bytes.begin() + static_cast<std::ptrdiff_t>(at),
+                   bytes.begin() + static_cast<std::ptrdiff_t>(at + 3 * d.vertices));
+  EXPECT_LE(bytes.size() - (at + 3 * d.vertices), 3u);  // nothing after the colours but padding
+  return d;
+}
+
+io::Dataset two_triangles() {
+  io::Dataset d;
+  d.shapes = io::CellShapes::polygons;
+  d.points = {{10, 0, 0}, {12, 0, 0}, {10, 2, 0}, {12, 2, 2}};
+  d.cell_ends = {3, 6};
+  d.cell_points = {0, 1, 2, 1, 3, 2};
+  return d;
+}
+
+std::array<std::uint8_t, 3> rgb(const io::Rgb& c) {
+  return {static_cast<std::uint8_t>(std::lround(c[0] * 255)), static_cast<std::uint8_t>(std::lround(c[1] * 255)),
+          static_cast<std::uint8_t>(std::lround(c[2] * 255))};
+}
+
+std::array<std::uint8_t, 3> colour_of(const Decoded& d, std::size_t v) {
+  return {d.colours[3 * v], d.colours[3 * v + 1], d.colours[3 * v + 2]};
+}
+
+}  // namespace
+
+TEST(GeometryPayload, PointFieldSharesVerticesAndUsesTheRamp) {
+  io::Dataset d = two_triangles();
+  d.point_fields["height"] = {1, {0, 1, 2, 4}};
+  const io::Colouring c = io::natural_colouring(io::summarise(d));
+  ASSERT_EQ(c.field, "height");
+  const Decoded p = decode(io::geometry_payload(d, c, 1 << 20));
+  EXPECT_EQ(p.vertices, 4u);
+  EXPECT_EQ(p.triangles, 2u);
+  EXPECT_EQ(p.segments, 0u);
+  EXPECT_EQ(p.indices, (std::vector<std::uint32_t>{0, 1, 2, 1, 3, 2}));
+  // Positions relative to the bounds' centre (11, 1, 1), which the header gives as the origin.
+  EXPECT_EQ(p.positions[0], -1.0f);
+  EXPECT_EQ(p.positions[10], 1.0f);
+  EXPECT_NE(p.header.find("\"origin\": [11, 1, 1]"), std::string::npos) << p.header;
+  EXPECT_NE(p.header.find("\"bounds\": [10, 12, 0, 2, 0, 2]"), std::string::npos) << p.header;
+  EXPECT_EQ(colour_of(p, 0), rgb(io::ramp_colour(0)));
+  EXPECT_EQ(colour_of(p, 3), rgb(io::ramp_colour(1)));
+  EXPECT_EQ(colour_of(p, 2), rgb(io::ramp_colour(0.5)));
+  EXPECT_NE(p.header.find("\"field\": \"height\""), std::string::npos);
+  EXPECT_NE(p.header.find("\"min\": 0, \"max\": 4"), std::string::npos);
+}
+
+TEST(GeometryPayload, CellClassesSplitOnlyTheVerticesBetweenColours) {
+  io::Dataset d = two_triangles();
+  d.cell_fields["tile_class"] = {1, {7, 3}};
+  const io::Colouring c = io::natural_colouring(io::summarise(d));
+  ASSERT_TRUE(c.categorical);
+  const Decoded p = decode(io::geometry_payload(d, c, 1 << 20));
+  EXPECT_EQ(p.vertices, 6u);  // the two shared points once per colour
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(colour_of(p, p.indices[k]), rgb(io::class_colour(1)));      // class 7, the second of {3, 7}
+    EXPECT_EQ(colour_of(p, p.indices[3 + k]), rgb(io::class_colour(0)));  // class 3
+  }
+  EXPECT_NE(p.header.find("\"classes\": [3, 7]"), std::string::npos) << p.header;
+
+  d.cell_fields["tile_class"] = {1, {5, 5}};
+  d.cell_fields["level"] = {1, {0, 1}};
+  const Decoded same = decode(io::geometry_payload(d, io::Colouring{"tile_class", false, true, 5, 5, {5}}, 1 << 20));
+  EXPECT_EQ(same.vertices, 4u);  // one colour: nothing split
+}
+
+TEST(GeometryPayload, PolylinesBecomeSegmentsAndPolygonsFans) {
+  io::Dataset d;
+  d.shapes = io::CellShapes::mixed;
+  d.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}};
+  d.cell_ends = {4, 6};
+  d.cell_points = {0, 1, 2, 3, 3, 4};  // a quad, then a line
+  const Decoded p = decode(io::geometry_payload(d, {}, 1 << 20));
+  EXPECT_EQ(p.triangles, 2u);
+  EXPECT_EQ(p.segments, 1u);
+  EXPECT_EQ(p.indices, (std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3, 3, 4}));
+  EXPECT_EQ(colour_of(p, 4), io::value_colour(io::Colouring{}, 0));  // uncoloured: the preview's solid colour
+}
+
+TEST(GeometryPayload, RefusesWhatCannotBeDrawn) {
+  io::Dataset d = two_triangles();
+  EXPECT_THROW(io::geometry_payload(d, {}, 200), Error);  // over the size it may take
+  try {
+    io::geometry_payload(d, {}, 200);
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("MiB a view may take"), std::string::npos) << e.what();
+  }
+  d.points[1][2] = std::nan("");
+  EXPECT_THROW(io::geometry_payload(d, {}, 1 << 20), Error);
+  d.points.clear();
+  EXPECT_THROW(io::geometry_payload(d, {}, 1 << 20), Error);
+  io::Dataset bad = two_triangles();
+  bad.cell_points[4] = 9;  // no such point
+  EXPECT_THROW(io::geometry_payload(bad, {}, 1 << 20), Error);
+}
+
+TEST(GeometryPayload, StepsShareOneRangeAndTheLastStepsField) {
+  io::Dataset a = two_triangles(), b = two_triangles();
+  a.cell_fields["level"] = {1, {0, 1}};
+  b.cell_fields["level"] = {1, {2, 5}};
+  const std::vector<std::vector<io::FieldSummary>> steps{io::summarise(a), io::summarise(b)};
+  const io::Colouring c = io::summaries_colouring(steps);
+  EXPECT_EQ(c.field, "level");
+  EXPECT_EQ(c.min, 0);
+  EXPECT_EQ(c.max, 5);
+  // The first step's cells are coloured on the whole series' range: level 1 is a fifth of the way.
+  const Decoded p = decode(io::geometry_payload(a, c, 1 << 20));
+  EXPECT_EQ(colour_of(p, p.indices[3]), rgb(io::ramp_colour(0.2)));
+}
