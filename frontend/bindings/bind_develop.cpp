@@ -38,7 +38,7 @@ std::vector<Held<Polyline>> grammar_levels(lua_State* L, const lsystem::Grammar&
   std::vector<Held<Polyline>> levels;
   double held = 0;
   for (int l = 0; l <= top; ++l) {
-    lsystem::TurtleOptions opt{.level = l};
+    lsystem::TurtleOptions opt{.level = l, .normalize = true};  // every level on the same unit segment
     levels.push_back(std::make_shared<const Polyline>(with_budget(L, [&](PointBudget b) {
       b.held += held;
       opt.budget = b;

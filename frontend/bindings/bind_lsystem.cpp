@@ -122,6 +122,8 @@ Grammar read_grammar(lua_State* L, int index) {
   if (t == LUA_TTABLE) {
     g.start_angles.clear();
     const lua_Integer n = list_length(L, -1, "option 'start_angle'");
+    // An empty list would read as "not given" (the turtle's default): refused, not guessed.
+    if (n == 0) throw Error("option 'start_angle' must be a number or a non-empty list of numbers, got {}");
     for (lua_Integer i = 1; i <= n; ++i) {
       lua_rawgeti(L, -1, i);
       const double a = finite_number(L, -1, "option 'start_angle' entry " + std::to_string(i));
@@ -181,7 +183,7 @@ lsystem::TurtleOptions turtle_options(lua_State* L, const char* method) {
     Options o(L, 2);
     o.require("level", std::string("the rewriting level: g:") + method + "{ level = 10 } or g:" + method + "(10)");
     opt.level = static_cast<int>(o.integer("level", 0, 0, lsystem::max_level));
-    opt.normalize = o.boolean("normalize", opt.normalize);
+    if (o.has("normalize")) opt.normalize = o.boolean("normalize", true);  // not given: the grammar decides
     o.finish();
   }
   return opt;

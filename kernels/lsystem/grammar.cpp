@@ -40,7 +40,6 @@ void Grammar::validate() const {
   }
   check_finite(angle, "option 'angle'");
   for (const auto& [symbol, degrees] : angles) check_finite(degrees, "option 'angles['" + shown(symbol) + "']'");
-  if (start_angles.empty()) throw Error("option 'start_angle' must be a number or a non-empty list of numbers");
   for (double a : start_angles) check_finite(a, "option 'start_angle'");
   check_finite(shrink, "option 'shrink'");
   if (!(shrink > 0)) throw Error("option 'shrink' must be a positive number, got " + number_text(shrink));

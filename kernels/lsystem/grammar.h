@@ -17,14 +17,16 @@
 namespace selfsim::lsystem {
 
 struct Grammar {
-  std::string axiom;                      // level 0; must not be empty
-  std::map<char, std::string> rules;      // symbol -> replacement; symbols without a rule stay as they are
-  double angle = 90;                      // degrees turned by '+' (left) and '-' (right)
-  std::map<char, double> angles;          // degrees turned by a symbol, positive = left; overrides angle
-  std::vector<double> start_angles{0.0};  // initial heading in degrees, cycled by level (level % size)
-  double shrink = 1;                      // step length is shrink^level (used when a curve is not normalised)
-  std::string draw = "FG";                // symbols that step forward drawing a segment
-  std::string move = "f";                 // symbols that step forward without drawing
+  std::string axiom;                  // level 0; must not be empty
+  std::map<char, std::string> rules;  // symbol -> replacement; symbols without a rule stay as they are
+  double angle = 90;                  // degrees turned by '+' (left) and '-' (right)
+  std::map<char, double> angles;      // degrees turned by a symbol, positive = left; overrides angle
+  // Initial heading in degrees, cycled by level (level % size); none given: the turtle's default, 90 (up)
+  // for a plant kept in its own frame and 0 otherwise (turtle/plant.h).
+  std::vector<double> start_angles;
+  double shrink = 1;        // step length is shrink^level (used when a curve is not normalised)
+  std::string draw = "FG";  // symbols that step forward drawing a segment
+  std::string move = "f";   // symbols that step forward without drawing
 
   // Module grammars (production.h): rules with parameters, conditions, contexts or weighted choices.
   // For them `start` holds the axiom parsed as modules and `productions` the rules, in order; `rules`
@@ -52,7 +54,10 @@ struct Grammar {
   double turn_of(char c) const;
   bool draws(char c) const { return draw.find(c) != std::string::npos; }
   bool moves(char c) const { return move.find(c) != std::string::npos; }
-  double start_angle(int level) const { return start_angles[static_cast<std::size_t>(level) % start_angles.size()]; }
+  // The given start angle at a level, 0 when none is given (turtle/plant.h's start_heading() is the turtle's).
+  double start_angle(int level) const {
+    return start_angles.empty() ? 0 : start_angles[static_cast<std::size_t>(level) % start_angles.size()];
+  }
 };
 
 // Deepest decomposition or interpretation (option 'max_depth').

@@ -58,7 +58,7 @@ for _, case in ipairs {
   { g = curves.dragon(), n = 5, opts = { normalize = false } },
   { g = curves.koch_snowflake(), n = 3, opts = {} },  -- closed
   { g = lsystem { axiom = "X", rules = { X = "F+[[X]-X]-F[-FX]+X", F = "FF" }, angle = 25, start_angle = 70 },
-    n = 3, opts = { normalize = false } },            -- branched: several paths, depth and root_distance
+    n = 3, opts = { normalize = false } },            -- branched: several paths, branch_order and root_distance
 } do
   local function at(k)
     local o = { level = k }

@@ -23,6 +23,7 @@
 #include "kernels/lsystem/module_rewrite.h"
 #include "kernels/lsystem/polled_growth.h"
 #include "kernels/lsystem/turtle/module_headings.h"
+#include "kernels/lsystem/turtle/plant.h"
 #include "kernels/lsystem/turtle/turtle_frame3.h"
 
 namespace selfsim::lsystem {
@@ -31,10 +32,11 @@ namespace {
 
 // Modules read per point drawn before a level is refused as all rewriting and no drawing (as turtle2d).
 constexpr double modules_per_point = 64;
-constexpr std::string_view turns_3d = "&^\\/$";
 
 Vec3 lift(Vec2 p) { return {p.x, p.y, 0}; }
 Vec3 lift(Vec3 p) { return p; }
+
+constexpr std::string_view turns_3d = "&^\\/$";
 
 // Whether the axiom or a successor writes a symbol that `wanted` accepts.
 template <class F>
@@ -60,9 +62,10 @@ class Turtle final : public ModuleSink {
         out_(out),
         polygons_(polygons),
         progress_(progress),
-        tree_(writes(g, [](std::uint8_t s) { return s == '['; })),
-        style_(writes(g, [](std::uint8_t s) { return s == '!' || s == '\''; })),
-        heading_(g.start_angle(opt.level), &directions_) {
+        tree_(branches(g)),
+        widths_kept_(writes(g, [](std::uint8_t s) { return s == '!'; })),
+        colors_kept_(writes(g, [](std::uint8_t s) { return s == '\''; })),
+        heading_(start_heading(g, opt), &directions_) {
     // '+', '-' and '|' turn by their parameter even where the grammar's angle makes them turn by nothing.
     for (std::uint8_t s : {'+', '-', '|'})
       if (c_.action[s] == Action::None) c_.action[s] = Action::Turn;
@@ -155,22 +158,24 @@ class Turtle final : public ModuleSink {
       scale = norm(place.a);
     } else {
       const bool closed = norm(pos_) <= 1e-9 * steps;
-      const Similarity3 place = opt_.normalize && !closed ? Similarity3::to_unit({}, pos_)
-                                                          : Similarity3::scaling(std::pow(g_.shrink, opt_.level));
+      const Similarity3 place = normalizes(g_, opt_) && !closed ? Similarity3::to_unit({}, pos_)
+                                                                : Similarity3::scaling(std::pow(g_.shrink, opt_.level));
       place_all(out_.points, place);
       if (polygons_ != nullptr) place_all(polygons_->points, place);
       scale = place.scale();
     }
-    if (tree_) {
+    if (tree_ && !out_.points.empty()) {  // a level that draws nothing has nothing to colour
       for (double& d : root_distance_) d *= scale;
-      out_.point_fields.set(int_field("depth", std::move(depth_)));
+      out_.point_fields.set(int_field("branch_order", std::move(branch_order_)));
       out_.point_fields.set(real_field("root_distance", std::move(root_distance_)));
     }
-    if (style_) {
+    // Each only when the grammar sets it: a drawing whose widths are all the default 1 is drawn with the
+    // writer's own line width, not one a step wide.
+    if (widths_kept_ && !out_.points.empty()) {
       for (double& w : widths_) w *= scale;  // widths are in turtle steps, like lengths
       out_.point_fields.set(real_field("width", std::move(widths_)));
-      out_.point_fields.set(int_field("color", std::move(colors_)));
     }
+    if (colors_kept_ && !out_.points.empty()) out_.point_fields.set(int_field("color", std::move(colors_)));
     if (polygons_ != nullptr) {
       polygons_->face_fields.set(int_field("polygon", std::move(polygon_ids_)));
       polygons_->face_fields.set(int_field("color", std::move(polygon_colors_)));
@@ -193,13 +198,11 @@ class Turtle final : public ModuleSink {
     grow_polled(out_.points, out_.points.size() + 1, most_points(), progress_);
     const std::size_t n = out_.points.capacity();
     if (tree_) {
-      grow_polled(depth_, n, n, progress_);
+      grow_polled(branch_order_, n, n, progress_);
       grow_polled(root_distance_, n, n, progress_);
     }
-    if (style_) {
-      grow_polled(widths_, n, n, progress_);
-      grow_polled(colors_, n, n, progress_);
-    }
+    if (widths_kept_) grow_polled(widths_, n, n, progress_);
+    if (colors_kept_) grow_polled(colors_, n, n, progress_);
   }
 
   struct State {
@@ -288,13 +291,11 @@ class Turtle final : public ModuleSink {
     if (out_.points.size() == out_.points.capacity()) make_room_for_point();
     out_.points.push_back(pos_);
     if (tree_) {
-      depth_.push_back(static_cast<std::int32_t>(saved_.size()));
+      branch_order_.push_back(static_cast<std::int32_t>(saved_.size()));
       root_distance_.push_back(walked_);
     }
-    if (style_) {
-      widths_.push_back(width_);
-      colors_.push_back(color_);
-    }
+    if (widths_kept_) widths_.push_back(width_);
+    if (colors_kept_) colors_.push_back(color_);
   }
 
   DirectionCache directions_;  // before heading_, which points to it
@@ -304,7 +305,7 @@ class Turtle final : public ModuleSink {
   PolylineT<V>& out_;
   Mesh* polygons_;
   Progress& progress_;
-  bool tree_, style_;
+  bool tree_, widths_kept_, colors_kept_;
   Heading heading_;
   bool path_open_ = false;
   V pos_{};
@@ -313,7 +314,7 @@ class Turtle final : public ModuleSink {
   std::vector<State> saved_;
   std::vector<std::vector<Vec3>> polygon_;  // polygons open, innermost last
   std::vector<std::array<std::size_t, 3>> triangles_;
-  std::vector<std::int32_t> depth_, colors_, polygon_ids_, polygon_colors_;
+  std::vector<std::int32_t> branch_order_, colors_, polygon_ids_, polygon_colors_;
   std::vector<double> root_distance_, widths_;
 };
 
@@ -364,15 +365,6 @@ PolylineT<V> draw(const Grammar& g, const TurtleOptions& opt, Mesh* polygons, Pr
 }
 
 }  // namespace
-
-bool draws_in_3d(const Grammar& g) {
-  if (g.dimension != 0) return g.dimension == 3;
-  if (g.tropism != Vec3{}) return true;
-  return writes(g, [&](std::uint8_t s) {
-    const char c = static_cast<char>(s);
-    return turns_3d.find(c) != std::string_view::npos && !g.draws(c) && !g.moves(c) && !g.angles.contains(c);
-  });
-}
 
 Polyline module_turtle2d(const Grammar& g, const TurtleOptions& opt, Progress& progress) {
   return draw<Vec2, Heading2>(g, opt, nullptr, progress);

@@ -3,25 +3,26 @@
 // left or right (the grammar's angle without), a symbol of `angles` given a parameter turns that many
 // degrees its way; in 3D also & ^ (pitch down, up), \ / (roll left, right), $ (roll until the left
 // vector is horizontal) and tropism (turtle_frame3.h). '!(w)' sets the line width and '!' lowers it by 1
-// (not below 0), '\''(i) sets the colour index and '\'' raises it by 1: both become point fields (`width`,
-// `color`) when the grammar writes them. '{' starts a polygon, '}' ends it: its corners are where the
-// turtle starts it, every step's end inside it and every '.'; steps inside it draw no line.
+// (not below 0), '\''(i) sets the colour index and '\'' raises it by 1: each becomes a point field (`width`,
+// in the curve's units, and `color`) when the grammar writes its symbol (a segment's is its end point's).
+// '{' starts a polygon, '}' ends it: its corners are where the turtle starts it, every step's end inside it
+// and every '.'; steps inside it draw no line.
 #pragma once
 
 #include "kernels/base/progress.h"
 #include "kernels/geom/mesh.h"
 #include "kernels/geom/polyline.h"
 #include "kernels/lsystem/grammar.h"
+#include "kernels/lsystem/turtle/plant.h"
 #include "kernels/lsystem/turtle/turtle2d.h"
 
 namespace selfsim::lsystem {
 
-// Whether g's curve is 3D: g.dimension, or when 0 whether it writes a 3D turn (& ^ \ / $, unless given
-// another role) or bends by tropism.
-bool draws_in_3d(const Grammar& g);
-
-// The curve of module grammar g at opt.level, placed as turtle2d() places curves (in 3D: an open curve's
-// start onto (0,0,0) and end onto (1,0,0), turned the least way).
+// The curve of module grammar g at opt.level, placed as turtle2d() places curves (plant.h; in 3D, when
+// normalised, an open curve's start onto (0,0,0) and end onto (1,0,0), turned the least way). A plant in
+// 3D starts at the origin with heading H = +y, left L = -x and up U = +z (turtle_frame3.h), so a grammar
+// kept in the plane of H and L draws what the 2D turtle draws, seen from +z with y up.
+// A branched grammar's curve carries `branch_order` and `root_distance`, as turtle2d's.
 Polyline module_turtle2d(const Grammar& g, const TurtleOptions& opt, Progress& progress);
 Polyline3 module_turtle3d(const Grammar& g, const TurtleOptions& opt, Progress& progress);
 // The level's polygons, triangulated, placed as its 3D curve; face fields `polygon` (which one) and

@@ -17,6 +17,7 @@
 #include "kernels/lsystem/compiled_grammar.h"
 #include "kernels/lsystem/production_count.h"
 #include "kernels/lsystem/rewrite.h"
+#include "kernels/lsystem/turtle/plant.h"
 #include "kernels/lsystem/turtle/turtle_split.h"
 #include "kernels/lsystem/turtle/turtle_walk.h"
 
@@ -28,12 +29,12 @@ constexpr double symbols_per_point = 64;
 
 }  // namespace
 
-// Closed when the turtle ends within a tiny fraction of the distance it walked. Open curves are normalised,
-// so shrink never matters to them (nor can shrink^level underflow them to a point).
+// Closed when the turtle ends within a tiny fraction of the distance it walked. Normalised open curves do not
+// depend on shrink (nor can shrink^level underflow them to a point).
 Similarity2 turtle_placement(const Grammar& g, const TurtleOptions& opt, Vec2 end, double steps) {
   const bool closed = norm(end) <= 1e-9 * steps;
-  return opt.normalize && !closed ? Similarity2::to_unit({0, 0}, end)
-                                  : Similarity2{{std::pow(g.shrink, opt.level), 0}, {0, 0}};
+  return normalizes(g, opt) && !closed ? Similarity2::to_unit({0, 0}, end)
+                                       : Similarity2{{std::pow(g.shrink, opt.level), 0}, {0, 0}};
 }
 
 namespace {
@@ -48,10 +49,11 @@ void draw_sequential(const Grammar& g, const TurtleOptions& opt, const Compiled&
                      const LatticeBlocks* blocks, const LevelCounts& counts, Polyline& out, Progress& progress) {
   PathTurtle<Heading> turtle{c, heading, blocks, out, progress, counts.max_points()};
   // Branched systems (a plant) also get their branch order and distance from the root: one colour per
-  // `level` and an arclength that restarts on every branch say little about a tree.
+  // `level` and an arclength that restarts on every branch say little about a tree. Decided by the grammar,
+  // not the level, so every level of a growth carries the same fields.
   TreeFields tree;
-  if (counts.max_depth > 0) {
-    tree.depth.reserve(out.points.capacity());
+  if (branches(g)) {
+    tree.branch_order.reserve(out.points.capacity());
     tree.root_distance.reserve(out.points.capacity());
     turtle.tree = &tree;
   }
@@ -60,10 +62,10 @@ void draw_sequential(const Grammar& g, const TurtleOptions& opt, const Compiled&
   progress.fraction(1);
   const Similarity2 place = turtle_placement(g, opt, turtle.pos, counts.segments + counts.breaks);
   for (Vec2& p : out.points) p = place(p);
-  if (turtle.tree != nullptr) {
-    const double scale = norm(place.a);  // unit steps to the curve's own length
+  if (turtle.tree != nullptr && !out.points.empty()) {  // a level that draws nothing has nothing to colour
+    const double scale = norm(place.a);                 // unit steps to the curve's own length
     for (double& d : tree.root_distance) d *= scale;
-    out.point_fields.set(int_field("depth", std::move(tree.depth)));
+    out.point_fields.set(int_field("branch_order", std::move(tree.branch_order)));
     out.point_fields.set(real_field("root_distance", std::move(tree.root_distance)));
   }
   if (!out.finite()) throw non_finite(opt.level);
@@ -138,7 +140,7 @@ void turtle2d_into(const Grammar& g, const TurtleOptions& opt, Progress& progres
 
   const Compiled c(g);
   const int lattice = c.lattice();
-  const double start = g.start_angle(opt.level);
+  const double start = start_heading(g, opt);
   if (lattice > 0) {
     const LatticeTable table(c, lattice, start);
     if (const auto split = split_level(g, c, table, opt.level, progress)) {

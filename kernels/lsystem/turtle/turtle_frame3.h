@@ -6,7 +6,9 @@
 //   | turn around (H and L reversed)
 //   $ roll about H until L is horizontal (perpendicular to `up`)
 // A grammar kept in the plane of H and L draws what the 2D turtle draws: yaw left is counterclockwise
-// seen from U.
+// seen from U. A plant starts heading(90): H = +y (up, where `$` and the previews put up), L = -x and
+// U = +z, toward a viewer looking down -z with y up; so a plant's front view is the 2D turtle's drawing,
+// and + still turns it counterclockwise there.
 #pragma once
 
 #include <cmath>

@@ -46,7 +46,7 @@ inline const LatticeBlocks::Block* block_for(const LatticeBlocks* blocks, std::u
 // Per-point fields of a branched system, for colouring a plant: its branch order and its distance along the
 // tree from the start (in unit steps; the caller scales them with the curve).
 struct TreeFields {
-  std::vector<std::int32_t> depth;  // '[' open when the point was drawn
+  std::vector<std::int32_t> branch_order;  // '[' open when the point was drawn
   std::vector<double> root_distance;
 };
 
@@ -72,7 +72,7 @@ struct PathTurtle {
   void add_point(Vec2 p) {
     out.points.push_back(p);
     if (tree != nullptr) {
-      tree->depth.push_back(static_cast<std::int32_t>(saved.size()));
+      tree->branch_order.push_back(static_cast<std::int32_t>(saved.size()));
       tree->root_distance.push_back(walked);
     }
   }

@@ -66,7 +66,7 @@ TEST(ModuleTurtle, ParametricTreeHasItsBranchesAndFields) {
   EXPECT_NEAR(norm(c.points.front()), 0, 1e-12);
   // The turtle ends at the top of the trunk: normalised, the trunk runs (0,0)-(1,0).
   EXPECT_NEAR(norm(c.points[1] - Vec2{1, 0}), 0, 1e-12);
-  ASSERT_NE(c.point_fields.find("depth"), nullptr);
+  ASSERT_NE(c.point_fields.find("branch_order"), nullptr);
   ASSERT_NE(c.point_fields.find("root_distance"), nullptr);
   // Symmetric branching: the tree's extent above and below the trunk agrees.
   const auto box = c.bbox();
@@ -85,6 +85,14 @@ TEST(ModuleTurtle, WidthAndColourBecomePointFields) {
   EXPECT_EQ(color->at(2), 2);
   EXPECT_EQ(color->at(3), 3);
   EXPECT_EQ(at(grammar("F", {}), 0).point_fields.find("width"), nullptr);
+  // Each field only where the grammar sets it: colours alone leave the line width to the writer.
+  const Polyline coloured = at(grammar("F '(4) F", {}), 0, false);
+  EXPECT_EQ(coloured.point_fields.find("width"), nullptr);
+  ASSERT_NE(coloured.point_fields.find("color"), nullptr);
+  EXPECT_EQ(coloured.point_fields.find("color")->at(2), 4);
+  const Polyline widened = at(grammar("!(5) F", {}), 0, false);
+  EXPECT_EQ(widened.point_fields.find("color"), nullptr);
+  ASSERT_NE(widened.point_fields.find("width"), nullptr);
 }
 
 TEST(ModuleTurtle, PointsBeyondTheBudgetAreRefused) {
@@ -138,6 +146,7 @@ TEST(ModuleTurtle3, TurnsFollowTheirDocumentedSense) {
   auto end = [](const std::string& axiom) {
     Grammar g = grammar(axiom, {});
     g.angle = 90;
+    g.start_angles = {0};  // H = +x, L = +y, U = +z
     return module_turtle3d(g, {.level = 0, .normalize = false}, no_progress()).points.back();
   };
   EXPECT_EQ(end("F"), (Vec3{1, 0, 0}));
@@ -163,11 +172,13 @@ TEST(ModuleTurtle3, PlanarGrammarsDrawWhatThe2DTurtleDraws) {
 
 TEST(ModuleTurtle3, RollToHorizontalAndTropism) {
   Grammar level = grammar("+(90) \\(40) $ +(90) F", {});  // heading up (+y), rolled, then levelled
+  level.start_angles = {0};
   const Vec3 p = module_turtle3d(level, {.level = 0, .normalize = false}, no_progress()).points.back();
   EXPECT_NEAR(p.y, 0, 1e-12);  // after '$' a yaw stays horizontal
   EXPECT_NEAR(std::hypot(p.x, p.z), 1, 1e-12);
   Grammar bent = grammar("F F F F", {});
   bent.tropism = {0, -0.3, 0};
+  bent.start_angles = {0};  // along +x, bending down toward -y
   const Polyline3 c = module_turtle3d(bent, {.level = 0, .normalize = false}, no_progress());
   for (std::size_t i = 2; i < c.points.size(); ++i)
     EXPECT_LT(c.points[i].y - c.points[i - 1].y, c.points[i - 1].y - c.points[i - 2].y + 1e-15);  // bending down
@@ -189,8 +200,8 @@ TEST(ModuleTurtle3, PolygonsBecomeTriangles) {
   EXPECT_EQ(m.face_fields.find("polygon")->at(0), 0);
 }
 
-TEST(ModuleTurtle3, OpenCurvesAreNormalisedOntoTheXAxis) {
-  const Polyline3 c = module_turtle3d(hilbert3d(), {.level = 2}, no_progress());
+TEST(ModuleTurtle3, OpenCurvesAreNormalisedOntoTheXAxisWhenAsked) {
+  const Polyline3 c = module_turtle3d(hilbert3d(), {.level = 2, .normalize = true}, no_progress());
   EXPECT_NEAR(norm(c.points.front()), 0, 1e-12);
   EXPECT_NEAR(norm(c.points.back() - Vec3{1, 0, 0}), 0, 1e-12);
 }

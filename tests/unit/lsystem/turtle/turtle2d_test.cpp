@@ -97,7 +97,7 @@ TEST(Turtle, StartAngleListIsCycledByLevel) {
 }
 
 TEST(Turtle, BranchesBecomeSeparatePaths) {
-  Grammar g{.axiom = "F[+F]F[-F]F", .angle = 90};
+  Grammar g{.axiom = "F[+F]F[-F]F", .angle = 90, .start_angles = {0}};
   const Polyline c = at(g, 0, false);
   ASSERT_EQ(c.paths(), 3u);  // main+first branch, stem+second branch, last stem segment
   EXPECT_EQ(c.segments(), 5u);
@@ -219,15 +219,16 @@ TEST(Grammar, ValidationNamesTheField) {
   EXPECT_NE(message(Grammar{}).find("'axiom'"), std::string::npos);
   EXPECT_NE(message(Grammar{.axiom = "F", .angle = NAN}).find("'angle'"), std::string::npos);
   EXPECT_NE(message(Grammar{.axiom = "F", .shrink = 0}).find("'shrink'"), std::string::npos);
-  EXPECT_NE(message(Grammar{.axiom = "F", .start_angles = {}}).find("'start_angle'"), std::string::npos);
+  EXPECT_NE(message(Grammar{.axiom = "F", .start_angles = {0, NAN}}).find("'start_angle'"), std::string::npos);
+  EXPECT_EQ(message(Grammar{.axiom = "F", .start_angles = {}}), "");  // none given: the turtle's default
 }
 
-TEST(Turtle, BranchedSystemsCarryDepthAndRootDistance) {
+TEST(Turtle, BranchedSystemsCarryBranchOrderAndRootDistance) {
   // F[+F]F: a stem of two steps with a branch at its middle; normalised, the stem runs (0,0) → (1,0). The
   // branch continues the first path; the stem's second step starts a new one at (1/2, 0).
-  const Polyline c = turtle2d(Grammar{.axiom = "F[+F]F", .angle = 90}, {.level = 0}, no_progress());
+  const Polyline c = turtle2d(Grammar{.axiom = "F[+F]F", .angle = 90}, {.level = 0, .normalize = true}, no_progress());
   ASSERT_EQ(c.points.size(), 5u);
-  const Field* depth = c.point_fields.find("depth");
+  const Field* depth = c.point_fields.find("branch_order");
   const Field* root = c.point_fields.find("root_distance");
   ASSERT_NE(depth, nullptr);
   ASSERT_NE(root, nullptr);
