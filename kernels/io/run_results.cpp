@@ -31,7 +31,8 @@ class Parser {
     need('{', "'{' opening \"results\"");
     std::vector<RunResult> results;
     std::set<std::string> seen;
-    if (!eat('}')) do {
+    if (!eat('}')) {
+      do {
         RunResult r;
         r.name = name();
         if (!seen.insert(r.name).second) throw Error("the result \"" + r.name + "\" is given twice");
@@ -39,7 +40,8 @@ class Parser {
         r.value = number(r.name);
         results.push_back(std::move(r));
       } while (eat(','));
-    need('}', "',' or '}' after a result");
+      need('}', "',' or '}' after a result");
+    }
     need(',', "',' after \"results\"");
     need_key("provenance");
     // The rest is the provenance record and the closing '}'.

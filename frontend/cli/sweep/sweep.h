@@ -50,7 +50,8 @@ int write_job_lists(const SweepConfig& config, const SweepPlan& plan, const std:
 // Each run's exit code as its folder's selfsim.exit records it; -1 where there is none.
 std::vector<int> read_exit_codes(const std::filesystem::path& out, const SweepPlan& plan);
 
-// The contact sheets and ParaView series of the runs that succeeded, and the sweep's summary line. Returns
+// results.csv and its plots (sweep_results.h), the contact sheets and ParaView series of the runs that
+// succeeded, and the sweep's summary line. Returns
 // the exit code: 0 when every run succeeded, 1 when one failed or did not run.
 int collect_sweep(const SweepConfig& config, const SweepPlan& plan, const std::vector<int>& codes);
 

@@ -1,8 +1,9 @@
-// What a sweep leaves besides its runs' folders: for each file the runs wrote, a contact sheet (an SVG grid,
-// one cell per run with its values under it: the run's own SVG, or a PNG preview of a 3D result), and for
-// each VTK file a ParaView series over the runs (time = the swept value when one number varies, else the
-// run's index), so ParaView's Play steps through the variants. Built the same way after a local sweep and
-// by `selfsim sweep --collect` after GNU parallel or Slurm ran the job list.
+// What a sweep leaves besides its runs' folders: results.csv and its plots (sweep_results.h); for each file
+// the runs wrote, a contact sheet (an SVG grid, one cell per run with its values under it: the run's own SVG,
+// or a PNG preview of a 3D result), and for each VTK file a ParaView series over the runs (time = the swept
+// value when one number varies, else the run's index), so ParaView's Play steps through the variants. Built
+// the same way after a local sweep and by `selfsim sweep --collect` after GNU parallel or Slurm ran the job
+// list.
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -12,6 +13,7 @@
 #include "frontend/cli/commands.h"
 #include "frontend/cli/preview_child.h"
 #include "frontend/cli/sweep/sweep.h"
+#include "frontend/cli/sweep/sweep_results.h"
 #include "frontend/lua/lua_support.h"
 #include "frontend/lua/parse_text.h"
 #include "kernels/base/lower_case.h"
@@ -26,7 +28,8 @@ namespace {
 
 // Files of a run that are the sweep's bookkeeping, not the recipe's results.
 bool bookkeeping(const std::string& leaf) {
-  return leaf == "selfsim.log" || leaf == "selfsim.exit" || leaf == "view.py" || leaf[0] == '.';
+  return leaf == "selfsim.log" || leaf == "selfsim.exit" || leaf == "view.py" || leaf == io::results_file ||
+         leaf[0] == '.';
 }
 
 bool previewable(const std::string& ext) {
@@ -49,11 +52,29 @@ std::size_t sheet_columns(const SweepPlan& plan) {
   return static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(plan.runs.size()))));
 }
 
+// The line under a sheet's title that links the sweep's results (sweep_results.h): results.csv and each
+// plot, or why there is none. Empty when the runs gave no result (the sheet is as it was before results).
+std::string results_links(const SweepResults& r, int y) {
+  if (r.names.empty()) return "";
+  auto link = [](const std::string& file, const std::string& shown) {
+    const std::string href = io::xml_escaped(io::url_path(file));
+    return "<a href=\"" + href + "\" xlink:href=\"" + href +
+           "\"><tspan fill=\"#0645ad\" text-decoration=\"underline\">" + svg_text(shown) + "</tspan></a>";
+  };
+  std::string s = "<text class=\"results\" x=\"12\" y=\"" + std::to_string(y) +
+                  "\" font-size=\"13\">results: " + link(r.written.front(), r.written.front());
+  for (std::size_t i = 0; i < r.plots.size(); ++i) s += " · " + link(r.plots[i], "plot of " + r.names[i]);
+  if (!r.no_plot.empty()) s += " · no plot: " + svg_text(r.no_plot);
+  return s + "</text>\n";
+}
+
 // The sheet of one output: `images[i]` is run i's picture (relative to the sheet) or empty, with `notes[i]`
-// saying why there is none.
+// saying why there is none; under the title, the line linking `results` (results_links), if the runs gave any.
 std::string sheet_svg(const SweepPlan& plan, const std::string& title, const std::vector<std::string>& images,
-                      const std::vector<std::string>& notes) {
-  constexpr int cell = 220, caption = 24, gap = 12, top = 40;
+                      const std::vector<std::string>& notes, const SweepResults& results) {
+  constexpr int cell = 220, caption = 24, gap = 12;
+  const std::string links = results_links(results, 48);
+  const int top = links.empty() ? 40 : 62;
   const std::size_t columns = std::max<std::size_t>(1, sheet_columns(plan));
   const std::size_t rows = (plan.runs.size() + columns - 1) / columns;
   const int width = gap + static_cast<int>(columns) * (cell + gap);
@@ -64,7 +85,7 @@ std::string sheet_svg(const SweepPlan& plan, const std::string& title, const std
       std::to_string(width) + "\" height=\"" + std::to_string(height) + "\" viewBox=\"0 0 " + std::to_string(width) +
       " " + std::to_string(height) + "\" font-family=\"sans-serif\">\n" +
       "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"" + std::to_string(gap) +
-      "\" y=\"26\" font-size=\"16\">" + svg_text(title) + "</text>\n";
+      "\" y=\"26\" font-size=\"16\">" + svg_text(title) + "</text>\n" + links;
   for (std::size_t i = 0; i < plan.runs.size(); ++i) {
     const int x = gap + static_cast<int>(i % columns) * (cell + gap);
     const int y = top + static_cast<int>(i / columns) * (cell + caption + gap);
@@ -160,7 +181,9 @@ int collect_sweep(const SweepConfig& c, const SweepPlan& plan, const std::vector
   std::string swept;
   for (const std::string& k : plan.keys) swept += (swept.empty() ? "" : " × ") + k;
   const std::string recipe = c.run.recipe.filename().string();
-  std::vector<std::string> written;
+  // The table of the runs' results and its plots first: the sheets link them.
+  const SweepResults results = write_sweep_results(c, plan, codes);
+  std::vector<std::string> written = results.written;
   // Two outputs whose sheets would share a name (a.vtp.svg and a.vtp): the second takes its other name.
   std::set<std::string> taken;
   auto unique = [&](const std::string& name, const std::string& other) {
@@ -183,7 +206,7 @@ int collect_sweep(const SweepConfig& c, const SweepPlan& plan, const std::vector
         if (have[i]) images[i] = plan.runs[i].folder + "/" + leaf;
       const std::string sheet =
           unique(fitting_name("sheet_", p.stem().string(), ".svg"), fitting_name("sheet_", leaf, ".svg"));
-      io::write_whole(out, sheet, sheet_svg(plan, recipe + ": " + leaf + " over " + swept, images, notes));
+      io::write_whole(out, sheet, sheet_svg(plan, recipe + ": " + leaf + " over " + swept, images, notes, results));
       written.push_back(sheet);
     } else if (previewable(ext) && !svg_stems.contains(p.stem().string())) {
       for (std::size_t i = 0; i < n; ++i)
@@ -217,7 +240,8 @@ int collect_sweep(const SweepConfig& c, const SweepPlan& plan, const std::vector
       }
       const std::string sheet =
           unique(fitting_name("sheet_", leaf, ".svg"), fitting_name("sheet_", leaf + "_preview", ".svg"));
-      io::write_whole(out, sheet, sheet_svg(plan, recipe + ": " + leaf + " over " + swept, images, cell_notes));
+      io::write_whole(out, sheet,
+                      sheet_svg(plan, recipe + ": " + leaf + " over " + swept, images, cell_notes, results));
       written.push_back(sheet);
     }
   }
@@ -253,6 +277,7 @@ int collect_sweep(const SweepConfig& c, const SweepPlan& plan, const std::vector
   for (int code : codes) ok += code == 0;
   if (!c.run.quiet) {
     for (const std::string& w : written) std::printf("wrote %s\n", shown_text((out / w).string()).c_str());
+    if (!results.no_plot.empty()) std::printf("no plot of the results: %s\n", shown_text(results.no_plot, 300).c_str());
     std::printf("sweep: %zu of %zu runs ok\n", ok, n);
   }
   if (ok < n) {

@@ -165,9 +165,11 @@ std::string fitting_name(const std::string& prefix, const std::string& core, con
 }
 
 bool sweep_reserved_name(const std::string& name) {
-  for (const char* ours : {"sweep.json", "previews", "slurm", "view.py", "selfsim.log", "selfsim.exit", ".", ".."})
+  for (const char* ours :
+       {"sweep.json", "results.csv", "previews", "slurm", "view.py", "selfsim.log", "selfsim.exit", ".", ".."})
     if (name == ours) return true;
-  return name.starts_with("sheet_") || name.ends_with("_sweep.pvd") || name.starts_with(".selfsim");
+  return name.starts_with("sheet_") || name.starts_with("plot_") || name.ends_with("_sweep.pvd") ||
+         name.starts_with(".selfsim");
 }
 
 bool is_sweep(const std::map<std::string, std::string>& sets) {

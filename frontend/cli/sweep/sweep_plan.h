@@ -31,9 +31,9 @@ std::string escaped_value(const std::string& value);
 std::string fitting_name(const std::string& prefix, const std::string& core, const std::string& suffix);
 
 // Whether `name` (a file name in a sweep's output folder) is one a sweep writes or keeps for itself, now or
-// later (by --collect): sweep.json, previews, slurm, view.py, selfsim.log, selfsim.exit, and any sheet_*,
-// *_sweep.pvd or .selfsim* name. A job list or Slurm script given such a name would be overwritten by, or
-// overwrite, the sweep's own (the run folders and jobs.txt depend on the plan: check_sweep_folders adds them).
+// later (by --collect): sweep.json, results.csv, previews, slurm, view.py, selfsim.log, selfsim.exit, and any
+// sheet_*, plot_*, *_sweep.pvd or .selfsim* name. A job list or Slurm script given such a name would be overwritten by,
+// or overwrite, the sweep's own (the run folders and jobs.txt depend on the plan: check_sweep_folders adds them).
 bool sweep_reserved_name(const std::string& name);
 
 // Whether any --set gives more than one value (the run is a sweep).
