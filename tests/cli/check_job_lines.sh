@@ -18,6 +18,7 @@ recipe="$dir/-r \$x;.lua"
 cat >"$recipe" <<'LUA'
 local v = param("v", "x")
 print("v=[" .. v .. "]")
+result("bytes", #v)
 save(polyline({ { 0, 0 }, { 1, 1 } }), "p.svg")
 LUA
 values=('$(touch PWNED7)' '`touch PWNED8`' 'a;touch PWNED9' "it's" '"q"' '-rf' $'\xff\xfe' '$HOME' 'a b')
@@ -57,6 +58,16 @@ check_runs "sweep.sbatch"
 bash "$out/collect-sweep.sbatch" >c.txt 2>&1 || fail "collect-sweep.sbatch: $(cat c.txt)"
 [ "$(grep -c '<image ' "$out/sheet_p.svg")" = "${#values[@]}" ] || fail "the collect script's sheet"
 [ -z "$(find "$tmp" -name 'PWNED*')" ] || fail "collect: a payload ran"
+# results.csv holds each run's value byte for byte, quoted for CSV where it must be, beside its result.
+/usr/bin/python3 - "$out" want.bin <<'PY' || fail "the collect script's results.csv: $(cat "$out/results.csv")"
+import csv, os, sys
+want = open(sys.argv[2], "rb").read().split(b"\0")[:-1]
+text = open(os.path.join(os.fsencode(sys.argv[1]), b"results.csv"), "rb").read().decode("utf-8", "surrogateescape")
+rows = list(csv.reader(text.splitlines(keepends=True)))
+assert rows[0] == ["v", "bytes", "status", "folder"], rows[0]
+got = sorted((r[0].encode("utf-8", "surrogateescape"), r[1], r[2]) for r in rows[1:])
+assert got == sorted((v, str(len(v)), "ok") for v in want), got
+PY
 if command -v parallel >/dev/null; then
   rm -rf "$out"/v=*
   parallel --will-cite --jobs 2 <"$out/jobs.txt" || fail "parallel ran the job list with failures"

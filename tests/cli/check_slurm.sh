@@ -136,6 +136,7 @@ local curves = require "selfsim.curves"
 local level = param("level", 6, { min = 1, max = 16 })
 local name = param("name", "dragon", { choices = { "dragon", "terdragon" } })
 local c = curves[name]():curve(level)
+result("points", c:points())
 save(c, "c.svg")
 save(c, "c.vtp")
 LUA
@@ -166,6 +167,15 @@ for dir in "${runs[@]}"; do
 done
 [ -f sl/sheet_c.svg ] || fail "the collect job wrote no sheet_c.svg: $(cat sl/slurm/collect.out 2>&1)"
 [ -f sl/c_sweep.pvd ] || fail "the collect job wrote no c_sweep.pvd"
+# results.csv: a row per run, each the run's number of points (2^level + 1 for both curves).
+/usr/bin/python3 - sl <<'PY' || fail "the collect job's results.csv: $(cat sl/results.csv 2>&1)"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1] + "/results.csv", newline="")))
+assert [(r["level"], r["name"]) for r in rows] == [(str(l), n) for l in range(2, 6) for n in ("dragon", "terdragon")]
+for r in rows:
+    assert r["status"] == "ok" and r["folder"] == "level=%s,name=%s" % (r["level"], r["name"]), r
+    assert int(r["points"]) == (2 ** int(r["level"]) if r["name"] == "dragon" else 3 ** int(r["level"])) + 1, r
+PY
 
 # The same sweep here: the same bytes but for the runs' logs, the job list, the Slurm scripts and their logs;
 # each run's view.py names its own folder and is otherwise the same.
@@ -191,6 +201,8 @@ wait_for 60 jobs_gone || fail "$pct: jobs still queued: $(squeue 2>&1)"
 [ "$(state "$collect")" = "JobState=COMPLETED " ] || fail "$pct: collect job: $(state "$collect")"
 for f in run-0.out run-1.out collect.out; do [ -f "$pct/slurm/$f" ] || fail "no $pct/slurm/$f: $(ls "$pct/slurm")"; done
 [ -f "$pct/sheet_c.svg" ] || fail "$pct: the collect job wrote no sheet_c.svg"
+# One number varies there: the collect job plots the result against it.
+[ "$(grep -c '<circle ' "$pct/plot_points.svg" 2>/dev/null)" = 2 ] || fail "$pct: the collect job's plot: $(ls "$pct")"
 
 echo "$failures failures"
 [ "$failures" = 0 ]
