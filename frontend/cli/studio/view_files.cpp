@@ -25,6 +25,7 @@
 #include "kernels/io/view/geometry_payload.h"
 #include "kernels/io/view/natural_field.h"
 #include "kernels/io/view/series_file.h"
+#include "kernels/io/view/up_axis.h"
 
 namespace selfsim::interp {
 
@@ -83,10 +84,12 @@ void write_view(const std::filesystem::path& root, const std::string& file, cons
       bounds[2 * j + 1] = -std::numeric_limits<double>::infinity();
     }
     std::optional<io::Dataset> only;
+    int up = 1;
     for (const std::filesystem::path& s : steps) {
       io::Dataset d = read_below(root, s, limits);
       summaries.push_back(io::summarise(d));
       widen(bounds, d);
+      if (&s == &steps.back()) up = io::up_axis(d);  // the grown result's up, as the preview takes it
       if (steps.size() == 1) only = std::move(d);
     }
     const io::Colouring colouring = io::summaries_colouring(summaries);
@@ -105,7 +108,7 @@ void write_view(const std::filesystem::path& root, const std::string& file, cons
       names += std::string(i ? ", " : "") + io::json_string(steps[i].string());
     }
     index = "{\"steps\": [" + urls + "], \"names\": [" + names + "], \"bounds\": " + bounds_json(bounds) +
-            ", \"legend\": " + io::colouring_json(colouring) + "}\n";
+            ", \"up\": " + std::to_string(up) + ", \"legend\": " + io::colouring_json(colouring) + "}\n";
   } catch (const std::bad_alloc&) {
     index = "{\"error\": " +
             io::json_string("'" + io::one_line(file) + "' needs more memory for its 3D view than --max-memory allows") +

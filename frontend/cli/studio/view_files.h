@@ -27,7 +27,8 @@ std::string view_folder(const std::string& file);
 // Reads root/file (every file on the way opened below root without following a link, as the page's file
 // serving does) with the readers `preview` uses, and writes its view into root/folder through the confined
 // writer: the steps' payloads, then index.json: {"steps": ["0.bin", ...], "names": [each step's file],
-// "bounds": [the union of the steps' bounds], "legend": ...} (one colouring and one camera for a whole series),
+// "bounds": [the union of the steps' bounds], "up": the axis up_axis.h picks for the last step (0, 1, 2),
+// "legend": ...} (one colouring and one camera for a whole series, upright as the preview stands it),
 // or {"error": "one line"} when it cannot be shown (the page then shows the PNG and says why).
 void write_view(const std::filesystem::path& root, const std::string& file, const std::string& folder,
                 const RunConfig& limits);
