@@ -5,6 +5,7 @@
 
 #include "kernels/base/error.h"
 #include "kernels/io/text/colour.h"
+#include "kernels/io/view/palette.h"
 
 namespace selfsim::io {
 
@@ -32,6 +33,12 @@ std::string colour_text(const Rgb& c) {
   return std::any_of(c.begin(), c.end(), [](double v) { return v < 0; }) ? "none" : colour_hex(c);
 }
 
+// A one-component point field of that name, or null.
+const Field* point_style_field(const Polyline& c, const char* name) {
+  const Field* f = c.point_fields.find(name);
+  return f != nullptr && f->components == 1 ? f : nullptr;
+}
+
 template <class T>
 const T& cycled(const std::vector<T>& palette, std::size_t member) {
   return palette[member % palette.size()];
@@ -56,15 +63,32 @@ int coordinate_digits(const DrawingFrame& f) {
   return static_cast<int>(std::min(17.0, 9 + std::ceil(std::log10(f.reach / f.diameter))));
 }
 
-CurveStyles::CurveStyles(const Polyline& c, const SaveOptions& opt)
+CurveStyles::CurveStyles(const Polyline& c, const SaveOptions& opt, double units)
     : opt_(opt),
       member_(style_field(c, "curve", 1)),
       color_(style_field(c, "color", 3)),
       width_(style_field(c, "width", 1)),
       fill_(style_field(c, "fill", 3)),
+      point_width_(nullptr),
+      point_color_(nullptr),
       stroke_given_(given(opt, "stroke")),
       width_given_(given(opt, "stroke_width")),
-      fill_given_(given(opt, "fill")) {
+      fill_given_(given(opt, "fill")),
+      units_(units) {
+  if (!stroke_given_ && color_ == nullptr) point_color_ = point_style_field(c, "color");
+  if (!width_given_ && width_ == nullptr) point_width_ = point_style_field(c, "width");
+  // Checked once here, naming the point, rather than written as a colour or width nobody chose.
+  for (std::size_t i = 0; point_color_ != nullptr && i < c.points.size(); ++i)
+    if (const double k = point_color_->at(i); !(std::abs(k) <= 2147483647))
+      throw Error("point field 'color' of point " + std::to_string(i + 1) +
+                  " must be a colour index (a whole number), got " + std::to_string(k));
+  for (std::size_t i = 0; point_width_ != nullptr && i < c.points.size(); ++i) {
+    const double w = point_width_->at(i) * turtle_width_unit * units;
+    if (!(w >= 0 && w < 1e6))
+      throw Error("point field 'width' of point " + std::to_string(i + 1) +
+                  " must be a line width from 0, in the curve's units (it draws " + std::to_string(w) +
+                  " drawing units)");
+  }
   // Fields may come from a loaded file: check them once here rather than write a colour nobody chose.
   const bool palette = (stroke_given_ && opt.stroke.size() > 1) || (width_given_ && opt.stroke_width.size() > 1) ||
                        (fill_given_ && opt.fill.size() > 1);
@@ -105,6 +129,25 @@ PathStyle CurveStyles::at(std::size_t path) const {
     s.fill = opt_.fill.empty() ? "none" : cycled(opt_.fill, member);
   } else {
     s.fill = colour_text(rgb_at(*fill_, path));
+  }
+  return s;
+}
+
+bool CurveStyles::per_segment(const PathStyle& path_style) const {
+  return (point_width_ != nullptr || point_color_ != nullptr) && path_style.fill == "none";
+}
+
+PathStyle CurveStyles::segment(const PathStyle& path_style, std::size_t point) const {
+  PathStyle s = path_style;
+  if (point_width_ != nullptr) s.width = point_width_->at(point) * turtle_width_unit * units_;
+  if (point_color_ != nullptr) {
+    // A negative index (ABOP's turtle allows any) is drawn as its magnitude.
+    const auto k = static_cast<std::int64_t>(std::llround(std::abs(point_color_->at(point))));
+    if (k != last_index_) {
+      last_index_ = k;
+      last_colour_ = colour_hex(class_colour(static_cast<std::size_t>(k)));
+    }
+    s.stroke = last_colour_;
   }
   return s;
 }

@@ -3,12 +3,14 @@
 // curve's with a 2% margin, its longer side `size` points (or a physical size), y up as PostScript has it.
 // Coordinates are written relative to the box's corner, so they stay small whatever the curve's position.
 // Each run of paths of one style is one PostScript path: filled with the even-odd rule where a fill is
-// given, then stroked.
+// given, then stroked. A turtle's widths and colours are drawn segment by segment, as in SVG.
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "kernels/base/error.h"
 #include "kernels/io/svg/curve_style.h"
+#include "kernels/io/svg/style_runs.h"
 #include "kernels/io/text/colour.h"
 #include "kernels/io/text/put_number.h"
 #include "kernels/io/writers.h"
@@ -40,7 +42,7 @@ void write_eps(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
   const Polyline& c = *std::get<const Polyline*>(v);  // the registry sends only 2D curves here
   const double unit = points_per_unit(opt.size_unit);
   const DrawingFrame frame = drawing_frame(c, opt.size * unit);
-  const CurveStyles styles(c, opt);
+  const CurveStyles styles(c, opt, frame.scale / unit);  // turtle widths: curve units to the size's unit
   const double w = frame.extent.x * frame.scale, h = frame.extent.y * frame.scale;
 
   std::string s;
@@ -55,18 +57,16 @@ void write_eps(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
   put_number(s, h);
   s += "\n%%Creator: selfsim\n%%LanguageLevel: 2\n%%Pages: 1\n%%EndComments\n"
        "save\n/m { moveto } bind def\n/l { lineto } bind def\n1 setlinejoin 1 setlinecap\n";
-  std::size_t written = 0;
-  std::size_t i = 0;
-  while (i < c.paths()) {
-    // One style run: paths i .. j−1.
-    const PathStyle style = styles.at(i);
-    std::size_t j = i + 1;
-    while (j < c.paths() && styles.at(j) == style) ++j;
-    s += "newpath\n";
-    for (std::size_t k = i; k < j; ++k) {
-      auto path = c.path(k);
-      const bool closed = closed_path(path);  // to a billionth of its size, as SVG's Z
-      if (closed) path = path.first(path.size() - 1);
+  // Each run of one style (style_runs.h) is one PostScript path, filled where a fill is given, then stroked.
+  struct Sink {
+    std::string& s;
+    OutputFile& out;
+    const DrawingFrame& frame;
+    double unit;
+    std::size_t written, total;
+    Progress& progress;
+    void begin(const PathStyle&) { s += "newpath\n"; }
+    void piece(std::span<const Vec2> path, bool closed) {
       const char* op = " m\n";
       for (Vec2 p : path) {
         const Vec2 q = frame.scale * (p - frame.lo);
@@ -76,27 +76,33 @@ void write_eps(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
         s += op;
         op = " l\n";
         if (++written % (1u << 20) == 0)
-          progress.step(0.9 * static_cast<double>(written) / static_cast<double>(c.points.size()));
-        if (s.size() > (1u << 20)) flush();
+          progress.step(std::min(0.9, 0.9 * static_cast<double>(written) / static_cast<double>(total)));
+        if (s.size() > (1u << 20)) {
+          out.write(s);
+          s.clear();
+        }
       }
       if (closed) s += "closepath\n";
     }
-    if (style.fill != "none") {
-      s += "gsave\n";
-      put_colour(s, style.fill);
-      s += "eofill\ngrestore\n";
+    void end(const PathStyle& style) {
+      if (style.fill != "none") {
+        s += "gsave\n";
+        put_colour(s, style.fill);
+        s += "eofill\ngrestore\n";
+      }
+      const double width = style.width * unit;
+      if (!std::isfinite(width)) throw Error(drawing_overflow);
+      if (style.stroke == "none") {
+        s += "newpath\n";  // filled only (or nothing): the path is dropped unstroked
+      } else {
+        put_colour(s, style.stroke);
+        put_number(s, width);
+        s += " setlinewidth\nstroke\n";
+      }
     }
-    const double width = style.width * unit;
-    if (!std::isfinite(width)) throw Error(drawing_overflow);
-    if (style.stroke == "none") {
-      s += "newpath\n";  // filled only (or nothing): the path is dropped unstroked
-    } else {
-      put_colour(s, style.stroke);
-      put_number(s, width);
-      s += " setlinewidth\nstroke\n";
-    }
-    i = j;
-  }
+  };
+  Sink sink{s, out, frame, unit, 0, c.points.size(), progress};
+  style_runs(c, styles, sink);
   s += "restore\nshowpage\n%%EOF\n";
   flush();
 }

@@ -2,13 +2,16 @@
 // transform makes y point up, as in the papers); the viewBox fits the curve with a small margin, and the
 // stroke width is given in pixels of the drawing's width/height, converted to curve units, so a curve of
 // any size reads the same. (vector-effect: non-scaling-stroke would say this too, but librsvg and some
-// other renderers ignore it.)
+// other renderers ignore it.) A turtle's own widths are in the curve's units instead, so a plant's trunk and
+// twigs keep their proportion to its steps (curve_style.h).
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "kernels/base/error.h"
 #include "kernels/io/provenance/provenance.h"
 #include "kernels/io/svg/curve_style.h"
+#include "kernels/io/svg/style_runs.h"
 #include "kernels/io/text/put_number.h"
 #include "kernels/io/writers.h"
 
@@ -19,7 +22,7 @@ void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
   const DrawingFrame frame = drawing_frame(c, opt.size);
   const Vec2 lo = frame.lo, extent = frame.extent;
   const double px = frame.scale, big = frame.diameter;
-  const CurveStyles styles(c, opt);
+  const CurveStyles styles(c, opt, px);  // turtle widths: curve units to pixels
   const int digits = coordinate_digits(frame);
 
   std::string s;  // written out every megabyte or so: memory stays flat whatever the curve
@@ -42,38 +45,46 @@ void write_svg(const ValueRef& v, OutputFile& out, const SaveOptions& opt, Progr
   if (!opt.provenance.empty()) s += "<!-- " + std::string(provenance_key) + " " + opt.provenance + " -->\n";
   s += "<g transform=\"scale(1,-1)\" fill-rule=\"evenodd\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
   const double noise = 1e-12 * big;
-  std::size_t written = 0;
-  PathStyle style;
-  // One <path> element per run of paths of one style: a group's member, or the whole of a plain curve.
-  for (std::size_t i = 0; i < c.paths(); ++i) {
-    if (const PathStyle next = styles.at(i); i == 0 || !(next == style)) {
-      if (i > 0) s += "\"/>\n";
-      style = next;
+  // One <path> element per run of one style (style_runs.h): a group's member, the whole of a plain curve,
+  // or the segments of a plant of one width and colour.
+  struct Sink {
+    std::string& s;
+    OutputFile& out;
+    double px, noise;
+    int digits;
+    std::size_t written, total;
+    Progress& progress;
+    void begin(const PathStyle& style) {
       s += "<path fill=\"" + style.fill + "\" stroke=\"" + style.stroke + "\" stroke-width=\"";
       if (!std::isfinite(style.width / px)) throw Error(drawing_overflow);
       put_number(s, style.width / px);
       s += "\" d=\"";
     }
-    char cmd = 'M';
-    // A closed path (back at its start) ends with Z, so renderers join its last corner like the others.
-    auto path = c.path(i);
-    const bool closed = closed_path(path);
-    if (closed) path = path.first(path.size() - 1);
-    for (Vec2 p : path) {
-      // Rounding noise around zero (-1.36e-19 on a unit curve) is written as the 0 it means.
-      p = {std::abs(p.x) < noise ? 0.0 : p.x, std::abs(p.y) < noise ? 0.0 : p.y};
-      if (++written % (1u << 20) == 0)
-        progress.step(0.9 * static_cast<double>(written) / static_cast<double>(c.points.size()));
-      s += cmd;
-      put_number(s, p.x, digits);
-      s += ' ';
-      put_number(s, p.y, digits);
-      cmd = cmd == 'M' ? 'L' : ' ';
-      if (s.size() > (1u << 20)) flush();
+    void piece(std::span<const Vec2> path, bool closed) {
+      char cmd = 'M';
+      for (Vec2 p : path) {
+        // Rounding noise around zero (-1.36e-19 on a unit curve) is written as the 0 it means.
+        p = {std::abs(p.x) < noise ? 0.0 : p.x, std::abs(p.y) < noise ? 0.0 : p.y};
+        if (++written % (1u << 20) == 0)
+          progress.step(std::min(0.9, 0.9 * static_cast<double>(written) / static_cast<double>(total)));
+        s += cmd;
+        put_number(s, p.x, digits);
+        s += ' ';
+        put_number(s, p.y, digits);
+        cmd = cmd == 'M' ? 'L' : ' ';
+        if (s.size() > (1u << 20)) {
+          out.write(s);
+          s.clear();
+        }
+      }
+      // A closed path (back at its start) ends with Z, so renderers join its last corner like the others.
+      if (closed) s += 'Z';
     }
-    if (closed) s += 'Z';
-  }
-  s += "\"/>\n</g>\n</svg>\n";  // c has at least one path: save() refuses empty curves
+    void end(const PathStyle&) { s += "\"/>\n"; }
+  };
+  Sink sink{s, out, px, noise, digits, 0, c.points.size(), progress};
+  style_runs(c, styles, sink);  // c has at least one path: save() refuses empty curves
+  s += "</g>\n</svg>\n";
   flush();
 }
 
