@@ -37,7 +37,9 @@ usage:
       -q, --quiet           print nothing but errors
   A sweep: a --set with several values runs the recipe once per value, and several such --set once per
   combination, each into its own folder of the output folder named by its values (out/level=4,mode=clamp),
-  with a contact sheet of each result (sheet_NAME.svg) and a ParaView series of each VTK file:
+  with a contact sheet of each result (sheet_NAME.svg), a ParaView series of each VTK file, and
+  results.csv: a row per run of its values and the numbers its recipe gave with result(NAME, number)
+  (plot_NAME.svg of each against the swept number when one number varies):
       --set level=4..10     whole numbers 4 to 10        --set factor=0.3..0.9:0.1   a range with a step
       --set mode=clamp,rotate  a list ("\," for a comma inside a value)
   selfsim sweep RECIPE.lua --set ... [run options] [--jobs-file F] [--slurm F] [--collect] [--no-sheet]

@@ -16,10 +16,17 @@ namespace selfsim::io {
 namespace {
 
 constexpr double width = 640, height = 420;
-constexpr double left = 84, right = 24, top = 58, bottom = 62;  // margins around the plot area
+constexpr double right = 24, top = 58, bottom = 62;  // margins around the plot area (the left one fits the labels)
 
 // (v - lo) / (hi - lo) computed in halves, so that a range as wide as the doubles themselves cannot overflow.
 double fraction(double v, double lo, double hi) { return (v * 0.5 - lo * 0.5) / (hi * 0.5 - lo * 0.5); }
+
+// lo (side -1) or hi (side 1) moved out by 3% of the range, so that no point sits on the frame when a tick
+// falls on it; kept within the doubles.
+double padded(double lo, double hi, int side) {
+  const double pad = (hi * 0.5 - lo * 0.5) * 0.06;
+  return std::clamp(side < 0 ? lo - pad : hi + pad, -DBL_MAX, DBL_MAX);
+}
 
 std::string num(double v) {
   std::string s;
@@ -66,8 +73,18 @@ std::string result_plot_svg(const PlotLabels& labels, std::vector<PlotPoint> poi
   std::stable_sort(points.begin(), points.end(), [](const PlotPoint& a, const PlotPoint& b) { return a.x < b.x; });
   double ylo = points[0].y, yhi = points[0].y;
   for (const PlotPoint& p : points) ylo = std::min(ylo, p.y), yhi = std::max(yhi, p.y);
-  const std::vector<double> xt = plot_ticks(points.front().x, points.back().x), yt = plot_ticks(ylo, yhi);
+  const std::vector<double> xt = plot_ticks(padded(points.front().x, points.back().x, -1),
+                                            padded(points.front().x, points.back().x, 1)),
+                            yt = plot_ticks(padded(ylo, yhi, -1), padded(ylo, yhi, 1));
   const double x0 = xt.front(), x1 = xt.back(), y0 = yt.front(), y1 = yt.back();
+  const double xmag = std::max(std::abs(x0), std::abs(x1)), ymag = std::max(std::abs(y0), std::abs(y1));
+  const double xstep = (x1 * 0.5 - x0 * 0.5) * 2 / static_cast<double>(xt.size() - 1);
+  const double ystep = (y1 * 0.5 - y0 * 0.5) * 2 / static_cast<double>(yt.size() - 1);
+  // The y ticks' labels decide the left margin: about 7 units a character at 12, and room for the axis' name.
+  std::vector<std::string> ylabels;
+  std::size_t longest = 0;
+  for (double t : yt) longest = std::max(longest, ylabels.emplace_back(tick_label(t, ystep, ymag)).size());
+  const double left = std::clamp(44 + 7.0 * static_cast<double>(longest), 84.0, 240.0);
   const double w = width - left - right, h = height - top - bottom;
   auto sx = [&](double v) { return left + fraction(v, x0, x1) * w; };
   auto sy = [&](double v) { return top + h - fraction(v, y0, y1) * h; };
@@ -82,28 +99,26 @@ std::string result_plot_svg(const PlotLabels& labels, std::vector<PlotPoint> poi
   if (!labels.note.empty())
     s += "<text class=\"note\" x=\"" + num(left) + "\" y=\"42\" fill=\"#555\">" + text(labels.note) + "</text>\n";
   // The grid and the ticks' labels.
-  const double xmag = std::max(std::abs(x0), std::abs(x1)), ymag = std::max(std::abs(y0), std::abs(y1));
-  const double xstep = (x1 * 0.5 - x0 * 0.5) * 2 / static_cast<double>(xt.size() - 1);
-  const double ystep = (y1 * 0.5 - y0 * 0.5) * 2 / static_cast<double>(yt.size() - 1);
   for (double t : xt) {
     const std::string x = num(sx(t));
     s += "<line x1=\"" + x + "\" y1=\"" + num(top) + "\" x2=\"" + x + "\" y2=\"" + num(top + h + 5) +
          "\" stroke=\"#e4e4e4\"/>\n<text class=\"xtick\" x=\"" + x + "\" y=\"" + num(top + h + 19) +
          "\" text-anchor=\"middle\">" + tick_label(t, xstep, xmag) + "</text>\n";
   }
-  for (double t : yt) {
+  for (std::size_t i = 0; i < yt.size(); ++i) {
+    const double t = yt[i];
     const std::string y = num(sy(t));
     s += "<line x1=\"" + num(left - 5) + "\" y1=\"" + y + "\" x2=\"" + num(left + w) + "\" y2=\"" + y +
          "\" stroke=\"#e4e4e4\"/>\n<text class=\"ytick\" x=\"" + num(left - 8) + "\" y=\"" + num(sy(t) + 4) +
-         "\" text-anchor=\"end\">" + tick_label(t, ystep, ymag) + "</text>\n";
+         "\" text-anchor=\"end\">" + ylabels[i] + "</text>\n";
   }
   // The axes, their names, then the line and the points over them.
   s += "<rect x=\"" + num(left) + "\" y=\"" + num(top) + "\" width=\"" + num(w) + "\" height=\"" + num(h) +
        "\" fill=\"none\" stroke=\"#333\"/>\n";
   s += "<text class=\"xlabel\" x=\"" + num(left + w / 2) + "\" y=\"" + num(height - 16) +
        "\" text-anchor=\"middle\" font-size=\"14\">" + text(labels.x) + "</text>\n";
-  s += "<text class=\"ylabel\" transform=\"translate(20 " + num(top + h / 2) +
-       ") rotate(-90)\" text-anchor=\"middle\" font-size=\"14\">" + text(labels.y) + "</text>\n";
+  s += "<text class=\"ylabel\" transform=\"translate(" + num(left - 24 - 7.0 * static_cast<double>(longest)) + " " +
+       num(top + h / 2) + ") rotate(-90)\" text-anchor=\"middle\" font-size=\"14\">" + text(labels.y) + "</text>\n";
   if (points.size() > 1) {
     s += "<polyline fill=\"none\" stroke=\"" + colour + "\" stroke-width=\"2\" points=\"";
     for (std::size_t i = 0; i < points.size(); ++i)

@@ -18,7 +18,8 @@ struct PlotLabels {
   std::string x, y;   // the axes' names: the swept key, the result
 };
 
-// The plot as a whole SVG document, 640 x 420. Each point is a circle carrying its exact values as
+// The plot as a whole SVG document, 640 x 420, its axes running from a round tick below the data (less 3% of
+// its range) to one above. Each point is a circle carrying its exact values as
 // data-x and data-y (the shortest text that reads back the same double), for tools and tests; the points
 // are drawn in order of x whatever their order given. Throws Error for no point or a value that is not
 // finite.
