@@ -119,7 +119,7 @@ bool SvgScopes::bound_to_svg(const std::string& prefix, const SvgTag& tag) const
 }
 
 SvgElement SvgScopes::open(std::string_view name, const SvgTag& tag) const {
-  const Scope parent = scopes_.empty() ? Scope{true, true, Affine2{1, 0, 0, -1, 0, 0}, 0} : scopes_.back();
+  const Scope parent = scopes_.empty() ? Scope{true, true, Affine2{1, 0, 0, -1, 0, 0}, 0, {}, {}} : scopes_.back();
   SvgElement e;
   const std::size_t colon = name.find(':');
   e.local = std::string(colon == std::string_view::npos ? name : name.substr(colon + 1));
@@ -133,6 +133,8 @@ SvgElement SvgScopes::open(std::string_view name, const SvgTag& tag) const {
   e.visible = visibility == "visible"                              ? true
               : visibility == "hidden" || visibility == "collapse" ? false
                                                                    : parent.visible;
+  e.stroke = property(tag, tag.stroke, "stroke").value_or(parent.stroke);
+  e.fill = property(tag, tag.fill, "fill").value_or(parent.fill);
   if (e.drawn) {
     e.to_selfsim = tag.transform ? parent.to_selfsim.after(parse_svg_transform(*tag.transform)) : parent.to_selfsim;
     if (!e.to_selfsim.finite()) throw Error("the transforms of an element and its ancestors overflow");
@@ -144,7 +146,14 @@ void SvgScopes::push(const SvgElement& e, const SvgTag& tag) {
   if (namespaces_.size() + tag.namespaces.size() > max_namespaces)
     throw Error("more than " + std::to_string(max_namespaces) + " XML namespace declarations in scope");
   namespaces_.insert(namespaces_.end(), tag.namespaces.begin(), tag.namespaces.end());
-  scopes_.push_back({e.drawn && e.local != "path", e.visible, e.to_selfsim, namespaces_.size()});
+  scopes_.push_back({e.drawn && e.local != "path", e.visible, e.to_selfsim, namespaces_.size(), e.stroke, e.fill});
+}
+
+Rgb SvgElement::colour() const {
+  if (auto c = colour_rgb(stroke)) return *c;
+  if (fill != "none")
+    if (auto c = colour_rgb(fill)) return *c;
+  return {0, 0, 0};  // SVG's own default: a black fill
 }
 
 void SvgScopes::pop() {

@@ -19,7 +19,8 @@
 // That undoes the scale(1,-1) group selfsim writes (a saved curve reads back as it was), and a drawing
 // from elsewhere reads the way up it is seen. viewBox, x and y of <svg> elements and <use> references are
 // not applied: the points are in the root's user units. Style sheets (<style>) are not read; a style
-// attribute's display and visibility are.
+// attribute's display, visibility, stroke and fill are. Stroke and fill are inherited as in SVG; a colour
+// given as a CSS name, #rgb or #rrggbb is read (other forms, gradients and currentColor count as none).
 #pragma once
 
 #include <cstddef>
@@ -30,12 +31,13 @@
 #include <vector>
 
 #include "kernels/io/svg/svg_transform.h"
+#include "kernels/io/text/colour.h"
 
 namespace selfsim::io {
 
 // The attributes of one start tag that matter for drawing, values as written (character references undone).
 struct SvgTag {
-  std::optional<std::string> transform, style, display, visibility;
+  std::optional<std::string> transform, style, display, visibility, stroke, fill;
   std::vector<std::pair<std::string, bool>> namespaces;  // xmlns ("") and xmlns:prefix: bound to SVG?
 };
 
@@ -45,6 +47,10 @@ struct SvgElement {
   bool drawn = false;   // a path that is drawn if visible, or a container whose content may be
   bool visible = true;  // its computed visibility, inherited (a child may be visible again)
   Affine2 to_selfsim;   // its coordinates (inside its own transform) → selfsim's
+  // Its stroke and fill as set on it or inherited (lower case, "" where nothing sets them), and the colour a
+  // path of it is drawn in: its stroke, else (a stroke of none or not a colour) its fill, else black.
+  std::string stroke, fill;
+  Rgb colour() const;
 };
 
 class SvgScopes {
@@ -61,6 +67,7 @@ class SvgScopes {
     bool drawn, visible;
     Affine2 to_selfsim;
     std::size_t namespaces;  // declarations in scope inside it
+    std::string stroke, fill;
   };
   bool bound_to_svg(const std::string& prefix, const SvgTag& tag) const;
 

@@ -1,6 +1,7 @@
 // Reading SVG back (selfsim diff / info, load): one polyline cell per subpath of every drawn <path d="...">
 // element, in selfsim's coordinates (y up), each path's points mapped through its own transform and its
-// ancestors'. What is drawn, namespaces and coordinates: svg_element.h; path data: svg_path_data.h.
+// ancestors', each cell's colour (its path's stroke) in the cell field `color`. What is drawn, namespaces and
+// coordinates: svg_element.h; path data: svg_path_data.h.
 //
 // The file is streamed in 64 KiB chunks (a regular file only, read up to its size when opened: see
 // regular_file.h), so memory grows with the points read, never with the file's text, and a FIFO or
@@ -44,12 +45,14 @@ std::string local(const std::string& name) {
 }
 
 // The attribute values an element's meaning depends on, kept while its tag is read.
-enum class Keep { none, transform, style, display, visibility, xmlns };
+enum class Keep { none, transform, style, display, visibility, stroke, fill, xmlns };
 Keep kept(const std::string& attribute) {
   if (attribute == "transform") return Keep::transform;
   if (attribute == "style") return Keep::style;
   if (attribute == "display") return Keep::display;
   if (attribute == "visibility") return Keep::visibility;
+  if (attribute == "stroke") return Keep::stroke;
+  if (attribute == "fill") return Keep::fill;
   if (attribute == "xmlns" || (attribute.size() > 6 && attribute.compare(0, 6, "xmlns:") == 0)) return Keep::xmlns;
   return Keep::none;
 }
@@ -61,6 +64,8 @@ class SvgParser {
   explicit SvgParser(Dataset& d) : d_(d), path_(d) {}
   // The <image> elements met: pictures that a browser draws (a sweep's contact sheet is made of them).
   std::size_t images() const { return images_; }
+  // Each cell's colour (red, green, blue in [0, 1], cell after cell): its path's stroke (svg_element.h).
+  std::vector<double>& colours() { return colours_; }
 
   void feed(std::string_view chunk) {
     for (char c : chunk) {
@@ -304,6 +309,12 @@ class SvgParser {
       case Keep::visibility:
         tag_.visibility = std::move(v);
         break;
+      case Keep::stroke:
+        tag_.stroke = std::move(v);
+        break;
+      case Keep::fill:
+        tag_.fill = std::move(v);
+        break;
       default:
         break;
     }
@@ -342,6 +353,9 @@ class SvgParser {
       if (!is_finite(p)) throw Error("a point of a path is not finite once transformed");
       d_.points[i] = {p.x, p.y, 0};
     }
+    const Rgb colour = e.colour();
+    for (std::size_t i = marks_.cells; i < d_.cell_ends.size(); ++i)
+      colours_.insert(colours_.end(), colour.begin(), colour.end());
   }
 
   void close_element() {
@@ -359,6 +373,7 @@ class SvgParser {
 
   Dataset& d_;
   std::size_t images_ = 0;
+  std::vector<double> colours_;
   PathData path_;
   SvgScopes scopes_;
   State state_ = State::text;
@@ -393,6 +408,10 @@ Dataset read_svg(const std::filesystem::path& file) {
       throw Error("a contact sheet of " + std::to_string(parser.images()) + " picture" +
                   (parser.images() == 1 ? "" : "s") +
                   " (<image> elements, as a sweep's sheets hold) and no path of its own: open it in a browser");
+    // The paths' own colours, as a curve holds them (a per-path `color` of red, green and blue in [0, 1]):
+    // a preview draws them, and a loaded drawing saved again keeps them.
+    if (!d.cell_ends.empty() && parser.colours().size() == 3 * d.cell_ends.size())
+      d.cell_fields["color"] = FieldValues{3, std::move(parser.colours())};
     check_dataset(d);
     return d;
   } catch (const std::bad_alloc&) {

@@ -284,8 +284,7 @@ PreviewPictures render_preview(std::span<const Dataset> steps, const std::string
   plan.title = title;
   plan.options = options;
   const Dataset& last = steps.back();
-  if (auto f = last.cell_fields.find(stroke_field); options.field.empty() && f != last.cell_fields.end())
-    plan.direct = f->second.components == 3;
+  plan.direct = options.field.empty() && has_direct_colours(last);
   if (!plan.direct) plan.colouring = steps_colouring(steps, options.field);  // throws for a field not there
   plan.up = options.up >= 0 && options.up <= 2 ? options.up : up_axis(last);
   ChildLimits limits;

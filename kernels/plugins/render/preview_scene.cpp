@@ -61,7 +61,7 @@ vtkSmartPointer<vtkDoubleArray> field_array(const std::string& name, const Field
 // An SVG's stroke colours as bytes, which the mapper draws as they are.
 vtkSmartPointer<vtkUnsignedCharArray> colour_bytes(const FieldValues& f) {
   auto a = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  a->SetName(stroke_field);
+  a->SetName(direct_colour_field);
   a->SetNumberOfComponents(3);
   a->SetNumberOfTuples(static_cast<vtkIdType>(f.values.size() / 3));
   for (std::size_t i = 0; i < f.values.size(); ++i)
@@ -124,6 +124,11 @@ vtkSmartPointer<vtkPolyData> poly_data(const Dataset& d, const Colouring& c) {
   return poly;
 }
 
+bool has_direct_colours(const Dataset& d) {
+  const auto f = d.cell_fields.find(direct_colour_field);
+  return f != d.cell_fields.end() && f->second.components == 3 && f->second.values.size() == 3 * d.cell_ends.size();
+}
+
 SceneStyle scene_style(std::span<const Dataset> steps, const Colouring& colouring, bool direct) {
   SceneStyle s;
   s.colouring = colouring;
@@ -159,10 +164,8 @@ StepDrawing step_drawing(const Dataset& d, const SceneStyle& style) {
   const auto width = d.point_fields.find("width");
   const bool widths = !out.surface && poly->GetNumberOfLines() > 0 && style.max_width > 0 &&
                       width != d.point_fields.end() && width->second.components == 1 && n <= max_tube_segments;
-  if (style.direct)
-    if (auto f = d.cell_fields.find(stroke_field);
-        f != d.cell_fields.end() && f->second.components == 3 && poly->GetNumberOfPolys() == 0)
-      poly->GetCellData()->AddArray(colour_bytes(f->second));
+  const bool direct = style.direct && has_direct_colours(d) && poly->GetNumberOfPolys() == 0;
+  if (direct) poly->GetCellData()->AddArray(colour_bytes(d.cell_fields.at(direct_colour_field)));
   if (widths) {
     // The widest branch a tube of radius 1.2% of the drawing's size, the others in proportion, none thinner
     // than a tenth of that (a width of 0 would vanish).
@@ -203,10 +206,10 @@ StepDrawing step_drawing(const Dataset& d, const SceneStyle& style) {
     out.tubes = out.lit_lines;
   }
   vtkPolyDataMapper* m = out.mapper;
-  if (style.direct && d.cell_fields.count(stroke_field) > 0) {
+  if (direct) {
     m->SetColorModeToDirectScalars();
     m->SetScalarModeToUseCellFieldData();
-    m->SelectColorArray(stroke_field);
+    m->SelectColorArray(direct_colour_field);
     m->ScalarVisibilityOn();
   } else if (!style.colouring.field.empty() && style.lut != nullptr) {
     m->SetLookupTable(style.lut);

@@ -19,9 +19,12 @@ class vtkPolyDataMapper;
 
 namespace selfsim::io {
 
-// The name of an SVG's own stroke colours (svg_read.h): a cell field of 3 components, red, green, blue in
-// [0, 1], drawn as they are when no --field is asked.
-inline constexpr const char* stroke_field = "stroke";
+// A drawing's own colours: a cell field `color` of 3 components, red, green, blue in [0, 1], as an SVG's
+// stroke colours read back (svg_read.cpp) and a curve's per-path colours are; drawn as they are when no
+// --field is asked. (A grammar's colour index, `color` of one component, is a field like any other.)
+inline constexpr const char* direct_colour_field = "color";
+// Whether d holds its own colours.
+bool has_direct_colours(const Dataset& d);
 
 // A perceptually even blue-green-yellow ramp from lo to hi.
 void continuous_table(vtkLookupTable* lut, double lo, double hi);
@@ -34,7 +37,7 @@ vtkSmartPointer<vtkPolyData> poly_data(const Dataset& d, const Colouring& c);
 // What is the same for every step of a preview.
 struct SceneStyle {
   Colouring colouring;  // field empty: one colour (or `direct`)
-  bool direct = false;  // draw the cell field `stroke` as colours
+  bool direct = false;  // draw the cell field `color` as colours (has_direct_colours)
   bool flat = false;
   double size = 1;       // the diagonal of every step's bounding box: tube radii are a fraction of it
   double max_width = 0;  // the largest point field `width` over every step; 0: none

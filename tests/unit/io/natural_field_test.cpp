@@ -106,3 +106,64 @@ TEST(NaturalField, ValuesDifferingOnlyByRoundingAreOneValue) {
   EXPECT_EQ(d.field, "wall");
   EXPECT_LT(d.min, d.max);
 }
+
+namespace {
+
+// A branching curve as read back: a grammar's colour index, its branch depth, a path id, arclength.
+io::Dataset plant() {
+  io::Dataset d;
+  d.points = {{0, 0, 0}, {0, 1, 0}, {0, 1, 0}, {1, 2, 0}};
+  d.cell_ends = {2, 4};
+  d.cell_points = {0, 1, 2, 3};
+  d.point_fields["arclength"] = {1, {0, 1, 0, 1.4}};
+  d.point_fields["branch_order"] = {1, {0, 0, 1, 1}};
+  d.cell_fields["path"] = {1, {0, 1}};
+  return d;
+}
+
+}  // namespace
+
+TEST(NaturalField, BranchOrderBeforeArclengthAndColourIndexBeforeBoth) {
+  io::Dataset d = plant();
+  io::Colouring c = io::natural_colouring(io::summarise(d));
+  EXPECT_EQ(c.field, "branch_order");
+  EXPECT_FALSE(c.categorical);  // a depth: an ordered ramp
+  d.point_fields["color"] = {1, {1, 1, 2, 3}};
+  c = io::natural_colouring(io::summarise(d));
+  EXPECT_EQ(c.field, "color");
+  EXPECT_TRUE(c.categorical);  // colour indices are classes
+  EXPECT_EQ(c.categories, (std::vector<int>{1, 2, 3}));
+}
+
+TEST(NaturalField, NamedFieldEvenIfItDoesNotVaryAndErrorsNamingWhatIsThere) {
+  const io::Dataset d = plant();
+  const io::Colouring c = io::named_colouring(io::summarise(d), "path");
+  EXPECT_EQ(c.field, "path");
+  EXPECT_FALSE(c.on_points);
+  try {
+    io::named_colouring(io::summarise(d), "widht");
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "--field: no field named 'widht'; it holds arclength, branch_order, path");
+  }
+  io::Dataset coloured = plant();
+  coloured.cell_fields["color"] = {3, {1, 0, 0, 0, 0, 1}};
+  EXPECT_THROW(io::named_colouring(io::summarise(coloured), "color"), Error);
+  EXPECT_THROW(io::named_colouring(io::summarise(io::Dataset{}), "x"), Error);
+}
+
+TEST(NaturalField, StepsShareTheRangeOfEveryStep) {
+  io::Dataset first = plant(), last = plant();
+  first.point_fields["branch_order"] = {1, {0, 0, 0, 0}};
+  last.point_fields["branch_order"] = {1, {0, 0, 3, 4}};
+  const std::vector<io::Dataset> steps{first, last};
+  io::Colouring c = io::steps_colouring(steps);
+  EXPECT_EQ(c.field, "branch_order");
+  EXPECT_EQ(c.min, 0);
+  EXPECT_EQ(c.max, 4);
+  last.point_fields["arclength"] = {1, {0, 1, 0, 2}};
+  first.point_fields["arclength"] = {1, {0, 5, 0, 1}};
+  const std::vector<io::Dataset> again{first, last};
+  c = io::steps_colouring(again, "arclength");
+  EXPECT_EQ(c.max, 5);  // an earlier step's larger value widens the range
+}

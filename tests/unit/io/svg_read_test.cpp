@@ -251,3 +251,19 @@ TEST(SvgRead, IllustratorEntityNamespacesDoNotStopTheFile) {
   ASSERT_EQ(d.points.size(), 2u);
   EXPECT_EQ(d.points[1], (std::array<double, 3>{1, 2, 0}));
 }
+
+// Each path's colour is read into the cell field `color` (red, green, blue in [0, 1]): its stroke as set on
+// it or inherited from a group, a style declaration winning over the attribute; a stroke of none gives its
+// fill; neither gives SVG's black.
+TEST(SvgRead, StrokeColoursPerPath) {
+  TempDir dir;
+  const io::Dataset d = read_text(
+      dir, in_flip("<g stroke=\"#ff0000\"><path d=\"M0 0 L1 0\"/><path stroke=\"blue\" d=\"M0 1 L1 1 M0 2 L1 2\"/>"
+                   "<path stroke=\"red\" style=\"stroke: #00ff00\" d=\"M0 3 L1 3\"/></g>"
+                   "<path stroke=\"none\" fill=\"#ffff00\" d=\"M0 4 L1 4\"/><path d=\"M0 5 L1 5\"/>"));
+  ASSERT_EQ(d.cell_ends.size(), 6u);
+  const auto c = d.cell_fields.find("color");
+  ASSERT_NE(c, d.cell_fields.end());
+  EXPECT_EQ(c->second.components, 3);
+  EXPECT_EQ(c->second.values, (std::vector<double>{1, 0, 0, 0, 0, 1, 0, 0, 1, 0, 1, 0, 1, 1, 0, 0, 0, 0}));
+}

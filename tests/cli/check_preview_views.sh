@@ -1,0 +1,109 @@
+#!/bin/bash
+# selfsim preview SELFSIM SRC: 3D as it is and growth as growth, measured from the pixels
+# (tests/cli/preview_pixels.py). ABOP's Figure 2.6 tree (examples/lsystem_tree3d.lua) stands upright in the
+# front view with a trunk as wide as its `width` says; --up turns it; --field picks the colouring and a name
+# not there is one line naming what the file holds; an SVG keeps its stroke colours; a series drawn with
+# --steps has one camera and one legend at every step (step 1's drawing lies where step 2 draws it), an APNG
+# of one frame per step and a filmstrip; the plain preview of a series is its last step in that camera.
+# Skips (77) when there is no Xvfb or no VTK Python to measure with.
+selfsim=$1
+src=$2
+source "$src/tests/robustness/lib.sh"
+command -v Xvfb >/dev/null || { echo "skipped: no Xvfb"; exit 77; }
+python=$("$src/tests/viewer/vtk_python.sh") || { echo "skipped: no VTK Python"; exit 77; }
+pixels() { $python "$src/tests/cli/preview_pixels.py" "$@"; }  # unquoted: it may be "env PYTHONPATH=..."
+fails() { ! "$@" >/dev/null 2>&1; }  # fails COMMAND...: the command fails
+preview() { env -u DISPLAY "$selfsim" preview "$@" >"$tmp/out" 2>"$tmp/err"; code=$?; }
+
+# ABOP Fig. 2.6 at a small level: upright, its trunk the widest (width 10 of the tips' 10*0.707^5).
+"$selfsim" run "$src/examples/lsystem_tree3d.lua" --set level=6 -o "$tmp/tree" -q 2>"$tmp/run_err"
+check "tree recipe runs ($(head -1 "$tmp/run_err"))" test -s "$tmp/tree/lsystem_tree3d.vtp"
+tree=$tmp/tree/lsystem_tree3d.vtp
+preview "$tree" -o "$tmp/up"
+check "tree: exit 0 ($(head -1 "$tmp/err"))" test "$code" = 0
+check "tree: 1200x600" grep -q "(1200x600)" "$tmp/out"
+check "tree: upright in the front view, a wide trunk in the middle" pixels upright "$tmp/up/lsystem_tree3d.png" 8
+preview "$tree" -o "$tmp/side" --up z
+check "--up z: the tree seen along its axis is not upright" fails pixels upright "$tmp/side/lsystem_tree3d.png"
+preview "$tree" -o "$tmp/yup" --up y
+check "--up y: the same as the tree's own up" pixels same_views "$tmp/up/lsystem_tree3d.png" "$tmp/yup/lsystem_tree3d.png"
+
+# The colouring: branch_order by default (the same picture as asking for it), another with --field.
+preview "$tree" -o "$tmp/order" --field branch_order
+check "--field branch_order: exit 0" test "$code" = 0
+check "default colouring is branch_order" cmp -s "$tmp/up/lsystem_tree3d.png" "$tmp/order/lsystem_tree3d.png"
+preview "$tree" -o "$tmp/level" --field level
+check "--field level: another picture" pixels differ "$tmp/up/lsystem_tree3d.png" "$tmp/level/lsystem_tree3d.png"
+preview "$tree" -o "$tmp/bad" --field nosuch
+check "--field nosuch: exit 1" test "$code" = 1
+check "--field nosuch: one line" test "$(wc -l <"$tmp/err")" = 1
+check "--field nosuch: names the file and its fields ($(head -1 "$tmp/err"))" grep -q \
+  "^selfsim preview: cannot preview '$tree': --field: no field named 'nosuch'; it holds .*branch_order.*width" "$tmp/err"
+check "--field nosuch: no PNG" test ! -e "$tmp/bad/lsystem_tree3d.png"
+run_selfsim preview "$tree" --field
+check "--field without a name: usage exit 2" test "$code" = 2
+run_selfsim preview "$tree" --up w
+check "--up w: usage exit 2" test "$code" = 2
+check "--up w: says what it takes" grep -q "^selfsim: --up expects x, y or z, got 'w'" "$tmp/err"
+
+# An SVG's own stroke colours, set on a group and in a style attribute.
+cat >"$tmp/two.svg" <<'SVG'
+<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100"><g stroke="#ff0000" fill="none"
+><path d="M10 10 L90 90"/></g><path style="fill:none; stroke: blue" d="M10 90 L90 10"/></svg>
+SVG
+preview "$tmp/two.svg" -o "$tmp/svg"
+check "svg: exit 0 ($(head -1 "$tmp/err"))" test "$code" = 0
+check "svg: its red stroke" pixels colour "$tmp/svg/two.png" 255 0 0
+check "svg: its blue stroke" pixels colour "$tmp/svg/two.png" 0 0 255
+preview "$tmp/two.svg" -o "$tmp/svg_bad" --field color
+check "svg --field color (3 components): exit 1, one line" test "$code" = 1 -a "$(wc -l <"$tmp/err")" = 1
+check "svg --field color: says why" grep -q "'color' has 3 components" "$tmp/err"
+
+# A growing 3D series: step 2 holds step 1 and a branch; `age` grows only in step 2. Written by hand so
+# that step 1's geometry is exactly inside step 2's.
+vtp() {  # vtp FILE POINTS AGES CONNECTIVITY OFFSETS NPOINTS NLINES
+  cat >"$1" <<XML
+<?xml version="1.0"?>
+<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian">
+<PolyData><Piece NumberOfPoints="$6" NumberOfVerts="0" NumberOfLines="$7" NumberOfStrips="0" NumberOfPolys="0">
+<PointData><DataArray type="Float64" Name="age" format="ascii">$3</DataArray></PointData>
+<Points><DataArray type="Float64" NumberOfComponents="3" format="ascii">$2</DataArray></Points>
+<Lines><DataArray type="Int64" Name="connectivity" format="ascii">$4</DataArray>
+<DataArray type="Int64" Name="offsets" format="ascii">$5</DataArray></Lines>
+</Piece></PolyData></VTKFile>
+XML
+}
+mkdir -p "$tmp/g/growth"
+vtp "$tmp/g/growth/s1.vtp" "0 0 0  0 1 0.3  0.2 1.5 0.5" "0 0 0" "0 1 2" "3" 3 1
+vtp "$tmp/g/growth/s2.vtp" "0 0 0  0 1 0.3  0.2 1.5 0.5  0 1 0.3  1 2 1" "0 0 0 1 2" "0 1 2 3 4" "3 5" 5 2
+cat >"$tmp/g/growth.pvd" <<'PVD'
+<?xml version="1.0"?>
+<VTKFile type="Collection" version="0.1"><Collection>
+<DataSet timestep="1" file="growth/s1.vtp"/><DataSet timestep="2" file="growth/s2.vtp"/>
+</Collection></VTKFile>
+PVD
+preview "$tmp/g/growth.pvd" --steps -o "$tmp/steps"
+check "series --steps: exit 0 ($(head -1 "$tmp/err"))" test "$code" = 0
+check "series --steps: three lines" test "$(grep -c '^wrote ' "$tmp/out")" = 3
+check "series --steps: the filmstrip" grep -q "^wrote $tmp/steps/growth.steps.png (.*, 2 steps)" "$tmp/out"
+check "series --steps: the animation" grep -q "^wrote $tmp/steps/growth.apng (1200x600, 2 frames)" "$tmp/out"
+check "series --steps: the still" grep -q "^wrote $tmp/steps/growth.png (1200x600, the last of 2 steps)" "$tmp/out"
+frames=$(pixels frames "$tmp/steps/growth.apng" "$tmp/frames")
+check "APNG: valid, acTL says 2 frames ($frames)" test "$frames" = 2
+check "steps share one camera and one legend" pixels same_camera "$tmp/frames/frame_0.png" "$tmp/frames/frame_1.png"
+check "the still is the last step in the series' camera" pixels same_views "$tmp/steps/growth.png" \
+  "$tmp/frames/frame_1.png"
+preview "$tmp/g/growth.pvd" -o "$tmp/plain"
+check "series without --steps: the still alone" test "$(grep -c '^wrote ' "$tmp/out")" = 1 -a \
+  ! -e "$tmp/plain/growth.apng" -a ! -e "$tmp/plain/growth.steps.png"
+check "series without --steps: the same still" cmp -s "$tmp/plain/growth.png" "$tmp/steps/growth.png"
+# Each step alone is fitted to itself: step 1 is then not where step 2 draws it (what --steps avoids).
+preview "$tmp/g/growth/s1.vtp" -o "$tmp/alone"
+check "a step alone has a camera of its own" fails pixels same_camera "$tmp/alone/s1.png" "$tmp/frames/frame_1.png"
+# A series whose step is missing: one line naming it, nothing written.
+sed 's/s1.vtp/gone.vtp/' "$tmp/g/growth.pvd" >"$tmp/g/broken.pvd"
+preview "$tmp/g/broken.pvd" --steps -o "$tmp/broken"
+check "missing step: exit 1, one line ($(head -1 "$tmp/err"))" test "$code" = 1 -a "$(wc -l <"$tmp/err")" = 1
+check "missing step: names it" grep -q "cannot read '$tmp/g/growth/gone.vtp'" "$tmp/err"
+check "missing step: nothing written" test ! -e "$tmp/broken"
+finish
