@@ -85,14 +85,18 @@ void write_view(const std::filesystem::path& root, const std::string& file, cons
     }
     std::optional<io::Dataset> only;
     int up = 1;
+    bool own = false;  // the last step's own colours, drawn as they are (as the preview draws them)
     for (const std::filesystem::path& s : steps) {
       io::Dataset d = read_below(root, s, limits);
       summaries.push_back(io::summarise(d));
       widen(bounds, d);
-      if (&s == &steps.back()) up = io::up_axis(d);  // the grown result's up, as the preview takes it
+      if (&s == &steps.back()) {  // the grown result's up and colours, as the preview takes them
+        up = io::up_axis(d);
+        own = io::has_own_colours(d);
+      }
       if (steps.size() == 1) only = std::move(d);
     }
-    const io::Colouring colouring = io::summaries_colouring(summaries);
+    const io::Colouring colouring = own ? io::Colouring{} : io::summaries_colouring(summaries);
     std::string names, urls;
     for (std::size_t i = 0; i < steps.size(); ++i) {
       const io::Dataset d = only ? std::move(*only) : read_below(root, steps[i], limits);
@@ -108,7 +112,7 @@ void write_view(const std::filesystem::path& root, const std::string& file, cons
       names += std::string(i ? ", " : "") + io::json_string(steps[i].string());
     }
     index = "{\"steps\": [" + urls + "], \"names\": [" + names + "], \"bounds\": " + bounds_json(bounds) +
-            ", \"up\": " + std::to_string(up) + ", \"legend\": " + io::colouring_json(colouring) + "}\n";
+            ", \"up\": " + std::to_string(up) + ", \"legend\": " + io::colouring_json(colouring, own) + "}\n";
   } catch (const std::bad_alloc&) {
     index = "{\"error\": " +
             io::json_string("'" + io::one_line(file) + "' needs more memory for its 3D view than --max-memory allows") +

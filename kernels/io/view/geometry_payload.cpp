@@ -45,20 +45,22 @@ struct Painted {
 
 Painted paint(const Dataset& d, const Colouring& c, Progress& progress) {
   Painted p;
-  const std::size_t count = c.on_points ? d.points.size() : d.cell_ends.size();
-  const auto& fields = c.on_points ? d.point_fields : d.cell_fields;
-  const auto f = c.field.empty() ? fields.end() : fields.find(c.field);
-  if (f == fields.end() || f->second.components != 1 || f->second.values.size() != count) {
+  const bool own = c.field.empty() && has_own_colours(d);
+  const std::size_t count = c.on_points && !own ? d.points.size() : d.cell_ends.size();
+  const auto& fields = c.on_points && !own ? d.point_fields : d.cell_fields;
+  const auto f = own ? fields.find("color") : c.field.empty() ? fields.end() : fields.find(c.field);
+  if (!own && (f == fields.end() || f->second.components != 1 || f->second.values.size() != count)) {
     p.palette.push_back(value_colour(Colouring{}, 0));
     return p;
   }
-  p.on_cells = !c.on_points;
+  p.on_cells = own || !c.on_points;
   p.index.resize(count);
   // Distinct colours by their packed RGB: a class field has a few, a ramp at most 2^24.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> seen;  // (rgb, index), sorted by rgb
   for (std::size_t i = 0; i < count; ++i) {
     if ((i & 0xfffff) == 0xfffff && progress.cancelled()) throw Cancelled();
-    const auto rgb = value_colour(c, f->second.values[i]);
+    const std::vector<double>& v = f->second.values;
+    const auto rgb = own ? bytes_of({v[3 * i], v[3 * i + 1], v[3 * i + 2]}) : value_colour(c, v[i]);
     const std::uint32_t key = (std::uint32_t{rgb[0]} << 16) | (std::uint32_t{rgb[1]} << 8) | rgb[2];
     auto at = std::lower_bound(seen.begin(), seen.end(), std::make_pair(key, std::uint32_t{0}));
     if (at == seen.end() || at->first != key) {
@@ -95,7 +97,13 @@ Colouring summaries_colouring(std::span<const std::vector<FieldSummary>> steps) 
   return c;
 }
 
-std::string colouring_json(const Colouring& c) {
+bool has_own_colours(const Dataset& d) {
+  if (d.shapes != CellShapes::lines) return false;
+  const auto f = d.cell_fields.find("color");
+  return f != d.cell_fields.end() && f->second.components == 3 && f->second.values.size() == 3 * d.cell_ends.size();
+}
+
+std::string colouring_json(const Colouring& c, bool own) {
   std::vector<Rgb> ramp, classes;
   for (int i = 0; i <= 8; ++i) ramp.push_back(ramp_colour(i / 8.0));
   std::string values;
@@ -105,10 +113,10 @@ std::string colouring_json(const Colouring& c) {
       values += (i ? ", " : "") + std::to_string(c.categories[i]);
     }
   const auto number = [](double v) { return std::isfinite(v) ? json_number(v) : std::string("0"); };
-  return "{\"field\": " + json_string(c.field) + ", \"on\": \"" + (c.on_points ? "points" : "cells") +
-         "\", \"categorical\": " + (c.categorical ? "true" : "false") + ", \"min\": " + number(c.min) +
-         ", \"max\": " + number(c.max) + ", \"ramp\": " + hex_list(ramp) + ", \"classes\": [" + values +
-         "], \"colours\": " + hex_list(classes) + "}";
+  return "{\"field\": " + json_string(c.field) + ", \"own\": " + (own ? "true" : "false") + ", \"on\": \"" +
+         (c.on_points ? "points" : "cells") + "\", \"categorical\": " + (c.categorical ? "true" : "false") +
+         ", \"min\": " + number(c.min) + ", \"max\": " + number(c.max) + ", \"ramp\": " + hex_list(ramp) +
+         ", \"classes\": [" + values + "], \"colours\": " + hex_list(classes) + "}";
 }
 
 std::array<std::uint8_t, 3> value_colour(const Colouring& c, double v) {
@@ -210,7 +218,7 @@ std::string geometry_payload(const Dataset& d, const Colouring& c, std::uint64_t
                        ", \"origin\": [" + json_number(origin[0]) + ", " + json_number(origin[1]) + ", " +
                        json_number(origin[2]) + "], \"bounds\": [";
   for (int j = 0; j < 6; ++j) header += (j ? ", " : "") + json_number(bounds[j]);
-  header += "], \"legend\": " + colouring_json(c) + "}";
+  header += "], \"legend\": " + colouring_json(c, c.field.empty() && has_own_colours(d)) + "}";
   header.append((4 - header.size() % 4) % 4, ' ');
 
   std::string out;

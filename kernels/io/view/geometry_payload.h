@@ -31,17 +31,23 @@ namespace selfsim::io {
 // mean the same at every step (series_colouring's rule).
 Colouring summaries_colouring(std::span<const std::vector<FieldSummary>> steps);
 
-// The legend the page draws, as JSON: {"field": NAME or "", "on": "points" or "cells", "categorical": B,
-// "min": A, "max": B, "ramp": [9 colours "#rrggbb" from min to max], "classes": [values],
-// "colours": [one "#rrggbb" per class]} (classes and colours empty for a continuous field).
-std::string colouring_json(const Colouring& c);
+// A curve's own colours: a cell field `color` of three components (red, green, blue in [0, 1]: an SVG's
+// strokes read back), one per cell, in a dataset of lines alone. The preview draws them as they are when no
+// field is asked for, and so does the view (with no colouring field).
+bool has_own_colours(const Dataset& d);
+
+// The legend the page draws, as JSON: {"field": NAME or "", "own": B (the cells' own colours),
+// "on": "points" or "cells", "categorical": B, "min": A, "max": B, "ramp": [9 colours "#rrggbb" from min to
+// max], "classes": [values], "colours": [one "#rrggbb" per class]} (classes and colours empty for a
+// continuous field).
+std::string colouring_json(const Colouring& c, bool own = false);
 
 // The colour of a value under c (no field: the preview's one solid colour; a value not finite or no class
 // of c: grey), as 0-255 RGB.
 std::array<std::uint8_t, 3> value_colour(const Colouring& c, double v);
 
 // The payload bytes of d coloured by c (a field d lacks, or holds with a count that does not match, draws in
-// the solid colour). Polygons are split into triangles (a fan),
+// the solid colour; no field, by its own colours when it has them). Polygons are split into triangles (a fan),
 // polylines into segments. Throws Error when a point is not finite, or when the payload would pass
 // max_bytes (naming its size and the limit); Cancelled when progress says stop.
 std::string geometry_payload(const Dataset& d, const Colouring& c, std::uint64_t max_bytes,

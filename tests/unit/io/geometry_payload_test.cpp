@@ -156,3 +156,21 @@ TEST(GeometryPayload, StepsShareOneRangeAndTheLastStepsField) {
   const Decoded p = decode(io::geometry_payload(a, c, 1 << 20));
   EXPECT_EQ(colour_of(p, p.indices[3]), rgb(io::ramp_colour(0.2)));
 }
+
+TEST(GeometryPayload, ACurvesOwnColoursAreDrawnAsTheyAre) {
+  io::Dataset d;
+  d.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 1}};
+  d.cell_ends = {3, 4};
+  d.cell_points = {0, 1, 2, 3};
+  d.cell_fields["color"] = {3, {1, 0, 0, 0, 0, 1}};  // red, then blue
+  ASSERT_TRUE(io::has_own_colours(d));
+  const Decoded p = decode(io::geometry_payload(d, {}, 1 << 20));
+  EXPECT_EQ(p.segments, 2u);
+  EXPECT_EQ(colour_of(p, p.indices[0]), (std::array<std::uint8_t, 3>{255, 0, 0}));
+  EXPECT_EQ(colour_of(p, p.indices[2]), (std::array<std::uint8_t, 3>{255, 0, 0}));
+  EXPECT_NE(p.header.find("\"own\": true"), std::string::npos) << p.header;
+  // A field asked for wins over them; a surface has none (the preview draws only a curve's).
+  EXPECT_EQ(io::geometry_payload(d, {"t", true, false, 0, 1, {}}, 1 << 20).find("\"own\": true"), std::string::npos);
+  d.shapes = io::CellShapes::polygons;
+  EXPECT_FALSE(io::has_own_colours(d));
+}
