@@ -8,10 +8,10 @@ local level = param("level", 5)
 local bushes = {}
 for i, seed in ipairs { 1, 2, 3 } do
   local bush = lsystem {
-    axiom = "F", angle = 25.7, start_angle = 90, seed = seed,
+    axiom = "F", angle = 25.7, seed = seed,
     rules = { F = { { 1, "F[+F]F[-F]F" }, { 1, "F[+F]F" }, { 1, "F[-F]F" } } },
   }
-  bushes[i] = { bush:curve { level = level, normalize = false }, stroke = "#2d6a4f" }
+  bushes[i] = { bush:curve(level), stroke = "#2d6a4f" } -- upright, in unit steps
 end
 local s = sheet.grid(bushes, { columns = 3 })
 save(s, "lsystem_bush.svg", { stroke_width = 0.6 })

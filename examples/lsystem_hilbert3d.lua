@@ -11,4 +11,4 @@ local hilbert = lsystem {
     D = "|CFB-F+B|FA&F^A&&FB-F+B|FC//",
   },
 }
-save(hilbert:curve { level = level, normalize = false }, "lsystem_hilbert3d.vtp")
+save(hilbert:curve(level), "lsystem_hilbert3d.vtp") -- 3D: kept on its lattice, heading +y

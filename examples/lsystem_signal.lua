@@ -4,7 +4,7 @@
 --   selfsim run examples/lsystem_signal.lua --set level=30
 local level = param("level", 24)
 local plant = lsystem {
-  axiom = "F1F1F1", angle = 22.5, start_angle = 90, ignore = "+-F",
+  axiom = "F1F1F1", angle = 22.5, ignore = "+-F",
   rules = [[
     0 < 0 > 0 -> 0
     0 < 0 > 1 -> 1[+F1F1]
@@ -18,6 +18,6 @@ local plant = lsystem {
     - -> +
   ]],
 }
-local c = plant:curve { level = level, normalize = false }
+local c = plant:curve(level) -- a plant: upright, in unit steps
 save(c, "lsystem_signal.svg", { stroke = "#1d3557" })
 save(c, "lsystem_signal.vtp")

@@ -6,6 +6,6 @@ local plant = lsystem {
   rules = { X = "F+[[X]-X]-F[-FX]+X", F = "FF" },
   angle = 25, start_angle = 70,
 }
-local c = plant:curve { level = level, normalize = false }
+local c = plant:curve(level) -- a plant: kept as the turtle draws it, leaning at start_angle
 save(c, "plant.vtp")
 save(c, "plant.svg", { stroke = "#2d6a4f" })

@@ -189,8 +189,9 @@ function Mesh:levels() end
 ---@class selfsim.Grammar
 local Grammar = {}
 
----The turtle's curve at a level: a Curve, or a Curve3 for the 3D turtle. An open curve is normalised to
----run from (0,0) to (1,0) unless normalize = false.
+---The turtle's curve at a level: a Curve, or a Curve3 for the 3D turtle. A plant (a grammar that branches
+---or draws in 3D) stays as the turtle draws it, from the origin heading up (+y); other open curves are
+---normalised to run from (0,0) to (1,0). normalize, when given, decides instead.
 ---@param options integer|selfsim.TurtleOptions the level, or { level = n, normalize = true }
 ---@return selfsim.Curve|selfsim.Curve3
 function Grammar:curve(options) end
@@ -268,7 +269,7 @@ function Volume:boundary(options) end
 
 ---@class selfsim.TurtleOptions
 ---@field level integer the rewriting level
----@field normalize? boolean map an open curve onto (0,0)-(1,0) (true)
+---@field normalize? boolean map an open curve onto (0,0)-(1,0) (default: true, false for a plant)
 
 ---@class selfsim.TransformOptions
 ---@field mirror? boolean mirror across the x axis first (false)
