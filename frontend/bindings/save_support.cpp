@@ -16,6 +16,7 @@
 #include "kernels/base/lower_case.h"
 #include "kernels/io/provenance/provenance.h"
 #include "kernels/io/view/natural_field.h"
+#include "kernels/io/view/up_axis.h"
 
 namespace selfsim::interp {
 
@@ -189,6 +190,7 @@ void record_view(lua_State* L, const std::string& name, io::ViewRole role, std::
   d.role = role;
   d.series = series;
   d.flat = std::all_of(steps.begin(), steps.end(), flat);
+  if (!steps.empty()) d.up = io::up_axis(steps.back());  // the grown result's up, as preview takes it
   if (role != io::ViewRole::region) d.colouring = io::series_colouring(steps, RunContext::of(L));
   RunContext::of(L).view_datasets.push_back(std::move(d));
 }

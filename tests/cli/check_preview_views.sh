@@ -1,7 +1,7 @@
 #!/bin/bash
 # selfsim preview SELFSIM SRC: 3D as it is and growth as growth, measured from the pixels
 # (tests/cli/preview_pixels.py). ABOP's Figure 2.6 tree (examples/lsystem_tree3d.lua) stands upright in the
-# front view with a trunk as wide as its `width` says; --up turns it; --field picks the colouring and a name
+# front view with a trunk as wide as its `width` says, and so does the run's ParaView view; --up turns it; --field picks the colouring and a name
 # not there is one line naming what the file holds; an SVG keeps its stroke colours; a series drawn with
 # --steps has one camera and one legend at every step (step 1's drawing lies where step 2 draws it), an APNG
 # of one frame per step and a filmstrip; the plain preview of a series is its last step in that camera.
@@ -27,6 +27,13 @@ preview "$tree" -o "$tmp/side" --up z
 check "--up z: the tree seen along its axis is not upright" fails pixels upright "$tmp/side/lsystem_tree3d.png"
 preview "$tree" -o "$tmp/yup" --up y
 check "--up y: the same as the tree's own up" pixels same_views "$tmp/up/lsystem_tree3d.png" "$tmp/yup/lsystem_tree3d.png"
+
+# The run's ParaView view agrees: upright, when pvbatch is there to render it.
+if command -v pvbatch >/dev/null 2>&1; then
+  check "view.py: the tree's up axis" grep -q '"up": 1' "$tmp/tree/view.py"
+  check "view.py renders" "$src/tests/viewer/check_view.sh" "$tmp/tree/view.py" "$tmp/tree/view.png"
+  check "view.py: upright" pixels upright_view "$tmp/tree/view.png"
+fi
 
 # The colouring: branch_order by default (the same picture as asking for it), another with --field.
 preview "$tree" -o "$tmp/order" --field branch_order

@@ -4,6 +4,7 @@ that imports VTK (tests/viewer/vtk_python.sh): its PNG reader and numpy.
   upright PNG [W]         the front view (left half, between the title and legend strips) of a 3D preview
                           holds a drawing taller than wide whose bottom rows (the trunk) sit in its middle
                           and run straight up for a sixth of its height, alone (and at least W pixels wide)
+  upright_view PNG        the same for the picture of a run's ParaView view (pvbatch view.py --png)
   frames APNG DIR         checks the APNG's chunks and writes each frame as DIR/frame_N.png; prints the count
   same_camera A B         every pixel A's views draw is drawn in B too (A's drawing lies inside B's, as a
                           step inside a later step does), and A's legend strip is B's
@@ -52,9 +53,9 @@ def h_of(a):
     return a.shape[0]
 
 
-def upright(path, trunk_width="0"):
+def upright(path, trunk_width="0", region=None):
     a = pixels(path)
-    front = drawn(views(a)[:, :a.shape[1] // 2])
+    front = drawn(views(a)[:, :a.shape[1] // 2]) if region is None else region(a)
     rows = front.any(axis=1).nonzero()[0]
     cols = front.any(axis=0).nonzero()[0]
     if len(rows) == 0:
@@ -82,6 +83,12 @@ def upright(path, trunk_width="0"):
     if xs[-1] - xs[0] + 1 < int(trunk_width):
         sys.exit(f"{path}: the trunk is {xs[-1] - xs[0] + 1} pixels wide, expected at least {trunk_width}")
     print(f"upright: {width}x{height}, trunk {xs[-1] - xs[0] + 1} wide at {centre:.0f} of {cols[0]}..{cols[-1]}")
+
+
+def upright_view(path):
+    """A ParaView view.py's picture (pvbatch, one view): the drawing between the orientation axes at the
+    left and the scalar bar at the right."""
+    upright(path, "0", lambda a: drawn(a[:, int(a.shape[1] * 0.15):int(a.shape[1] * 0.85)]))
 
 
 def chunks(data):
@@ -174,6 +181,6 @@ def colour(path, r, g, b):
         sys.exit(f"{path}: {near} pixels near ({r}, {g}, {b})")
 
 
-commands = {"upright": upright, "frames": frames, "same_camera": same_camera, "same_views": same_views,
+commands = {"upright": upright, "upright_view": upright_view, "frames": frames, "same_camera": same_camera, "same_views": same_views,
             "differ": differ, "colour": colour}
 commands[sys.argv[1]](*sys.argv[2:])

@@ -49,7 +49,7 @@ std::string dataset_text(const ViewDataset& d) {
   std::string s =
       "        {\"file\": " + python_string(d.file) + ", \"name\": " + python_string(d.name) + ", \"role\": \"" +
       role_name(d.role) + "\", \"series\": " + (d.series ? "True" : "False") +
-      ", \"flat\": " + (d.flat ? "True" : "False") +
+      ", \"flat\": " + (d.flat ? "True" : "False") + ", \"up\": " + std::to_string(d.up >= 0 && d.up <= 2 ? d.up : 1) +
       ",\n         \"field\": " + (c.field.empty() ? "None" : python_string(c.field)) + ", \"association\": \"" +
       (c.on_points ? "POINTS" : "CELLS") + "\", \"categorical\": " + (c.categorical ? "True" : "False") +
       ", \"range\": " +

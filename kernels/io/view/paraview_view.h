@@ -1,6 +1,8 @@
 // A ParaView view of a run's VTK outputs, written beside them as view.py: `paraview --script=view.py` opens
 // every dataset coloured by its natural field (natural_field.h), class fields in categorical colours, a
-// region's walls see-through, the camera fitted and time series wired to the animation; `pvbatch view.py
+// region's walls see-through, a curve with a point field `width` as tubes of radius proportional to it, 3D
+// seen as the preview's oblique view with its up axis up (up_axis.h), the camera fitted and time series wired
+// to the animation; `pvbatch view.py
 // --png view.png` renders the same picture without a window. A Python script through paraview.simple
 // rather than a .pvsm state: paraview.simple's calls have stayed the same across ParaView 5.x, while a
 // state file spells out every proxy's XML, which changes from version to version.
@@ -22,6 +24,7 @@ struct ViewDataset {
   ViewRole role = ViewRole::curve;
   bool series = false;
   bool flat = true;  // every point at z = 0
+  int up = 1;        // the axis drawn up in 3D (up_axis.h): 0, 1, 2 for x, y, z
   Colouring colouring;
 };
 

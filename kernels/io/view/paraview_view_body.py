@@ -9,14 +9,19 @@ import math
 import os
 import sys
 
-from paraview.simple import (AssignViewToLayout, ColorBy, CreateLayout, CreateView, GetActiveViewOrCreate,
-                             GetAnimationScene, GetColorTransferFunction, GetLayout, GetOpacityTransferFunction,
-                             GetScalarBar, OpenDataFile, Render, RenameSource, SaveScreenshot, Show)
+from paraview.simple import (AssignViewToLayout, Calculator, ColorBy, CreateLayout, CreateView,
+                             GetActiveViewOrCreate, GetAnimationScene, GetColorTransferFunction, GetLayout,
+                             GetOpacityTransferFunction, GetScalarBar, OpenDataFile, Render, RenameSource,
+                             SaveScreenshot, Show, Tube)
 
 BACKGROUND = [1.0, 1.0, 1.0]
 TEXT = [0.12, 0.12, 0.15]            # dark text: ParaView's default white labels vanish on a white background
 REGION_COLOUR = [0.62, 0.74, 0.86]   # pale blue, drawn see-through so what grew inside shows
 SOLID_COLOURS = [[0.25, 0.40, 0.65], [0.80, 0.45, 0.20], [0.30, 0.60, 0.35], [0.55, 0.35, 0.60]]
+# The frame a 3D drawing stands in, by its up axis (the dataset's "up", kernels/io/view/up_axis.h): right,
+# up, and back (towards the front view's eye), as selfsim preview's views use them.
+FRAMES = {0: ([0, 1, 0], [1, 0, 0], [0, 0, -1]), 1: ([1, 0, 0], [0, 1, 0], [0, 0, 1]),
+          2: ([1, 0, 0], [0, 0, 1], [0, -1, 0])}
 
 
 def view_folder():
@@ -167,8 +172,32 @@ def scenes_of(datasets, bounds):
     return scenes
 
 
-def show_dataset(d, reader, view, bar_index, bar_count, solid, named):
+def with_tubes(reader, bounds):
+    """A curve with a point field `width` (a grammar's '!') as tubes of radius proportional to it, the widest
+    1.2% of the drawing's diagonal (as selfsim preview draws it); other sources as they are."""
+    if "width" not in reader.PointData.keys():
+        return reader
+    low, high = reader.PointData["width"].GetRange()
+    widest = max(abs(low), abs(high))
+    diagonal = math.sqrt(sum((bounds[2 * a + 1] - bounds[2 * a]) ** 2 for a in range(3)))
+    if not widest > 0 or not diagonal > 0:
+        return reader
+    radius = Calculator(Input=reader)
+    radius.AttributeType = "Point Data"
+    radius.ResultArrayName = "tube_radius"
+    radius.Function = "abs(width)*%.17g" % (0.012 * diagonal / widest)
+    tubes = Tube(Input=radius)
+    tubes.Scalars = ["POINTS", "tube_radius"]
+    tubes.VaryRadius = "By Absolute Scalar"
+    tubes.NumberofSides = 8
+    tubes.Capping = 1
+    return tubes
+
+
+def show_dataset(d, reader, view, bar_index, bar_count, solid, named, bounds):
     """Shows one dataset in a view, coloured as its header says; returns whether it drew a scalar bar."""
+    if d["role"] == "curve":
+        reader = with_tubes(reader, bounds)
     display = Show(reader, view)
     display.Representation = "Surface"
     if d["role"] == "region":
@@ -224,7 +253,7 @@ def fit_flat(view, bounds, below):
     view.CameraParallelScale = half
 
 
-def place_camera(view, flat, bounds, below):
+def place_camera(view, flat, bounds, below, up=1):
     if flat:
         # Everything lies in z = 0: look straight down, without perspective, and keep the GUI's mouse from
         # tilting it out of the plane.
@@ -235,11 +264,13 @@ def place_camera(view, flat, bounds, below):
         view.CameraParallelProjection = 1
         view.OrientationAxesVisibility = 0
     else:
-        # An oblique view from the front right and above, z up: depth reads without hiding the top.
+        # The preview's oblique view, from the front right and above with the dataset's up axis up (+y for a
+        # plant, the axis a growth's level follows): depth reads without hiding the top.
+        right, upward, back = FRAMES.get(up, FRAMES[1])
         view.InteractionMode = "3D"
-        view.CameraPosition = [1.0, -1.4, 0.9]
+        view.CameraPosition = [back[a] + 0.8 * right[a] + 0.55 * upward[a] for a in range(3)]
         view.CameraFocalPoint = [0.0, 0.0, 0.0]
-        view.CameraViewUp = [0.0, 0.0, 1.0]
+        view.CameraViewUp = upward
         view.CameraParallelProjection = 0
         view.OrientationAxesVisibility = 1
     # Keep that direction, move and zoom to fit what is shown at the current (last) time.
@@ -309,16 +340,18 @@ def main():
         bars = 0
         for k, i in enumerate(scene):
             # With several views, each bar names its dataset: the views do not say what they show.
-            bars += show_dataset(datasets[i], readers[i], view, bars, len(coloured), k, len(scenes) > 1)
-        shown.append((view, all(datasets[i]["flat"] for i in scene), union([bounds[i] for i in scene])))
+            bars += show_dataset(datasets[i], readers[i], view, bars, len(coloured), k, len(scenes) > 1, bounds[i])
+        ups = [datasets[i].get("up", 1) for i in scene if datasets[i]["role"] != "region"]
+        shown.append((view, all(datasets[i]["flat"] for i in scene), union([bounds[i] for i in scene]),
+                      ups[0] if ups else 1))
 
     # Time series: the animation (the VCR controls in the GUI) steps through the data's own time steps, and
     # the views open on the last one, the grown result.
     scene = GetAnimationScene()
     scene.UpdateAnimationUsingDataTimeSteps()
     scene.GoToLast()
-    for view, flat, box in shown:
-        place_camera(view, flat, box, len(scenes) > 1)
+    for view, flat, box, up in shown:
+        place_camera(view, flat, box, len(scenes) > 1, up)
         Render(view)
     if png:
         SaveScreenshot(png, layout, ImageResolution=[1200, 800])

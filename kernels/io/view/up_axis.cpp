@@ -1,6 +1,10 @@
 #include "kernels/io/view/up_axis.h"
 
 #include <cmath>
+#include <type_traits>
+#include <variant>
+
+#include "kernels/geom/mesh.h"
 
 namespace selfsim::io {
 
@@ -18,6 +22,18 @@ struct Sums {
       cc[a] += p[a] * p[a];
       lc[a] += level * p[a];
     }
+  }
+  // The axis the level follows most, at least up_correlation; else y.
+  int axis() const {
+    if (n < 2) return 1;
+    int best = 1;
+    double strongest = up_correlation;
+    for (int a = 0; a < 3; ++a)
+      if (const double r = std::abs(correlation(a)); r >= strongest) {
+        strongest = r;
+        best = a;
+      }
+    return best;
   }
   double correlation(int a) const {
     const double var_l = ll - l * l / n, var_c = cc[a] - c[a] * c[a] / n, cov = lc[a] - l * c[a] / n;
@@ -44,15 +60,34 @@ int up_axis(const Dataset& d) {
         s.add(g->second.values[i], centre);
       }
   }
-  if (s.n < 2) return 1;
-  int best = 1;
-  double strongest = up_correlation;
-  for (int a = 0; a < 3; ++a)
-    if (const double r = std::abs(s.correlation(a)); r >= strongest) {
-      strongest = r;
-      best = a;
-    }
-  return best;
+  return s.axis();
+}
+
+int up_axis(const ValueRef& v) {
+  Sums s;
+  std::visit(
+      [&](const auto* value) {
+        using T = std::decay_t<decltype(*value)>;
+        if constexpr (!std::is_same_v<T, Polyline>) {
+          auto at = [&](std::size_t i) {
+            const Vec3& p = value->points[i];
+            return std::array<double, 3>{p.x, p.y, p.z};
+          };
+          if (const Field* f = value->point_fields.find("level"); f != nullptr && f->components == 1) {
+            for (std::size_t i = 0; i < value->points.size(); ++i) s.add(f->at(i), at(i));
+          } else if constexpr (std::is_same_v<T, Mesh>) {
+            if (const Field* g = value->face_fields.find("level"); g != nullptr && g->components == 1)
+              for (std::size_t i = 0; i < value->triangles.size(); ++i) {
+                std::array<double, 3> centre{0, 0, 0};
+                for (std::size_t k = 0; k < 3; ++k)
+                  for (int a = 0; a < 3; ++a) centre[a] += at(value->triangles[i][k])[a] / 3;
+                s.add(g->at(i), centre);
+              }
+          }
+        }
+      },
+      v);
+  return s.axis();
 }
 
 int axis_from_name(const std::string& name) { return name == "x" ? 0 : name == "y" ? 1 : name == "z" ? 2 : -1; }

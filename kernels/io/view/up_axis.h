@@ -9,6 +9,7 @@
 #include <string>
 
 #include "kernels/io/dataset/dataset.h"
+#include "kernels/io/format.h"
 
 namespace selfsim::io {
 
@@ -19,6 +20,8 @@ inline constexpr double up_correlation = 0.7;
 // 0 (x), 1 (y) or 2 (z): the axis `level` follows (|correlation| at least up_correlation, the largest of
 // the three), else 1. A point field `level` is used before a cell field.
 int up_axis(const Dataset& d);
+// The same for a value about to be saved (the run's ParaView view, paraview_view.h); a 2D curve: 1.
+int up_axis(const ValueRef& v);
 
 // 0, 1 or 2 for "x", "y" or "z"; -1 for anything else.
 int axis_from_name(const std::string& name);

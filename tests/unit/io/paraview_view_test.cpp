@@ -36,9 +36,17 @@ TEST(ParaviewView, NamesEachDatasetWithItsColouring) {
   EXPECT_NE(text.find("\"field\": \"tile_class\", \"association\": \"CELLS\", \"categorical\": True"),
             std::string::npos);
   EXPECT_NE(text.find("\"categories\": [0, 2, 4]"), std::string::npos);
-  EXPECT_NE(text.find("\"role\": \"region\", \"series\": False, \"flat\": False,\n         \"field\": None"),
+  EXPECT_NE(text.find("\"role\": \"region\", \"series\": False, \"flat\": False, \"up\": 1,\n         \"field\": None"),
             std::string::npos);
   EXPECT_NE(text.find("from paraview.simple import"), std::string::npos);  // the body
+}
+
+TEST(ParaviewView, EachDatasetSaysItsUpAxis) {
+  std::vector<io::ViewDataset> ds{dataset("stack.vtp", io::ViewRole::surface, false)};
+  ds[0].up = 2;  // a stack grown along z (up_axis.h)
+  const std::string text = io::paraview_view_text(ds, "/o");
+  EXPECT_NE(text.find("\"flat\": False, \"up\": 2,"), std::string::npos);
+  EXPECT_NE(text.find("def with_tubes("), std::string::npos);  // widths drawn as tubes by the body
 }
 
 TEST(ParaviewView, FlatDatasetsAreMarkedForATopView) {

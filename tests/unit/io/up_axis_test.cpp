@@ -65,3 +65,25 @@ TEST(UpAxis, Names) {
   EXPECT_EQ(io::axis_from_name("z"), 2);
   EXPECT_EQ(io::axis_from_name("w"), -1);
 }
+
+TEST(UpAxis, OfAValueAboutToBeSaved) {
+  Polyline3 c;
+  for (int i = 0; i < 10; ++i) c.points.push_back({double(i), 0.1 * (i % 2), 0});
+  c.path_ends = {c.points.size()};
+  c.point_fields.set(real_field("level", {0, 0, 1, 1, 2, 2, 3, 3, 4, 4}));
+  EXPECT_EQ(io::up_axis(io::ValueRef{&c}), 0);
+  Mesh m;
+  for (int i = 0; i < 4; ++i) {
+    const auto first = static_cast<std::uint32_t>(m.points.size());
+    m.points.push_back({0, 0, double(i)});
+    m.points.push_back({1, 0, double(i)});
+    m.points.push_back({0, 1, double(i)});
+    m.triangles.push_back({first, first + 1, first + 2});
+  }
+  m.face_fields.set(int_field("level", {0, 1, 2, 3}));
+  EXPECT_EQ(io::up_axis(io::ValueRef{&m}), 2);
+  Polyline flat;
+  flat.points = {{0, 0}, {1, 1}};
+  flat.path_ends = {2};
+  EXPECT_EQ(io::up_axis(io::ValueRef{&flat}), 1);
+}
