@@ -194,6 +194,17 @@ try:
     if len(sys.argv) > 2:
         driver.save_screenshot(sys.argv[2])
 
+    # Another run (the slider of its parameter moved): the surface's view is looked at as it was left.
+    turned = driver.execute_script("return window.studio3d.views['surface.vtp'].direction()")
+    before = driver.execute_script("return window.studio3d.views['surface.vtp'].generation")
+    driver.find_element(By.ID, "param-levels").send_keys(Keys.ARROW_LEFT)
+    again = until(lambda: driver.execute_script(
+        "const v = window.studio3d.views['surface.vtp'];"
+        "return v && v.ready && v.generation > arguments[0] ? {d: v.direction()} : null", before))
+    check(again is not None, "the view is drawn again after another run")
+    check(again is not None and max(abs(a - b) for a, b in zip(again["d"], turned)) < 1e-6,
+          "the view keeps the direction it was turned to: %s, then %s" % (turned, again and again["d"]))
+
     # WebGL off: the preview PNGs, and why.
     off = browser(False)
     off.get("http://127.0.0.1:%d/" % port)

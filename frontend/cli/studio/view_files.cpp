@@ -152,6 +152,12 @@ ViewChild::ViewChild(const RunConfig& limits, const std::filesystem::path& root,
     }
     if (limits.timeout > 0)
       ::alarm(static_cast<unsigned>(std::min(4e9, std::ceil(limits.timeout * static_cast<double>(files.size())))));
+    // The last run's indexes go first: a view this child does not finish (stopped by the next run, out of
+    // time) is then no view, shown as its PNG, never the last run's view under this run's name.
+    for (const std::string& f : files) try {
+        io::remove_files(root, view_folder(f), [](const std::string& name) { return name == "index.json"; });
+      } catch (const Error&) {
+      }
     int code = 0;
     for (const std::string& f : files) try {
         write_view(root, f, view_folder(f), limits);
