@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "kernels/geom/all_finite.h"
+#include "kernels/geom/length_fields.h"
 
 namespace selfsim {
 
@@ -67,6 +68,7 @@ template struct PolylineT<Vec3>;
 Polyline transformed(const Polyline& c, const Similarity2& t) {
   Polyline out = c;
   for (Vec2& p : out.points) p = t(p);
+  scale_length_fields(out.point_fields, norm(t.a));
   return out;
 }
 

@@ -52,7 +52,7 @@ using Polyline3 = PolylineT<Vec3>;
 extern template struct PolylineT<Vec2>;
 extern template struct PolylineT<Vec3>;
 
-// c with every point mapped by t (paths and fields kept).
+// c with every point mapped by t (paths and fields kept; length fields scaled with it: length_fields.h).
 Polyline transformed(const Polyline& c, const Similarity2& t);
 
 // True when a path of at least three points ends where it starts, to a billionth of its size: kernels that

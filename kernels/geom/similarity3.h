@@ -70,7 +70,7 @@ struct Similarity3 {
   }
 };
 
-// c with every point mapped by t (paths and fields kept).
+// c with every point mapped by t (paths and fields kept; length fields scaled with it: length_fields.h).
 Polyline3 transformed(const Polyline3& c, const Similarity3& t);
 
 }  // namespace selfsim
