@@ -205,6 +205,17 @@ try:
     check(again is not None and max(abs(a - b) for a, b in zip(again["d"], turned)) < 1e-6,
           "the view keeps the direction it was turned to: %s, then %s" % (turned, again and again["d"]))
 
+    # A view the studio could not make (its index says why): that result's PNG, and the reason under it.
+    with open(os.path.join(tmp, "out", ".studio", "tree.vtp.3d", "index.json"), "w") as f:
+        f.write('{"error": "cannot read \'tree.vtp\': a test\'s reason"}\n')
+    driver.get("http://127.0.0.1:%d/" % port)
+    reason = until(lambda: output(driver, "tree.vtp").find_element(By.CLASS_NAME, "view-error").text)
+    check(reason == "no 3D view: cannot read 'tree.vtp': a test's reason", "a view not made says why: %r" % reason)
+    check(until(lambda: output(driver, "tree.vtp").find_element(By.CSS_SELECTOR, 'img[alt="tree.vtp"]')) is not None,
+          "a view not made shows its PNG")
+    check(until(lambda: views_ready(driver)) is not None and
+          output(driver, "surface.vtp").find_elements(By.TAG_NAME, "canvas"), "the other views still draw")
+
     # WebGL off: the preview PNGs, and why.
     off = browser(False)
     off.get("http://127.0.0.1:%d/" % port)
