@@ -72,8 +72,9 @@ void write_view(const std::filesystem::path& root, const std::string& file, cons
     if (io::is_series_name(file)) {
       const io::FileBeneath series(root, file);  // the series file itself no link either
       steps.clear();
-      for (const std::filesystem::path& s : io::read_series_steps(root / file))
-        steps.push_back(s.lexically_relative(root));
+      const std::filesystem::path series_path = root / file;
+      for (const std::filesystem::path& s : io::read_series_steps(series_path))  // each beside the series file
+        steps.push_back(std::filesystem::path(file).parent_path() / s.lexically_relative(series_path.parent_path()));
     }
     // A series is read twice, so that only one step is held at a time: once for its one colouring and
     // camera, once for the payloads.
