@@ -103,7 +103,10 @@ check "the still is the last step in the series' camera" pixels same_views "$tmp
 preview "$tmp/g/growth.pvd" -o "$tmp/plain"
 check "series without --steps: the still alone" test "$(grep -c '^wrote ' "$tmp/out")" = 1 -a \
   ! -e "$tmp/plain/growth.apng" -a ! -e "$tmp/plain/growth.steps.png"
-check "series without --steps: the same still" cmp -s "$tmp/plain/growth.png" "$tmp/steps/growth.png"
+# (--steps smooths its dozen pictures by FXAA, the still alone by 8 samples a pixel: the same drawing, not
+# the same bytes.)
+check "series without --steps: the same camera" pixels same_camera "$tmp/plain/growth.png" "$tmp/steps/growth.png" \
+  drawing
 # Each step alone is fitted to itself: step 1 is then not where step 2 draws it (what --steps avoids).
 preview "$tmp/g/growth/s1.vtp" -o "$tmp/alone"
 check "a step alone has a camera of its own" fails pixels same_camera "$tmp/alone/s1.png" "$tmp/frames/frame_1.png"

@@ -81,14 +81,16 @@ struct Plan {
   int up = 1;
 };
 
-// The window's picture as PNG bytes; empty when VTK reported an error.
-std::string grab_png(vtkRenderWindow* window) {
+// The window's picture as PNG bytes, zlib at `effort` (0-9; frames of an animation take less time over it);
+// empty when VTK reported an error.
+std::string grab_png(vtkRenderWindow* window, int effort = 5) {
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
   grab->SetInputBufferTypeToRGB();
   grab->ReadFrontBufferOff();
   vtkNew<vtkPNGWriter> png;
   png->SetInputConnection(grab->GetOutputPort());
+  png->SetCompressionLevel(effort);
   png->WriteToMemoryOn();
   png->Write();
   vtkUnsignedCharArray* bytes = png->GetResult();
@@ -143,9 +145,18 @@ int render_in_child(PipeOut& out, std::span<const Dataset> steps, const Plan& pl
     style.lut = lut;
   }
   const bool flat = style.flat;
+  // Antialiasing by 8 samples a pixel costs Mesa's software renderer most of a million-face preview; past
+  // that many cells the faces are smaller than a pixel anyway.
+  std::size_t cells = 0;
+  for (const Dataset& d : steps) cells = std::max(cells, d.cell_ends.size());
+  // A series' frames and filmstrip, a dozen pictures, are smoothed by FXAA (a pass over the finished
+  // picture) instead, so that a 10-step growth costs a few previews, not ten.
+  const bool frames_wanted = plan.options.steps && !steps.empty();
+  const int samples = cells > 400000 || frames_wanted ? 0 : 8;
+  const bool fxaa = samples == 0 && cells <= 400000;
   const PreviewSize size = flat ? PreviewSize{800, 800} : PreviewSize{1200, 600};
   const std::size_t n = steps.size();
-  const bool frames = plan.options.steps && n > 0;
+  const bool frames = frames_wanted;
   std::vector<StepDrawing> drawings(n);
   auto drawing = [&](std::size_t k) -> const StepDrawing& {
     if (!drawings[k].mapper) drawings[k] = step_drawing(steps[k], style);
@@ -159,7 +170,7 @@ int render_in_child(PipeOut& out, std::span<const Dataset> steps, const Plan& pl
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->SetSize(size.width, size.height);
-  window->SetMultiSamples(8);
+  window->SetMultiSamples(samples);
   window->SetWindowName("selfsim preview");
   const double top = 0.93, bottom = coloured ? 0.13 : 0.02;
   const int views = flat ? 1 : 2;
@@ -168,6 +179,7 @@ int render_in_child(PipeOut& out, std::span<const Dataset> steps, const Plan& pl
     auto actor = vtkSmartPointer<vtkActor>::New();
     vtkSmartPointer<vtkRenderer> view = strip(window, v * 1.0 / views, bottom, (v + 1) * 1.0 / views, top);
     view->AddActor(actor);
+    view->SetUseFXAA(fxaa);
     place_view(view, steps, flat, v == 1, plan.up, (size.width / double(views)) / (size.height * (top - bottom)));
     actors.push_back(actor);
   }
@@ -179,20 +191,22 @@ int render_in_child(PipeOut& out, std::span<const Dataset> steps, const Plan& pl
   vtkSmartPointer<vtkRenderer> legend = strip(window, 0, 0, 1, bottom);
   if (coloured) add_legend(legend, plan.colouring, lut, flat ? 10 : 16);
 
-  // Each frame captioned with its step, then the still: the last step under the plain title.
+  // Each frame captioned with its step in the middle of the title strip; the still is the last step, the last
+  // frame itself when there are frames (its caption then says so too).
+  vtkSmartPointer<vtkTextActor> caption = text("", 18, 0.5, 0.5, VTK_TEXT_CENTERED);
+  head->AddActor2D(caption);
   std::vector<std::string> pictures(1);
-  auto picture = [&](std::size_t k, const std::string& caption) {
+  auto picture = [&](std::size_t k) {
     const StepDrawing& d = drawing(k);
     for (vtkActor* actor : actors) show_step(actor, d, style);
     holds->SetInput(holds_text(steps[k], d.surface && !d.tubes).c_str());
-    title->SetInput(shown_title(caption).c_str());
+    if (frames) caption->SetInput(label(k).c_str());
     window->Render();
-    return window_errors->sent ? std::string() : grab_png(window);
+    return window_errors->sent ? std::string() : grab_png(window, frames ? 2 : 5);
   };
   if (frames)
-    for (std::size_t k = 0; k < n && !window_errors->sent; ++k)
-      pictures.push_back(picture(k, plan.title + ": " + label(k)));
-  if (!window_errors->sent) pictures[0] = picture(n - 1, plan.title);
+    for (std::size_t k = 0; k < n && !window_errors->sent; ++k) pictures.push_back(picture(k));
+  if (!window_errors->sent) pictures[0] = frames ? pictures.back() : picture(n - 1);
   if (window_errors->sent) return 0;
 
   if (frames) {
@@ -207,7 +221,7 @@ int render_in_child(PipeOut& out, std::span<const Dataset> steps, const Plan& pl
     vtkNew<vtkRenderWindow> strip_window;
     strip_window->SetOffScreenRendering(1);
     strip_window->SetSize(width, height);
-    strip_window->SetMultiSamples(8);
+    strip_window->SetMultiSamples(samples);
     strip(strip_window, 0, 0, 1, 1);  // white under the cells a short last row leaves empty
     const double cell_w = static_cast<double>(cell) / width, cell_h = static_cast<double>(cell) / height;
     const double grid_top = 1 - static_cast<double>(head_px) / height;
@@ -218,6 +232,7 @@ int render_in_child(PipeOut& out, std::span<const Dataset> steps, const Plan& pl
       vtkNew<vtkActor> actor;
       show_step(actor, drawing(k), style);
       view->AddActor(actor);
+      view->SetUseFXAA(fxaa);
       view->AddActor2D(text(label(k), 13, 0.04, 0.94, VTK_TEXT_LEFT));
       place_view(view, steps, flat, true, plan.up, 1.0);
     }

@@ -3,6 +3,7 @@
 #include <vtkActor.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkLookupTable.h>
 #include <vtkPointData.h>
@@ -70,6 +71,27 @@ vtkSmartPointer<vtkUnsignedCharArray> colour_bytes(const FieldValues& f) {
   return a;
 }
 
+// A class field's values as their classes' colours (palette.h), so that the mapper draws them as they are:
+// VTK's indexed lookup goes through a variant per value, a large part of a million-face preview.
+vtkSmartPointer<vtkUnsignedCharArray> class_bytes(const std::string& name, const FieldValues& f,
+                                                  const std::vector<int>& categories) {
+  auto a = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  a->SetName(name.c_str());
+  a->SetNumberOfComponents(3);
+  const std::size_t n = f.values.size() / static_cast<std::size_t>(f.components);
+  a->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  unsigned char* out = a->GetPointer(0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double v = f.values[i * static_cast<std::size_t>(f.components)];
+    const auto at = std::lower_bound(categories.begin(), categories.end(), static_cast<int>(v));
+    const Rgb c = at != categories.end() && *at == v ? class_colour(static_cast<std::size_t>(at - categories.begin()))
+                                                     : Rgb{0.6, 0.6, 0.6};
+    for (int k = 0; k < 3; ++k)
+      out[3 * i + static_cast<std::size_t>(k)] = static_cast<unsigned char>(std::lround(255 * c[k]));
+  }
+  return a;
+}
+
 std::size_t segments(const Dataset& d) {
   std::size_t n = 0;
   for (std::size_t i = 0, begin = 0; i < d.cell_ends.size(); begin = d.cell_ends[i++]) n += d.cell_ends[i] - begin;
@@ -112,13 +134,17 @@ vtkSmartPointer<vtkPolyData> poly_data(const Dataset& d, const Colouring& c) {
   poly->SetVerts(verts);
   poly->SetLines(lines);
   poly->SetPolys(polys);
+  auto array = [&](const FieldValues& f) -> vtkSmartPointer<vtkDataArray> {
+    if (c.categorical) return class_bytes(c.field, f, c.categories);
+    return field_array(c.field, f);
+  };
   if (!c.field.empty()) {
     if (c.on_points) {
       if (auto f = d.point_fields.find(c.field); f != d.point_fields.end())
-        poly->GetPointData()->AddArray(field_array(c.field, f->second));
+        poly->GetPointData()->AddArray(array(f->second));
     } else if (!reordered) {
       if (auto f = d.cell_fields.find(c.field); f != d.cell_fields.end())
-        poly->GetCellData()->AddArray(field_array(c.field, f->second));
+        poly->GetCellData()->AddArray(array(f->second));
     }
   }
   return poly;
@@ -210,6 +236,12 @@ StepDrawing step_drawing(const Dataset& d, const SceneStyle& style) {
     m->SetColorModeToDirectScalars();
     m->SetScalarModeToUseCellFieldData();
     m->SelectColorArray(direct_colour_field);
+    m->ScalarVisibilityOn();
+  } else if (!style.colouring.field.empty() && style.colouring.categorical) {
+    m->SetColorModeToDirectScalars();  // the classes' colours, made by class_bytes
+    m->SetScalarModeToUsePointFieldData();
+    if (!style.colouring.on_points) m->SetScalarModeToUseCellFieldData();
+    m->SelectColorArray(style.colouring.field.c_str());
     m->ScalarVisibilityOn();
   } else if (!style.colouring.field.empty() && style.lut != nullptr) {
     m->SetLookupTable(style.lut);
