@@ -73,12 +73,16 @@ usage:
                              profile's least wall and gap, at most half of it); --max-points: the
                              grid's and the points' budget, as for run (a large part needs a larger
                              voxel or budget). Exit 0 passes, 1 with its findings, 2 error
-  selfsim preview FILE... [-o DIR] [-q] [--timeout S] [--max-memory SIZE] [--max-points N]
-                             [--as NAME FILE]...
-                             a PNG picture of each file (.vtp .vtu .svg .stl .obj .ply, .vdb as its
-                             surface, .pvd/.vtp.series as its last step): NAME.png beside it, or in DIR. Curves and flat drawings from above,
-                             anything else shaded from two sides, coloured by the field a ParaView view
-                             uses. Needs an X display; without one it starts Xvfb (apt-get install xvfb).
+  selfsim preview FILE... [-o DIR] [-q] [--field NAME] [--up x|y|z] [--steps] [--timeout S]
+                             [--max-memory SIZE] [--max-points N] [--as NAME FILE]...
+                             a PNG picture of each file (.vtp .vtu .svg .stl .obj .ply .3mf, .vdb as
+                             its surface, .pvd/.vtp.series as its last step): NAME.png beside it, or in
+                             DIR. Flat drawings from above; 3D upright (+y, or the axis a level field
+                             grew along), a front and an oblique view, lit; widths as tubes. Coloured by
+                             the field a ParaView view uses, or --field NAME; an SVG in its own colours.
+                             A series in one camera and one colour range over its steps; --steps also
+                             writes NAME.steps.png (every step) and NAME.apng (an animation).
+                             Needs an X display; without one it starts Xvfb (apt-get install xvfb).
                              Exit 1 when a file could not be drawn (the others still are).
                              --timeout, --max-memory and --max-points (a .vdb's tiles) as for run;
                              --as NAME FILE writes FILE's PNG

@@ -2,7 +2,9 @@
 // a look without ParaView. Files are read with the readers `info` and `diff` use (a .vdb as its surface,
 // vdb_read.h), rendered by VTK (preview_png.h) on the user's X display or an Xvfb of our own
 // (display_server.h), and written atomically as NAME.png beside the input, or into DIR with -o, through the
-// one confined writer (output_file.h) like every file selfsim writes.
+// one confined writer (output_file.h) like every file selfsim writes. A series (.pvd, .series) is read whole
+// and drawn as its last step in the camera and colours of all its steps; --steps adds NAME.steps.png (the
+// filmstrip) and NAME.apng (the frames through apng.h), written before NAME.png.
 // Limits as a run's: --max-memory bounds the memory it may add (RLIMIT_DATA, which the renderer's forked
 // child inherits), --timeout ends it with one line; PNGs are anonymous files until whole, so a preview
 // stopped anywhere (the limits, Ctrl-C, SIGTERM, SIGKILL) leaves no partial file. The studio and sweeps
