@@ -98,12 +98,23 @@ void write_view(const std::filesystem::path& root, const std::string& file, cons
       if (steps.size() == 1) only = std::move(d);
     }
     const io::Colouring colouring = own ? io::Colouring{} : io::summaries_colouring(summaries);
+    // A curve's widths as tubes, as the preview draws them: the widest over every step 1.2% of the union's
+    // diagonal across.
+    io::TubeWidths widths;
+    for (const auto& step : summaries)
+      for (const io::FieldSummary& f : step)
+        if (f.name == "width" && f.on_points && f.components == 1)
+          widths.max_width = std::max({widths.max_width, std::abs(f.min), std::abs(f.max)});
+    double diagonal = 0;
+    for (int j = 0; j < 3; ++j)
+      if (bounds[2 * j + 1] > bounds[2 * j]) diagonal += std::pow(bounds[2 * j + 1] - bounds[2 * j], 2);
+    widths.radius = 0.012 * (diagonal > 0 ? std::sqrt(diagonal) : 1);
     std::string names, urls;
     for (std::size_t i = 0; i < steps.size(); ++i) {
       const io::Dataset d = only ? std::move(*only) : read_below(root, steps[i], limits);
       try {
         io::write_whole(root, folder + "/" + std::to_string(i) + ".bin",
-                        io::geometry_payload(d, colouring, view_max_bytes));
+                        io::geometry_payload(d, colouring, view_max_bytes, widths));
       } catch (const std::bad_alloc&) {
         throw;
       } catch (const Error& e) {

@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <set>
 
 #include "kernels/base/error.h"
 #include "kernels/io/text/json_text.h"
 #include "kernels/io/view/palette.h"
+#include "kernels/io/view/tube_rings.h"
 
 namespace selfsim::io {
 
@@ -132,7 +134,59 @@ std::array<std::uint8_t, 3> value_colour(const Colouring& c, double v) {
   return bytes_of(ramp_colour((v - c.min) / span));
 }
 
-std::string geometry_payload(const Dataset& d, const Colouring& c, std::uint64_t max_bytes, Progress& progress) {
+namespace {
+
+// The tubes of d's polylines (tube_rings.h), coloured as their points or cells are: their ring points'
+// positions relative to origin, their palette indices, and their triangles. Returns the triangle count.
+std::uint64_t tubes(const Dataset& d, const Painted& painted, const TubeWidths& widths,
+                    const std::array<double, 3>& origin, std::vector<float>& positions,
+                    std::vector<std::uint32_t>& colour, std::vector<std::uint32_t>& indices,
+                    const std::function<void(std::uint64_t)>& too_large, Progress& progress) {
+  const std::vector<double>& width = d.point_fields.at("width").values;
+  std::vector<std::array<double, 3>> line, rings;
+  std::vector<double> radii;
+  std::uint64_t triangles = 0;
+  for (std::size_t i = 0, begin = 0; i < d.cell_ends.size(); begin = d.cell_ends[i++]) {
+    if ((i & 0xffff) == 0xffff && progress.cancelled()) throw Cancelled();
+    line.clear();
+    radii.clear();
+    for (std::size_t k = begin; k < d.cell_ends[i]; ++k) {
+      const std::size_t p = d.cell_points[k];
+      if (p >= d.points.size()) throw Error("a cell names point " + std::to_string(p) + ", past its points");
+      line.push_back(d.points[p]);
+      const double w = std::isfinite(width[p]) ? std::abs(width[p]) / widths.max_width : 0;
+      radii.push_back(widths.radius * std::clamp(w, 0.1, 1.0));  // as the preview: none under a tenth
+    }
+    rings.clear();
+    const std::size_t before = indices.size();
+    const std::size_t made =
+        tube_rings(line, radii, tube_sides, static_cast<std::uint32_t>(colour.size()), rings, indices);
+    triangles += (indices.size() - before) / 3;
+    too_large(colour.size() + made);
+    for (std::size_t r = 0; r < made; ++r) {
+      const std::size_t k = begin + r / tube_sides;
+      colour.push_back(painted.index.empty() ? 0 : painted.index[painted.on_cells ? i : d.cell_points[k]]);
+      for (int j = 0; j < 3; ++j) positions.push_back(static_cast<float>(rings[r][j] - origin[j]));
+    }
+  }
+  return triangles;
+}
+
+}  // namespace
+
+bool drawn_as_tubes(const Dataset& d, const TubeWidths& widths) {
+  if (d.shapes != CellShapes::lines || !(widths.radius > 0) || !(widths.max_width > 0)) return false;
+  const auto w = d.point_fields.find("width");
+  if (w == d.point_fields.end() || w->second.components != 1 || w->second.values.size() != d.points.size())
+    return false;
+  std::size_t segments = 0;
+  for (std::size_t i = 0, begin = 0; i < d.cell_ends.size(); begin = d.cell_ends[i++])
+    segments += d.cell_ends[i] - begin > 0 ? d.cell_ends[i] - begin - 1 : 0;
+  return segments <= max_tube_segments;
+}
+
+std::string geometry_payload(const Dataset& d, const Colouring& c, std::uint64_t max_bytes, const TubeWidths& widths,
+                             Progress& progress) {
   if (d.points.empty()) throw Error("it holds no points");
   std::array<double, 6> bounds{};
   for (int j = 0; j < 3; ++j) {
@@ -168,52 +222,64 @@ std::string geometry_payload(const Dataset& d, const Colouring& c, std::uint64_t
   };
   too_large(d.points.size());
 
-  // Vertices: one per point, or with a cell field one per point and colour (a chain of copies per point).
   const Painted painted = paint(d, c, progress);
-  std::vector<std::uint32_t> source;  // each vertex's point
+  std::vector<float> positions;       // each vertex's, relative to origin
   std::vector<std::uint32_t> colour;  // each vertex's palette index
-  std::vector<std::uint32_t> head(painted.on_cells ? d.points.size() : 0, none), next;
-  if (!painted.on_cells) {
-    source.resize(d.points.size());
-    for (std::size_t i = 0; i < source.size(); ++i) source[i] = static_cast<std::uint32_t>(i);
-    colour.assign(d.points.size(), 0);
-    if (!painted.index.empty()) colour = painted.index;
-  }
-  const auto vertex = [&](std::size_t point, std::size_t cell) -> std::uint32_t {
-    if (!painted.on_cells) return static_cast<std::uint32_t>(point);
-    const std::uint32_t want = painted.index[cell];
-    for (std::uint32_t k = head[point]; k != none; k = next[k])
-      if (colour[k] == want) return k;
-    if (source.size() + 1 >= none) too_large(source.size() + 1);
-    source.push_back(static_cast<std::uint32_t>(point));
-    colour.push_back(want);
-    next.push_back(head[point]);
-    head[point] = static_cast<std::uint32_t>(source.size() - 1);
-    return head[point];
-  };
-
   std::vector<std::uint32_t> indices;
-  indices.reserve(static_cast<std::size_t>(3 * triangles + 2 * segments));
-  for (int pass = 0; pass < 2; ++pass)  // triangles first, then segments
-    for (std::size_t i = 0, begin = 0; i < d.cell_ends.size(); begin = d.cell_ends[i++]) {
-      if ((i & 0xfffff) == 0xfffff && progress.cancelled()) throw Cancelled();
-      const std::size_t n = d.cell_ends[i] - begin;
-      const bool polygon = d.shapes == CellShapes::polygons || (d.shapes == CellShapes::mixed && n >= 3);
-      const auto id = [&](std::size_t k) {
-        const std::size_t point = d.cell_points[begin + k];
-        if (point >= d.points.size()) throw Error("a cell names point " + std::to_string(point) + ", past its points");
-        return vertex(point, i);
-      };
-      if (pass == 0 && polygon && n >= 3) {
-        const std::uint32_t first = id(0);
-        for (std::size_t k = 1; k + 1 < n; ++k) indices.insert(indices.end(), {first, id(k), id(k + 1)});
-      } else if (pass == 1 && !polygon) {
-        for (std::size_t k = 0; k + 1 < n; ++k) indices.insert(indices.end(), {id(k), id(k + 1)});
-      }
+  if (drawn_as_tubes(d, widths)) {
+    triangles = 2 * tube_sides * segments;  // at most: a line of coincident points makes none
+    segments = 0;
+    too_large(0);
+    triangles = tubes(d, painted, widths, origin, positions, colour, indices, too_large, progress);
+  } else {
+    // Vertices: one per point, or with a cell field one per point and colour (a chain of copies per point).
+    std::vector<std::uint32_t> source;  // each vertex's point
+    std::vector<std::uint32_t> head(painted.on_cells ? d.points.size() : 0, none), next;
+    if (!painted.on_cells) {
+      source.resize(d.points.size());
+      for (std::size_t i = 0; i < source.size(); ++i) source[i] = static_cast<std::uint32_t>(i);
+      colour.assign(d.points.size(), 0);
+      if (!painted.index.empty()) colour = painted.index;
     }
-  too_large(source.size());
+    const auto vertex = [&](std::size_t point, std::size_t cell) -> std::uint32_t {
+      if (!painted.on_cells) return static_cast<std::uint32_t>(point);
+      const std::uint32_t want = painted.index[cell];
+      for (std::uint32_t k = head[point]; k != none; k = next[k])
+        if (colour[k] == want) return k;
+      if (source.size() + 1 >= none) too_large(source.size() + 1);
+      source.push_back(static_cast<std::uint32_t>(point));
+      colour.push_back(want);
+      next.push_back(head[point]);
+      head[point] = static_cast<std::uint32_t>(source.size() - 1);
+      return head[point];
+    };
 
-  std::string header = "{\"vertices\": " + std::to_string(source.size()) +
+    indices.reserve(static_cast<std::size_t>(3 * triangles + 2 * segments));
+    for (int pass = 0; pass < 2; ++pass)  // triangles first, then segments
+      for (std::size_t i = 0, begin = 0; i < d.cell_ends.size(); begin = d.cell_ends[i++]) {
+        if ((i & 0xfffff) == 0xfffff && progress.cancelled()) throw Cancelled();
+        const std::size_t n = d.cell_ends[i] - begin;
+        const bool polygon = d.shapes == CellShapes::polygons || (d.shapes == CellShapes::mixed && n >= 3);
+        const auto id = [&](std::size_t k) {
+          const std::size_t point = d.cell_points[begin + k];
+          if (point >= d.points.size())
+            throw Error("a cell names point " + std::to_string(point) + ", past its points");
+          return vertex(point, i);
+        };
+        if (pass == 0 && polygon && n >= 3) {
+          const std::uint32_t first = id(0);
+          for (std::size_t k = 1; k + 1 < n; ++k) indices.insert(indices.end(), {first, id(k), id(k + 1)});
+        } else if (pass == 1 && !polygon) {
+          for (std::size_t k = 0; k + 1 < n; ++k) indices.insert(indices.end(), {id(k), id(k + 1)});
+        }
+      }
+    too_large(source.size());
+    positions.resize(3 * source.size());
+    for (std::size_t v = 0; v < source.size(); ++v)
+      for (int j = 0; j < 3; ++j) positions[3 * v + j] = static_cast<float>(d.points[source[v]][j] - origin[j]);
+  }
+
+  std::string header = "{\"vertices\": " + std::to_string(colour.size()) +
                        ", \"triangles\": " + std::to_string(triangles) + ", \"segments\": " + std::to_string(segments) +
                        ", \"origin\": [" + json_number(origin[0]) + ", " + json_number(origin[1]) + ", " +
                        json_number(origin[2]) + "], \"bounds\": [";
@@ -222,14 +288,11 @@ std::string geometry_payload(const Dataset& d, const Colouring& c, std::uint64_t
   header.append((4 - header.size() % 4) % 4, ' ');
 
   std::string out;
-  out.reserve(static_cast<std::size_t>(size_for(source.size())));
+  out.reserve(static_cast<std::size_t>(size_for(colour.size())));
   out += "SSG1";
   const auto header_bytes = static_cast<std::uint32_t>(header.size());
   append(out, &header_bytes, 1);
   out += header;
-  std::vector<float> positions(3 * source.size());
-  for (std::size_t v = 0; v < source.size(); ++v)
-    for (int j = 0; j < 3; ++j) positions[3 * v + j] = static_cast<float>(d.points[source[v]][j] - origin[j]);
   append(out, positions.data(), positions.size());
   append(out, indices.data(), indices.size());
   std::vector<std::uint8_t> rgb(3 * colour.size());

@@ -46,11 +46,28 @@ std::string colouring_json(const Colouring& c, bool own = false);
 // of c: grey), as 0-255 RGB.
 std::array<std::uint8_t, 3> value_colour(const Colouring& c, double v);
 
+// A curve's widths drawn as the preview draws them: a point field `width` makes each polyline a tube
+// (tube_rings.h) whose widest point has radius `radius` (the preview: 1.2% of the drawing's diagonal), the
+// others in proportion to their width over `max_width` (the largest over every step of a series), none
+// thinner than a tenth of it. radius 0: lines.
+struct TubeWidths {
+  double radius = 0, max_width = 0;
+};
+inline constexpr int tube_sides = 8;
+// More segments than this and a curve is drawn as lines after all: a browser draws a million triangles in
+// about a second where WebGL runs on the CPU, and 16 triangles a segment would pass that.
+inline constexpr std::size_t max_tube_segments = 50000;
+
+// Whether d is drawn as tubes with these widths: a dataset of lines alone, with a one-component point field
+// `width`, of at most max_tube_segments segments.
+bool drawn_as_tubes(const Dataset& d, const TubeWidths& widths);
+
 // The payload bytes of d coloured by c (a field d lacks, or holds with a count that does not match, draws in
-// the solid colour; no field, by its own colours when it has them). Polygons are split into triangles (a fan),
+// the solid colour; no field, by its own colours when it has them), its polylines as tubes when
+// drawn_as_tubes(d, widths). Polygons are split into triangles (a fan),
 // polylines into segments. Throws Error when a point is not finite, or when the payload would pass
 // max_bytes (naming its size and the limit); Cancelled when progress says stop.
 std::string geometry_payload(const Dataset& d, const Colouring& c, std::uint64_t max_bytes,
-                             Progress& progress = no_progress());
+                             const TubeWidths& widths = {}, Progress& progress = no_progress());
 
 }  // namespace selfsim::io

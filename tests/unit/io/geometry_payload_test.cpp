@@ -174,3 +174,34 @@ TEST(GeometryPayload, ACurvesOwnColoursAreDrawnAsTheyAre) {
   d.shapes = io::CellShapes::polygons;
   EXPECT_FALSE(io::has_own_colours(d));
 }
+
+TEST(GeometryPayload, ACurvesWidthsAreTubes) {
+  io::Dataset d;
+  d.points = {{0, 0, 0}, {0, 1, 0}, {0, 2, 0}, {0, 1, 0}, {1, 2, 0}};
+  d.cell_ends = {3, 5};
+  d.cell_points = {0, 1, 2, 3, 4};  // a trunk and a branch
+  d.point_fields["width"] = {1, {4, 2, 1, 2, 0}};
+  d.point_fields["branch_order"] = {1, {0, 0, 0, 1, 1}};
+  const io::Colouring c = io::natural_colouring(io::summarise(d));
+  const io::TubeWidths widths{0.1, 4};
+  ASSERT_TRUE(io::drawn_as_tubes(d, widths));
+  const Decoded p = decode(io::geometry_payload(d, c, 1 << 20, widths));
+  EXPECT_EQ(p.segments, 0u);
+  EXPECT_EQ(p.triangles, 3u * 16);  // 16 a segment
+  EXPECT_EQ(p.vertices, 5u * 8);    // a ring of 8 a point
+  // The widest point's ring has the radius, the thinnest (width 0) a tenth of it; positions are relative to
+  // the bounds' centre (0.5, 1, 0).
+  const auto radius = [&](std::size_t ring, const std::array<double, 3>& centre) {
+    return std::hypot(p.positions[24 * ring] + 0.5 - centre[0], p.positions[24 * ring + 1] + 1 - centre[1],
+                      p.positions[24 * ring + 2] - centre[2]);
+  };
+  EXPECT_NEAR(radius(0, {0, 0, 0}), 0.1, 1e-6);
+  EXPECT_NEAR(radius(4, {1, 2, 0}), 0.01, 1e-6);
+  // Each ring coloured as its point: the branch's by branch_order 1, the trunk's by 0.
+  EXPECT_EQ(colour_of(p, 0), rgb(io::ramp_colour(0)));
+  EXPECT_EQ(colour_of(p, 39), rgb(io::ramp_colour(1)));
+  // No widths, or too many segments: lines.
+  EXPECT_EQ(decode(io::geometry_payload(d, c, 1 << 20)).segments, 3u);
+  d.point_fields.erase("width");
+  EXPECT_FALSE(io::drawn_as_tubes(d, widths));
+}
