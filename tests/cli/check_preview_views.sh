@@ -66,6 +66,21 @@ preview "$tmp/two.svg" -o "$tmp/svg_bad" --field color
 check "svg --field color (3 components): exit 1, one line" test "$code" = 1 -a "$(wc -l <"$tmp/err")" = 1
 check "svg --field color: says why" grep -q "'color' has 3 components" "$tmp/err"
 
+# A grammar's colour index (') colours the preview by value, as the SVG it strokes: each stroke colour of the
+# SVG is drawn in the .vtp's preview (indices 2, 3, 4: by rank they would take the first three colours).
+cat >"$tmp/index.lua" <<'LUA'
+local c = lsystem { axiom = "'(2)X", rules = { X = "F[+'X][-'X]FX", F = "FF" }, angle = 25 }:curve(3)
+save(c, "index.vtp"); save(c, "index.svg")
+LUA
+"$selfsim" run "$tmp/index.lua" -o "$tmp/index" -q 2>"$tmp/run_err"
+preview "$tmp/index/index.vtp" -o "$tmp/index_png"
+check "colour index: exit 0 ($(head -1 "$tmp/err"))" test "$code" = 0
+strokes=$(grep -o 'stroke="#[0-9a-f]*"' "$tmp/index/index.svg" | sort -u | sed 's/stroke="#\(..\)\(..\)\(..\)"/\1 \2 \3/')
+check "colour index: the SVG has three stroke colours" test "$(echo "$strokes" | wc -l)" = 3
+while read -r r g b; do
+  check "colour index: #$r$g$b in the preview" pixels colour "$tmp/index_png/index.png" $((16#$r)) $((16#$g)) $((16#$b))
+done <<<"$strokes"
+
 # A growing 3D series: step 2 holds step 1 and a branch; `age` grows only in step 2. Written by hand so
 # that step 1's geometry is exactly inside step 2's.
 vtp() {  # vtp FILE POINTS AGES CONNECTIVITY OFFSETS NPOINTS NLINES

@@ -24,6 +24,11 @@ struct FieldSummary {
   std::vector<int> distinct;  // an integer field's distinct values, sorted; at most max_categories + 1 kept
 };
 
+// Whether a categorical field's classes take their colours by value, class_colour(value) (palette.h), rather
+// than by their rank among the values present: a grammar's colour index `color` (from '), so that a preview, a
+// ParaView view and the SVG or EPS the grammar strokes (style_runs.h) give index 3 the same colour.
+inline bool coloured_by_value(const std::string& field) { return field == "color"; }
+
 // More distinct values than this and a class field is drawn on a continuous map after all.
 inline constexpr std::size_t max_categories = 256;
 

@@ -84,11 +84,17 @@ def colour_continuous(display, lut, field, low, high):
     opacity.RescaleTransferFunction(low, high)
 
 
-def colour_categorical(lut, categories):
+def colour_categorical(lut, categories, by_value=False):
     """One annotation and one colour per category: ParaView draws each value in its own colour and the
-    scalar bar lists the classes instead of a ramp."""
+    scalar bar lists the classes instead of a ramp. `by_value` (a grammar's colour index `color`): each
+    value takes the value-th colour, as the SVG the grammar strokes does, not the colour of its rank."""
     annotations, colours = [], []
-    for value, rgb in zip(categories, category_colours(len(categories))):
+    if by_value and categories and min(categories) >= 0:
+        palette = category_colours(int(max(categories)) + 1)
+        chosen = [palette[int(v)] for v in categories]
+    else:
+        chosen = category_colours(len(categories))
+    for value, rgb in zip(categories, chosen):
         annotations += [value_label(value), value_label(value)]
         colours += rgb
     # Annotations first, then the switch: the GUI, seeing a categorical map with no annotations, would
@@ -224,7 +230,7 @@ def show_dataset(d, reader, view, bar_index, bar_count, solid, named, bounds):
     # No range: the field's values overflowed (the writer keeps non-finite numbers out of this file).
     low, high = d["range"] if d["range"] is not None else (0.0, 1.0)
     if d["categorical"]:
-        colour_categorical(lut, d["categories"])
+        colour_categorical(lut, d["categories"], d["field"] == "color")
     else:
         colour_continuous(display, lut, d["field"], low, high)
     display.SetScalarBarVisibility(view, True)

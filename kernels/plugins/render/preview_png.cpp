@@ -138,7 +138,7 @@ int render_in_child(PipeOut& out, std::span<const Dataset> steps, const Plan& pl
   const bool coloured = !plan.colouring.field.empty();
   if (coloured) {
     if (plan.colouring.categorical)
-      category_table(lut, plan.colouring.categories);
+      category_table(lut, plan.colouring.categories, coloured_by_value(plan.colouring.field));
     else
       continuous_table(lut, plan.colouring.min, plan.colouring.max);
     lut->Build();

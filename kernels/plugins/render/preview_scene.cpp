@@ -36,12 +36,13 @@ void continuous_table(vtkLookupTable* lut, double lo, double hi) {
 }
 
 // The shared class colours (palette.h), each annotated with its value.
-void category_table(vtkLookupTable* lut, const std::vector<int>& categories) {
+void category_table(vtkLookupTable* lut, const std::vector<int>& categories, bool by_value) {
   const auto n = static_cast<vtkIdType>(categories.size());
   lut->IndexedLookupOn();
   lut->SetNumberOfTableValues(std::max<vtkIdType>(n, 1));
   for (vtkIdType i = 0; i < n; ++i) {
-    const Rgb c = class_colour(static_cast<std::size_t>(i));
+    const int value = categories[static_cast<std::size_t>(i)];
+    const Rgb c = class_colour(by_value && value >= 0 ? static_cast<std::size_t>(value) : static_cast<std::size_t>(i));
     lut->SetTableValue(i, c[0], c[1], c[2], 1);
     lut->SetAnnotation(vtkVariant(static_cast<double>(categories[static_cast<std::size_t>(i)])),
                        std::to_string(categories[static_cast<std::size_t>(i)]));
@@ -75,6 +76,7 @@ vtkSmartPointer<vtkUnsignedCharArray> colour_bytes(const FieldValues& f) {
 // VTK's indexed lookup goes through a variant per value, a large part of a million-face preview.
 vtkSmartPointer<vtkUnsignedCharArray> class_bytes(const std::string& name, const FieldValues& f,
                                                   const std::vector<int>& categories) {
+  const bool by_value = coloured_by_value(name);
   auto a = vtkSmartPointer<vtkUnsignedCharArray>::New();
   a->SetName(name.c_str());
   a->SetNumberOfComponents(3);
@@ -84,8 +86,10 @@ vtkSmartPointer<vtkUnsignedCharArray> class_bytes(const std::string& name, const
   for (std::size_t i = 0; i < n; ++i) {
     const double v = f.values[i * static_cast<std::size_t>(f.components)];
     const auto at = std::lower_bound(categories.begin(), categories.end(), static_cast<int>(v));
-    const Rgb c = at != categories.end() && *at == v ? class_colour(static_cast<std::size_t>(at - categories.begin()))
-                                                     : Rgb{0.6, 0.6, 0.6};
+    const bool known = at != categories.end() && *at == v;
+    const Rgb c = !known                 ? Rgb{0.6, 0.6, 0.6}
+                  : by_value && *at >= 0 ? class_colour(static_cast<std::size_t>(*at))
+                                         : class_colour(static_cast<std::size_t>(at - categories.begin()));
     for (int k = 0; k < 3; ++k)
       out[3 * i + static_cast<std::size_t>(k)] = static_cast<unsigned char>(std::lround(255 * c[k]));
   }

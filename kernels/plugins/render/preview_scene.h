@@ -28,8 +28,9 @@ bool has_direct_colours(const Dataset& d);
 
 // A perceptually even blue-green-yellow ramp from lo to hi.
 void continuous_table(vtkLookupTable* lut, double lo, double hi);
-// One colour per class, the same as a ParaView view's (paraview_view_body.py), each annotated.
-void category_table(vtkLookupTable* lut, const std::vector<int>& categories);
+// One colour per class, the same as a ParaView view's (paraview_view_body.py), each annotated: the i-th
+// class's, or with `by_value` (coloured_by_value) each value's own.
+void category_table(vtkLookupTable* lut, const std::vector<int>& categories, bool by_value = false);
 // The dataset's points, cells (lines, polygons) and the field `c` names as a named array (not the active
 // scalars).
 vtkSmartPointer<vtkPolyData> poly_data(const Dataset& d, const Colouring& c);
