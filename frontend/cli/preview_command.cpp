@@ -237,8 +237,17 @@ int preview_command(const PreviewConfig& config) {
       options.up = config.up;
       options.steps = config.steps;
       options.name = file.filename().string();
-      for (std::size_t k = 0; k < steps.size(); ++k)
-        options.labels.push_back("step " + std::to_string(k + 1) + " of " + std::to_string(steps.size()));
+      // "step 3 of 10", and the series' own time of the step where it gives one ("step 3 of 10, t = 2").
+      const std::vector<double> times = series ? io::read_series_times(file) : std::vector<double>{};
+      for (std::size_t k = 0; k < steps.size(); ++k) {
+        std::string label = "step " + std::to_string(k + 1) + " of " + std::to_string(steps.size());
+        if (times.size() == steps.size()) {
+          char t[40];
+          std::snprintf(t, sizeof t, ", t = %.6g", times[k]);
+          label += t;
+        }
+        options.labels.push_back(label);
+      }
       const io::PreviewPictures pictures = io::render_preview(steps, title, options, no_progress());
       // With --steps: NAME.steps.png (the filmstrip) and NAME.apng (the animation) beside NAME.png, written
       // before it, so that the still appearing says the others are there.

@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <set>
 
@@ -139,17 +140,50 @@ std::vector<std::string> quoted_values(const std::string& text, const std::strin
   return out;
 }
 
-}  // namespace
-
-std::vector<std::filesystem::path> read_series_steps(const std::filesystem::path& series) {
-  const bool json = ends_with(lower_case(series.filename().string()), ".series");
+// The text of a series file, at most 64 MiB.
+std::string series_file_text(const std::filesystem::path& series) {
   std::error_code ec;
   const auto size = std::filesystem::file_size(series, ec);
   if (ec || !std::filesystem::is_regular_file(series, ec))
     throw Error(cannot_read(series, ec ? ec.message() : "not a regular file"));
   if (size > (std::uintmax_t{64} << 20)) throw Error(cannot_read(series, "a series file over 64 MiB"));
   std::ifstream in(series, std::ios::binary);
-  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+}  // namespace
+
+std::vector<double> read_series_times(const std::filesystem::path& series) {
+  const bool json = ends_with(lower_case(series.filename().string()), ".series");
+  const std::string text = series_file_text(series);
+  std::vector<double> times;
+  auto number = [&](const char* at) {
+    char* end = nullptr;
+    const double t = std::strtod(at, &end);
+    if (end == at || !std::isfinite(t)) return false;
+    times.push_back(t);
+    return true;
+  };
+  if (!json) {
+    for (const std::string& t : quoted_values(text, "timestep", false))
+      if (!number(t.c_str())) return {};
+    return times;
+  }
+  // JSON: "time" : NUMBER, the number not quoted.
+  for (std::size_t at = text.find("\"time\""); at != std::string::npos; at = text.find("\"time\"", at + 1)) {
+    std::size_t i = at + 6;
+    while (i < text.size() && xml_space(text[i])) ++i;
+    if (i >= text.size() || text[i] != ':') continue;
+    ++i;
+    while (i < text.size() && xml_space(text[i])) ++i;
+    if (!number(text.c_str() + i)) return {};
+  }
+  return times;
+}
+
+std::vector<std::filesystem::path> read_series_steps(const std::filesystem::path& series) {
+  const bool json = ends_with(lower_case(series.filename().string()), ".series");
+  const std::string text = series_file_text(series);
   std::vector<std::filesystem::path> steps;
   for (const std::string& name : quoted_values(text, json ? "\"name\"" : "file", json)) {
     const std::filesystem::path p = std::filesystem::path(name).lexically_normal();

@@ -52,5 +52,8 @@ SeriesFiles save_series(std::span<const SeriesStep> steps, const std::filesystem
 // Throws Error ("cannot read 'FILE': ...") for a file that is not a series, names no step, is over 64 MiB,
 // or names a step outside its folder (an absolute path, or one through '..').
 std::vector<std::filesystem::path> read_series_steps(const std::filesystem::path& series);
+// The times a series file gives its steps, in its order; empty when a step's time is missing or not a finite
+// number (the steps then go by their numbers). Throws Error as read_series_steps for a file it cannot read.
+std::vector<double> read_series_times(const std::filesystem::path& series);
 
 }  // namespace selfsim::io

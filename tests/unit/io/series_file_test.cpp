@@ -161,3 +161,19 @@ TEST(SeriesFile, ARewriteThatFailsLeavesTheOldSeriesAndItsStepsAsTheyWere) {
   for (const auto& e : fs::directory_iterator(dir.path / "growth")) files += e.is_regular_file();
   EXPECT_EQ(files, 3u);  // no hidden step left behind
 }
+
+// The times come back for the captions of a preview's steps, from either form; a step without a readable
+// time gives none at all.
+TEST(SeriesFile, TimesReadBack) {
+  TempDir dir;
+  const auto curves = growing(3);
+  auto steps = steps_of(curves);
+  steps[2].time = 7.5;
+  io::save_series(steps, dir.path, "g.pvd", {}, no_progress());
+  io::save_series(steps, dir.path, "h.vtp.series", {}, no_progress());
+  EXPECT_EQ(io::read_series_times(dir.path / "g.pvd"), (std::vector<double>{0, 1, 7.5}));
+  EXPECT_EQ(io::read_series_times(dir.path / "h.vtp.series"), (std::vector<double>{0, 1, 7.5}));
+  std::ofstream(dir.path / "odd.pvd") << "<VTKFile type=\"Collection\"><Collection><DataSet timestep=\"x\" "
+                                         "file=\"a.vtp\"/></Collection></VTKFile>";
+  EXPECT_TRUE(io::read_series_times(dir.path / "odd.pvd").empty());
+}
