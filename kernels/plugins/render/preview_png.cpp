@@ -222,19 +222,22 @@ int render_in_child(PipeOut& out, std::span<const Dataset> steps, const Plan& pl
     strip_window->SetOffScreenRendering(1);
     strip_window->SetSize(width, height);
     strip_window->SetMultiSamples(samples);
-    strip(strip_window, 0, 0, 1, 1);  // white under the cells a short last row leaves empty
+    // White under everything (the cells a short last row leaves empty), and each cell's caption on it, in a
+    // band above the cell's drawing so that no drawing runs into the caption or the cell above.
+    vtkSmartPointer<vtkRenderer> under = strip(strip_window, 0, 0, 1, 1);
     const double cell_w = static_cast<double>(cell) / width, cell_h = static_cast<double>(cell) / height;
-    const double grid_top = 1 - static_cast<double>(head_px) / height;
+    const double grid_top = 1 - static_cast<double>(head_px) / height, band = 24.0 / height;
     for (std::size_t k = 0; k < n; ++k) {
       const int c = static_cast<int>(k) % cols, r = static_cast<int>(k) / cols;
+      const double top_y = grid_top - r * cell_h;
       vtkSmartPointer<vtkRenderer> view =
-          strip(strip_window, c * cell_w, grid_top - (r + 1) * cell_h, (c + 1) * cell_w, grid_top - r * cell_h);
+          strip(strip_window, c * cell_w, top_y - cell_h, (c + 1) * cell_w, top_y - band);
       vtkNew<vtkActor> actor;
       show_step(actor, drawing(k), style);
       view->AddActor(actor);
       view->SetUseFXAA(fxaa);
-      view->AddActor2D(text(label(k), 13, 0.04, 0.94, VTK_TEXT_LEFT));
-      place_view(view, steps, flat, true, plan.up, 1.0);
+      under->AddActor2D(text(label(k), 13, (c + 0.04) * cell_w, top_y - band / 2, VTK_TEXT_LEFT));
+      place_view(view, steps, flat, true, plan.up, static_cast<double>(cell) / (cell - 24.0));
     }
     vtkSmartPointer<vtkRenderer> strip_head = strip(strip_window, 0, grid_top, 1, 1);
     strip_head->AddActor2D(
