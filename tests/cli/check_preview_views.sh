@@ -125,6 +125,15 @@ check "series without --steps: the same camera" pixels same_camera "$tmp/plain/g
 # Each step alone is fitted to itself: step 1 is then not where step 2 draws it (what --steps avoids).
 preview "$tmp/g/growth/s1.vtp" -o "$tmp/alone"
 check "a step alone has a camera of its own" fails pixels same_camera "$tmp/alone/s1.png" "$tmp/frames/frame_1.png"
+# A step without the field the others are coloured by is still drawn (in the plain colour), in place.
+sed 's|<PointData>.*</PointData>||' "$tmp/g/growth/s1.vtp" >"$tmp/g/growth/bare.vtp"
+sed 's/s1.vtp/bare.vtp/' "$tmp/g/growth.pvd" >"$tmp/g/bare.pvd"
+preview "$tmp/g/bare.pvd" --steps -o "$tmp/bare"
+check "a step without the field: exit 0 ($(head -1 "$tmp/err"))" test "$code" = 0
+pixels frames "$tmp/bare/bare.apng" "$tmp/bare_frames" >/dev/null
+check "a step without the field: drawn, in place" pixels same_camera "$tmp/bare_frames/frame_0.png" \
+  "$tmp/bare_frames/frame_1.png"
+
 # A series whose step is missing: one line naming it, nothing written.
 sed 's/s1.vtp/gone.vtp/' "$tmp/g/growth.pvd" >"$tmp/g/broken.pvd"
 preview "$tmp/g/broken.pvd" --steps -o "$tmp/broken"

@@ -264,7 +264,7 @@ StepDrawing step_drawing(const Dataset& d, const SceneStyle& style) {
 void show_step(vtkActor* actor, const StepDrawing& drawing, const SceneStyle& style) {
   actor->SetMapper(drawing.mapper);
   vtkProperty* p = actor->GetProperty();
-  if (drawing.mapper->GetScalarVisibility() == 0) p->SetColor(0.45, 0.58, 0.78);
+  p->SetColor(0.45, 0.58, 0.78);  // also where a step lacks the field the others are coloured by
   p->LightingOn();
   if (drawing.surface) {
     p->SetAmbient(0.15);
