@@ -193,4 +193,13 @@ kill -INT "$pid2"
 wait "$pid2"
 pid2=
 
+# An output folder spelt with a trailing slash, absolute: the first run's files are published (walking up from
+# a file to "DIR/" once never stopped, at 100% CPU) and Ctrl-C still ends the watcher.
+"$selfsim" run r.lua --watch -o "$tmp/slash/" >../log5.txt 2>../err5.txt &
+pid2=$!
+until_ok test -f "$tmp/slash/c.svg" || fail "-o DIR/ published nothing: $(tail -3 ../log5.txt ../err5.txt)"
+kill -INT "$pid2"
+wait "$pid2"
+pid2=
+
 finish

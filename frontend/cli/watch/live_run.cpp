@@ -39,9 +39,14 @@ std::vector<std::string> publish(const std::filesystem::path& staging, const std
   std::error_code ec;
   for (const std::filesystem::path& rel : files) {
     const std::filesystem::path to = out / rel;
-    for (std::filesystem::path up = to.parent_path(); up != out && !up.empty(); up = up.parent_path())
+    // The folders between the output folder and the file, walked down from the output folder: walking up
+    // from the file until it equals `out` never ends when `out` is spelt otherwise ("out/", "./out").
+    std::filesystem::path up = out;
+    for (const std::filesystem::path& part : rel.parent_path()) {
+      up /= part;
       if (std::filesystem::is_symlink(std::filesystem::symlink_status(up, ec)))
         throw Error("'" + up.string() + "' is a link; not writing through it");
+    }
     if (std::filesystem::is_directory(std::filesystem::symlink_status(to, ec)))
       throw Error("'" + to.string() + "' is a folder where the run's file goes");
   }
