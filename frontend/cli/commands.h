@@ -56,7 +56,7 @@ struct PreviewConfig {
   double max_points = default_max_points;  // a .vdb's tiles weighed against it (as run's --max-points)
   std::string field;                       // --field: colour by it (empty: the natural field)
   int up = -1;                             // --up: 0, 1, 2 for x, y, z; -1: each file's own (up_axis.h)
-  bool steps = false;                      // --steps: also NAME.steps.png and NAME.apng of a series' steps
+  bool steps = false;                      // --steps: also NAME.steps.png and NAME.apng of each series
 };
 // Throws UsageError.
 PreviewConfig parse_preview_arguments(const std::vector<std::string>& args);

@@ -235,7 +235,7 @@ int preview_command(const PreviewConfig& config) {
       io::PreviewOptions options;
       options.field = config.field;
       options.up = config.up;
-      options.steps = config.steps;
+      options.steps = config.steps && series;  // a single file has no steps to film: its PNG alone
       options.name = file.filename().string();
       // "step 3 of 10", and the series' own time of the step where it gives one ("step 3 of 10, t = 2").
       const std::vector<double> times = series ? io::read_series_times(file) : std::vector<double>{};
@@ -256,7 +256,7 @@ int preview_command(const PreviewConfig& config) {
                                    : leaf;
       std::vector<std::pair<std::string, const std::string*>> files;
       std::string animation;
-      if (config.steps) {
+      if (options.steps) {
         std::vector<io::ApngFrame> frames;
         for (const std::string& png : pictures.frames) frames.push_back({png, frame_seconds(pictures.frames.size())});
         animation = io::animated_png(frames);

@@ -122,6 +122,12 @@ check "series without --steps: the still alone" test "$(grep -c '^wrote ' "$tmp/
 # the same bytes.)
 check "series without --steps: the same camera" pixels same_camera "$tmp/plain/growth.png" "$tmp/steps/growth.png" \
   drawing
+# --steps among other files: the series get their filmstrip and animation, a single file its PNG alone.
+preview "$tmp/g/growth/s1.vtp" "$tmp/g/growth.pvd" --steps -o "$tmp/mixed"
+check "--steps with a single file: its PNG alone" test -e "$tmp/mixed/s1.png" -a ! -e "$tmp/mixed/s1.apng" -a \
+  ! -e "$tmp/mixed/s1.steps.png"
+check "--steps with a single file: the series' three" test -e "$tmp/mixed/growth.apng" -a -e "$tmp/mixed/growth.steps.png"
+
 # Each step alone is fitted to itself: step 1 is then not where step 2 draws it (what --steps avoids).
 preview "$tmp/g/growth/s1.vtp" -o "$tmp/alone"
 check "a step alone has a camera of its own" fails pixels same_camera "$tmp/alone/s1.png" "$tmp/frames/frame_1.png"
