@@ -58,11 +58,12 @@ build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS) --target selfsim
 
 # Runs the gallery (examples/gallery.lua: one result of each part of selfsim), draws a PNG of each output
-# with `selfsim preview`, and renders the run's ParaView view (out/view.py) to out/view.png with pvbatch.
+# with `selfsim preview` (and of each growth every step, NAME.steps.png, and its animation, NAME.apng),
+# and renders the run's ParaView view (out/view.py) to out/view.png with pvbatch.
 demo: deps build
 	rm -rf out
 	$(BUILD)/selfsim run examples/gallery.lua -o out
-	$(BUILD)/selfsim preview out/*.svg out/*.vtp out/*.stl out/*.pvd
+	$(BUILD)/selfsim preview --steps out/*.svg out/*.vtp out/*.stl out/*.pvd
 	SELFSIM_PARAVIEW_PYTHON=$(PARAVIEW_PYTHON) scripts/pvbatch-selfsim out/view.py --png out/view.png
 	@echo
 	@echo "Done: $$(find out -type f | wc -l) files in $$(pwd)/out: .png pictures of everything, .svg for a browser, .vtp and"

@@ -19,6 +19,20 @@ drawing("gosper", curves.gosper():curve { level = 4 + detail })
 drawing("arrowhead_star", curves.arrowhead_star(5 + detail))
 drawing("arrowhead_hexagon", curves.arrowhead_hexagon(5 + detail))
 
+-- A plant: ABOP's Figure 2.6 (Honda's monopodial tree). A grammar that branches keeps the turtle's frame,
+-- so the tree stands up along +y from the origin; '!' gives each branch its width (drawn as tubes) and the
+-- curve's `branch_order` tells the trunk (0) from its branches.
+local tree = lsystem {
+  axiom = "A(1, 10)", define = { r1 = 0.9, r2 = 0.6, a0 = 45, a2 = 45, d = 137.5, wr = 0.707 },
+  rules = {
+    "A(l, w) -> !(w) F(l) [ &(a0) B(l*r2, w*wr) ] /(d) A(l*r1, w*wr)",
+    "B(l, w) -> !(w) F(l) [ -(a2) $ C(l*r2, w*wr) ] C(l*r1, w*wr)",
+    "C(l, w) -> !(w) F(l) [ +(a2) $ B(l*r2, w*wr) ] B(l*r1, w*wr)",
+  },
+  tropism = { 0, -0.05, 0 },
+}
+save(tree:curve(math.max(2, 10 + detail)), "tree.vtp")
+
 -- Kaplan's smooth self-similar curve: a B-spline base curve hoisted onto itself, boundary mode "rotate".
 local P = bspline { points = { { 0, 0 }, { -0.25, 0.35 }, { 0.5, 0.45 }, { 1.25, 0.35 }, { 1, 0 } } }
 local smooth = hoist.iterate(P, { multiplicity = 2, generations = math.max(1, 4 + detail), boundary = "rotate" })
