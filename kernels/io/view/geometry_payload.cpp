@@ -5,7 +5,6 @@
 #include <cstring>
 #include <functional>
 #include <limits>
-#include <set>
 
 #include "kernels/base/error.h"
 #include "kernels/io/text/json_text.h"
@@ -75,29 +74,6 @@ Painted paint(const Dataset& d, const Colouring& c, Progress& progress) {
 }
 
 }  // namespace
-
-Colouring summaries_colouring(std::span<const std::vector<FieldSummary>> steps) {
-  if (steps.empty()) return {};
-  Colouring c = natural_colouring(steps.back());
-  if (c.field.empty()) return c;
-  std::set<int> classes(c.categories.begin(), c.categories.end());
-  for (const std::vector<FieldSummary>& step : steps)
-    for (const FieldSummary& f : step)
-      if (f.name == c.field && f.on_points == c.on_points && f.components == 1) {
-        c.min = std::min(c.min, f.min);
-        c.max = std::max(c.max, f.max);
-        classes.insert(f.distinct.begin(), f.distinct.end());
-      }
-  if (c.categorical) {
-    if (classes.size() <= max_categories)
-      c.categories.assign(classes.begin(), classes.end());
-    else {  // the classes of all steps together are too many to tell apart: a ramp after all
-      c.categorical = false;
-      c.categories.clear();
-    }
-  }
-  return c;
-}
 
 bool has_own_colours(const Dataset& d) {
   if (d.shapes != CellShapes::lines) return false;

@@ -26,11 +26,6 @@
 
 namespace selfsim::io {
 
-// The colouring of a series from its steps' summaries alone (one step read at a time; steps_colouring holds
-// them all): the last step's natural choice, with its range and classes taken over every step, so the colours
-// mean the same at every step (series_colouring's rule).
-Colouring summaries_colouring(std::span<const std::vector<FieldSummary>> steps);
-
 // A curve's own colours: a cell field `color` of three components (red, green, blue in [0, 1]: an SVG's
 // strokes read back), one per cell, in a dataset of lines alone. The preview draws them as they are when no
 // field is asked for, and so does the view (with no colouring field).

@@ -193,4 +193,11 @@ Colouring steps_colouring(std::span<const Dataset> steps, const std::string& nam
   return c;
 }
 
+Colouring summaries_colouring(std::span<const std::vector<FieldSummary>> steps) {
+  if (steps.empty()) return {};
+  Colouring c = natural_colouring(steps.back());
+  widen(c, steps, [](const std::vector<FieldSummary>& summary) -> const std::vector<FieldSummary>& { return summary; });
+  return c;
+}
+
 }  // namespace selfsim::io

@@ -64,5 +64,8 @@ Colouring series_colouring(std::span<const ValueRef> steps, Progress& progress =
 // The same for datasets read back (a preview's steps): the field named `name` (named_colouring), or the
 // natural one when `name` is empty, chosen on the last step, its range and categories over every step.
 Colouring steps_colouring(std::span<const Dataset> steps, const std::string& name = {});
+// The same from the steps' summaries alone (the studio reads one step at a time, steps_colouring holds them
+// all): the natural choice on the last step, its range and classes over every step.
+Colouring summaries_colouring(std::span<const std::vector<FieldSummary>> steps);
 
 }  // namespace selfsim::io
