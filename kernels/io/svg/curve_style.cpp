@@ -3,9 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kernels/base/check.h"
 #include "kernels/base/error.h"
 #include "kernels/io/text/colour.h"
-#include "kernels/io/view/palette.h"
+#include "kernels/io/text/palette.h"
 
 namespace selfsim::io {
 
@@ -81,12 +82,12 @@ CurveStyles::CurveStyles(const Polyline& c, const SaveOptions& opt, double units
   for (std::size_t i = 0; point_color_ != nullptr && i < c.points.size(); ++i)
     if (const double k = point_color_->at(i); !(std::abs(k) <= 2147483647))
       throw Error("point field 'color' of point " + std::to_string(i + 1) +
-                  " must be a colour index (a whole number), got " + std::to_string(k));
+                  " must be a colour index (a whole number), got " + number_text(k));
   for (std::size_t i = 0; point_width_ != nullptr && i < c.points.size(); ++i) {
     const double w = point_width_->at(i) * turtle_width_unit * units;
     if (!(w >= 0 && w < 1e6))
       throw Error("point field 'width' of point " + std::to_string(i + 1) +
-                  " must be a line width from 0, in the curve's units (it draws " + std::to_string(w) +
+                  " must be a line width from 0, in the curve's units (it draws " + number_text(w) +
                   " drawing units)");
   }
   // Fields may come from a loaded file: check them once here rather than write a colour nobody chose.

@@ -6,7 +6,7 @@
 // A turtle's curve may also carry one-component point fields (module_turtle.h): `width` (its '!' line width, in
 // the curve's own units) and `color` (its '\'' colour index). A segment takes its end point's: the width drawn
 // turtle_width_unit times its value in the curve's units (so it scales with the drawing: a trunk of width 10 is
-// ten times a twig of width 1), the stroke the index's class_colour (io/view/palette.h, the colours previews
+// ten times a twig of width 1), the stroke the index's class_colour (io/text/palette.h, the colours previews
 // use). Both only where nothing else styles the path (an option or a cell field wins) and only for paths that
 // are not filled (a fill needs whole paths).
 #pragma once

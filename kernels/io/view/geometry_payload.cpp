@@ -8,7 +8,7 @@
 
 #include "kernels/base/error.h"
 #include "kernels/io/text/json_text.h"
-#include "kernels/io/view/palette.h"
+#include "kernels/io/text/palette.h"
 #include "kernels/io/view/tube_rings.h"
 
 namespace selfsim::io {
@@ -87,7 +87,7 @@ std::string colouring_json(const Colouring& c, bool own) {
   std::string values;
   if (c.categorical)
     for (std::size_t i = 0; i < c.categories.size(); ++i) {
-      classes.push_back(class_colour(i));
+      classes.push_back(category_colour(c.categories[i], i, coloured_by_value(c.field)));
       values += (i ? ", " : "") + std::to_string(c.categories[i]);
     }
   const auto number = [](double v) { return std::isfinite(v) ? json_number(v) : std::string("0"); };
@@ -104,7 +104,8 @@ std::array<std::uint8_t, 3> value_colour(const Colouring& c, double v) {
   if (c.categorical) {
     const auto at = std::lower_bound(c.categories.begin(), c.categories.end(), v);
     if (at == c.categories.end() || *at != v) return bytes_of(grey);
-    return bytes_of(class_colour(static_cast<std::size_t>(at - c.categories.begin())));
+    return bytes_of(
+        category_colour(*at, static_cast<std::size_t>(at - c.categories.begin()), coloured_by_value(c.field)));
   }
   const double span = c.max > c.min ? c.max - c.min : 1;
   return bytes_of(ramp_colour((v - c.min) / span));

@@ -193,6 +193,10 @@ Colouring steps_colouring(std::span<const Dataset> steps, const std::string& nam
   return c;
 }
 
+Rgb category_colour(int value, std::size_t rank, bool by_value) {
+  return class_colour(by_value ? static_cast<std::size_t>(std::abs(static_cast<long long>(value))) : rank);
+}
+
 Colouring summaries_colouring(std::span<const std::vector<FieldSummary>> steps) {
   if (steps.empty()) return {};
   Colouring c = natural_colouring(steps.back());

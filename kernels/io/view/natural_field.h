@@ -11,6 +11,7 @@
 #include "kernels/geom/field.h"
 #include "kernels/io/dataset/dataset.h"
 #include "kernels/io/format.h"
+#include "kernels/io/text/palette.h"
 
 namespace selfsim::io {
 
@@ -28,6 +29,9 @@ struct FieldSummary {
 // than by their rank among the values present: a grammar's colour index `color` (from '), so that a preview, a
 // ParaView view and the SVG or EPS the grammar strokes (style_runs.h) give index 3 the same colour.
 inline bool coloured_by_value(const std::string& field) { return field == "color"; }
+// The colour of a class: by value, class_colour(|value|) (a negative index is drawn as its magnitude, as the SVG
+// writer strokes it), or by its rank among the values present. Every picture of a class field uses this.
+Rgb category_colour(int value, std::size_t rank, bool by_value);
 
 // More distinct values than this and a class field is drawn on a continuous map after all.
 inline constexpr std::size_t max_categories = 256;

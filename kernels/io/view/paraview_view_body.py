@@ -56,15 +56,17 @@ def category_colours(n):
     in a cycle, and lightness and saturation step through three levels out of phase with the hue, so even
     two classes whose hues come close again (every 8 or 13 steps) differ in lightness. With 131 tile
     classes a smooth ramp would read as bands; this reads as distinct patches."""
+    return [category_colour(i) for i in range(n)]
+
+
+def category_colour(i):
+    """The i-th class colour (category_colours; kernels/io/text/palette.cpp computes the same)."""
     golden = (3.0 - math.sqrt(5.0)) / 2.0   # the golden angle as a fraction of a turn
     lightness = [0.50, 0.68, 0.36]
     saturation = [0.75, 0.55, 0.90]
-    colours = []
-    for i in range(n):
-        hue = (0.58 + i * golden) % 1.0      # start at a blue so a few classes look calm
-        r, g, b = colorsys.hls_to_rgb(hue, lightness[i % 3], saturation[(i // 3) % 3])
-        colours.append([r, g, b])
-    return colours
+    hue = (0.58 + i * golden) % 1.0          # start at a blue so a few classes look calm
+    r, g, b = colorsys.hls_to_rgb(hue, lightness[i % 3], saturation[(i // 3) % 3])
+    return [r, g, b]
 
 
 def value_label(v):
@@ -87,11 +89,11 @@ def colour_continuous(display, lut, field, low, high):
 def colour_categorical(lut, categories, by_value=False):
     """One annotation and one colour per category: ParaView draws each value in its own colour and the
     scalar bar lists the classes instead of a ramp. `by_value` (a grammar's colour index `color`): each
-    value takes the value-th colour, as the SVG the grammar strokes does, not the colour of its rank."""
+    value takes the colour of its magnitude, as the SVG the grammar strokes does, not the colour of its rank
+    (natural_field.h, category_colour)."""
     annotations, colours = [], []
-    if by_value and categories and min(categories) >= 0:
-        palette = category_colours(int(max(categories)) + 1)
-        chosen = [palette[int(v)] for v in categories]
+    if by_value:
+        chosen = [category_colour(abs(int(v))) for v in categories]
     else:
         chosen = category_colours(len(categories))
     for value, rgb in zip(categories, chosen):

@@ -7,9 +7,9 @@
 #include "kernels/base/error.h"
 #include "kernels/io/text/colour.h"
 #include "kernels/io/text/json_text.h"
+#include "kernels/io/text/palette.h"
 #include "kernels/io/text/put_number.h"
 #include "kernels/io/text/xml_text.h"
-#include "kernels/io/view/palette.h"
 
 namespace selfsim::io {
 

@@ -21,7 +21,7 @@
 #include <limits>
 #include <string>
 
-#include "kernels/io/view/palette.h"
+#include "kernels/io/text/palette.h"
 
 namespace selfsim::io {
 
@@ -42,7 +42,7 @@ void category_table(vtkLookupTable* lut, const std::vector<int>& categories, boo
   lut->SetNumberOfTableValues(std::max<vtkIdType>(n, 1));
   for (vtkIdType i = 0; i < n; ++i) {
     const int value = categories[static_cast<std::size_t>(i)];
-    const Rgb c = class_colour(by_value && value >= 0 ? static_cast<std::size_t>(value) : static_cast<std::size_t>(i));
+    const Rgb c = category_colour(value, static_cast<std::size_t>(i), by_value);
     lut->SetTableValue(i, c[0], c[1], c[2], 1);
     lut->SetAnnotation(vtkVariant(static_cast<double>(categories[static_cast<std::size_t>(i)])),
                        std::to_string(categories[static_cast<std::size_t>(i)]));
@@ -87,9 +87,8 @@ vtkSmartPointer<vtkUnsignedCharArray> class_bytes(const std::string& name, const
     const double v = f.values[i * static_cast<std::size_t>(f.components)];
     const auto at = std::lower_bound(categories.begin(), categories.end(), static_cast<int>(v));
     const bool known = at != categories.end() && *at == v;
-    const Rgb c = !known                 ? Rgb{0.6, 0.6, 0.6}
-                  : by_value && *at >= 0 ? class_colour(static_cast<std::size_t>(*at))
-                                         : class_colour(static_cast<std::size_t>(at - categories.begin()));
+    const Rgb c =
+        known ? category_colour(*at, static_cast<std::size_t>(at - categories.begin()), by_value) : Rgb{0.6, 0.6, 0.6};
     for (int k = 0; k < 3; ++k)
       out[3 * i + static_cast<std::size_t>(k)] = static_cast<unsigned char>(std::lround(255 * c[k]));
   }

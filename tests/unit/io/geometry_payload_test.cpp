@@ -7,7 +7,7 @@
 #include <cstring>
 
 #include "kernels/base/error.h"
-#include "kernels/io/view/palette.h"
+#include "kernels/io/text/palette.h"
 
 using namespace selfsim;
 
@@ -111,6 +111,24 @@ TEST(GeometryPayload, CellClassesSplitOnlyTheVerticesBetweenColours) {
   d.cell_fields["level"] = {1, {0, 1}};
   const Decoded same = decode(io::geometry_payload(d, io::Colouring{"tile_class", false, true, 5, 5, {5}}, 1 << 20));
   EXPECT_EQ(same.vertices, 4u);  // one colour: nothing split
+}
+
+// A grammar's colour index takes the colour of its value, as the SVG strokes it and the preview draws it, not
+// of its rank among the indices present; a negative index the colour of its magnitude.
+TEST(GeometryPayload, ColourIndicesTakeTheirValuesColour) {
+  io::Dataset d = two_triangles();
+  d.cell_fields["color"] = {1, {4, -2}};
+  const io::Colouring c = io::natural_colouring(io::summarise(d));
+  ASSERT_TRUE(c.categorical);
+  ASSERT_EQ(c.field, "color");
+  const Decoded p = decode(io::geometry_payload(d, c, 1 << 20));
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(colour_of(p, p.indices[k]), rgb(io::class_colour(4)));
+    EXPECT_EQ(colour_of(p, p.indices[3 + k]), rgb(io::class_colour(2)));
+  }
+  // The legend's swatches are the same colours.
+  EXPECT_NE(p.header.find(io::colour_hex(io::class_colour(4))), std::string::npos) << p.header;
+  EXPECT_NE(p.header.find(io::colour_hex(io::class_colour(2))), std::string::npos) << p.header;
 }
 
 TEST(GeometryPayload, PolylinesBecomeSegmentsAndPolygonsFans) {

@@ -12,7 +12,7 @@
 #include "kernels/io/save.h"
 #include "kernels/io/svg/curve_style.h"
 #include "kernels/io/text/colour.h"
-#include "kernels/io/view/palette.h"
+#include "kernels/io/text/palette.h"
 
 using namespace selfsim;
 using io_fixtures::count;

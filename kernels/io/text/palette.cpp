@@ -1,4 +1,4 @@
-#include "kernels/io/view/palette.h"
+#include "kernels/io/text/palette.h"
 
 #include <algorithm>
 #include <cmath>
