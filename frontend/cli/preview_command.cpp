@@ -264,6 +264,11 @@ int preview_command(const PreviewConfig& config) {
         files.emplace_back(base + ".apng", &animation);
       }
       files.emplace_back(leaf, &pictures.still);
+      // The three are one result: a folder in the way of the last is found before the first is written,
+      // not after it (a filmstrip left without its still and animation).
+      for (const auto& [leaf_name, bytes] : files)
+        if (std::error_code ec; std::filesystem::is_directory(std::filesystem::symlink_status(root / leaf_name, ec)))
+          throw Error("cannot write '" + (root / leaf_name).string() + "': a folder of that name is in the way");
       for (const auto& [leaf_name, bytes] : files) {
         io::OutputFile out_file(root, leaf_name);  // every folder of the name opened below root, never through a link
         out_file.write(*bytes);

@@ -146,4 +146,26 @@ preview "$tmp/g/broken.pvd" --steps -o "$tmp/broken"
 check "missing step: exit 1, one line ($(head -1 "$tmp/err"))" test "$code" = 1 -a "$(wc -l <"$tmp/err")" = 1
 check "missing step: names it" grep -q "cannot read '$tmp/g/growth/gone.vtp'" "$tmp/err"
 check "missing step: nothing written" test ! -e "$tmp/broken"
+# A folder in the way of the animation (or the still): one line, and none of the three written (the
+# filmstrip was written before the animation's name was found taken).
+mkdir -p "$tmp/taken/growth.apng"
+preview "$tmp/g/growth.pvd" --steps -o "$tmp/taken"
+check "a folder named growth.apng: exit 1, one line ($(head -1 "$tmp/err"))" test "$code" = 1 -a \
+  "$(wc -l <"$tmp/err")" = 1
+check "a folder named growth.apng: says so" grep -q "cannot write '$tmp/taken/growth.apng': a folder" "$tmp/err"
+check "a folder named growth.apng: no filmstrip, no still" test ! -e "$tmp/taken/growth.steps.png" -a \
+  ! -e "$tmp/taken/growth.png"
+
+# A long series: the filmstrip shows 48 of its 60 steps (10 columns of 300 px; all 60 would take 11), the
+# animation every step. (Thousands of cells made a picture wider than OpenGL draws.)
+{
+  echo '<?xml version="1.0"?><VTKFile type="Collection" version="0.1"><Collection>'
+  for t in $(seq 1 60); do echo "<DataSet timestep=\"$t\" file=\"growth/s$((t % 2 + 1)).vtp\"/>"; done
+  echo '</Collection></VTKFile>'
+} >"$tmp/g/long.pvd"
+preview "$tmp/g/long.pvd" --steps -o "$tmp/long"
+check "60 steps: exit 0 ($(head -1 "$tmp/err"))" test "$code" = 0
+check "60 steps: a filmstrip of 48 cells ($(grep steps.png "$tmp/out"))" grep -q \
+  "^wrote $tmp/long/long.steps.png (3000x[0-9]*, 60 steps)" "$tmp/out"
+check "60 steps: an animation of 60 frames" grep -q "^wrote $tmp/long/long.apng (1200x600, 60 frames)" "$tmp/out"
 finish

@@ -45,9 +45,15 @@ struct PreviewOptions {
 
 struct PreviewPictures {
   std::string still;                // the last step: PNG bytes
-  std::string filmstrip;            // with `steps`: every step in a grid
+  std::string filmstrip;            // with `steps`: every step in a grid (filmstrip_steps of a long series)
   std::vector<std::string> frames;  // with `steps`: every step as the still draws the last
 };
+
+// The filmstrip shows at most this many steps: a long series, evenly spaced ones from the first to the last.
+inline constexpr std::size_t filmstrip_cells = 48;
+// The steps (0-based, increasing) a filmstrip of n steps shows: all of them, or filmstrip_cells of them
+// starting at the first and ending at the last.
+std::vector<std::size_t> filmstrip_steps(std::size_t n);
 
 // True when d is a flat picture: every point at z = 0.
 bool flat_dataset(const Dataset& d);

@@ -211,11 +211,15 @@ int render_in_child(PipeOut& out, std::span<const Dataset> steps, const Plan& pl
 
   if (frames) {
     // The filmstrip: every step in a grid of cells (the oblique view of a 3D drawing), each captioned,
-    // under one title and over one legend, in a window of its own.
+    // under one title and over one legend, in a window of its own. A long series shows filmstrip_cells of
+    // its steps, evenly spaced from the first to the last: a grid of thousands of cells would be a picture
+    // wider than OpenGL draws (16384 px) and too fine to read; its animation keeps every step.
+    const std::vector<std::size_t> shown = filmstrip_steps(n);
+    const std::size_t cells_n = shown.size();
     const int cell = 300,
               cols = static_cast<int>(std::min<std::size_t>(
-                  n, static_cast<std::size_t>(std::ceil(std::sqrt(2.0 * static_cast<double>(n)))))),
-              rows = static_cast<int>((n + static_cast<std::size_t>(cols) - 1) / static_cast<std::size_t>(cols));
+                  cells_n, static_cast<std::size_t>(std::ceil(std::sqrt(2.0 * static_cast<double>(cells_n)))))),
+              rows = static_cast<int>((cells_n + static_cast<std::size_t>(cols) - 1) / static_cast<std::size_t>(cols));
     const int head_px = 40, legend_px = coloured ? 80 : 0;
     const int width = std::max(cols * cell, 600), height = rows * cell + head_px + legend_px;
     vtkNew<vtkRenderWindow> strip_window;
@@ -227,8 +231,9 @@ int render_in_child(PipeOut& out, std::span<const Dataset> steps, const Plan& pl
     vtkSmartPointer<vtkRenderer> under = strip(strip_window, 0, 0, 1, 1);
     const double cell_w = static_cast<double>(cell) / width, cell_h = static_cast<double>(cell) / height;
     const double grid_top = 1 - static_cast<double>(head_px) / height, band = 24.0 / height;
-    for (std::size_t k = 0; k < n; ++k) {
-      const int c = static_cast<int>(k) % cols, r = static_cast<int>(k) / cols;
+    for (std::size_t i = 0; i < cells_n; ++i) {
+      const std::size_t k = shown[i];
+      const int c = static_cast<int>(i) % cols, r = static_cast<int>(i) / cols;
       const double top_y = grid_top - r * cell_h;
       vtkSmartPointer<vtkRenderer> view =
           strip(strip_window, c * cell_w, top_y - cell_h, (c + 1) * cell_w, top_y - band);
@@ -242,8 +247,9 @@ int render_in_child(PipeOut& out, std::span<const Dataset> steps, const Plan& pl
     vtkSmartPointer<vtkRenderer> strip_head = strip(strip_window, 0, grid_top, 1, 1);
     strip_head->AddActor2D(
         text(shown_title(plan.options.name.empty() ? plan.title : plan.options.name), 18, 0.012, 0.5, VTK_TEXT_LEFT));
-    strip_head->AddActor2D(
-        text(std::to_string(n) + " steps, one camera, one colour range", 13, 0.988, 0.5, VTK_TEXT_RIGHT));
+    strip_head->AddActor2D(text((cells_n < n ? std::to_string(cells_n) + " of " : std::string()) + std::to_string(n) +
+                                    " steps, one camera, one colour range",
+                                13, 0.988, 0.5, VTK_TEXT_RIGHT));
     if (coloured) {
       vtkSmartPointer<vtkRenderer> strip_legend = strip(strip_window, 0, 0, 1, static_cast<double>(legend_px) / height);
       add_legend(strip_legend, plan.colouring, lut, 10);
@@ -280,6 +286,13 @@ std::string explained(const std::string& reason) {
 
 }  // namespace
 
+std::vector<std::size_t> filmstrip_steps(std::size_t n) {
+  std::vector<std::size_t> shown;
+  const std::size_t m = std::min(n, filmstrip_cells);
+  for (std::size_t i = 0; i < m; ++i) shown.push_back(m == 1 ? n - 1 : (i * (n - 1) + (m - 1) / 2) / (m - 1));
+  return shown;
+}
+
 bool flat_dataset(const Dataset& d) {
   return std::all_of(d.points.begin(), d.points.end(), [](const std::array<double, 3>& p) { return p[2] == 0; });
 }
@@ -307,7 +320,11 @@ PreviewPictures render_preview(std::span<const Dataset> steps, const std::string
   plan.up = options.up >= 0 && options.up <= 2 ? options.up : up_axis(last);
   ChildLimits limits;
   limits.what = "the VTK renderer";
-  limits.seconds = 60 + static_cast<double>(total) / 2e5;
+  // Each frame of --steps is a render and a PNG of its own (about 0.1 s in Mesa's software renderer): a
+  // growth of a thousand steps is not stopped at a limit sized for one picture (the user's --timeout is
+  // the bound there).
+  limits.seconds =
+      60 + static_cast<double>(total) / 2e5 + (options.steps ? 0.5 * static_cast<double>(steps.size()) : 0);
   PreviewPictures pictures;
   try {
     run_in_child(
