@@ -129,10 +129,18 @@ void write_view(const RunContext& run) {
   }
 }
 
+// An earlier run's results.json in the output folder goes when this run gives none or fails: left there it
+// would stand for this run's, and a sweep gathering the folder would report numbers this run never gave.
+void remove_old_results(const std::filesystem::path& out) {
+  std::error_code ec;
+  if (!std::filesystem::is_directory(out, ec)) return;  // a run that failed before making its folder
+  io::remove_files(out, {}, [](const std::string& name) { return name == io::results_file; });
+}
+
 // results.json beside the run's outputs when the recipe gave results (result(), bind_result.cpp): what a
 // sweep gathers into results.csv. A run that gave none writes nothing, as before results existed.
 void write_results(lua_State* L, const RunContext& run) {
-  if (run.results.empty()) return;
+  if (run.results.empty()) return remove_old_results(run.config.out_dir);
   const std::string text = io::results_json(run.results, run_provenance(L, io::results_file));
   io::write_whole(run.config.out_dir, io::results_file, text);
   if (run.config.quiet) return;
@@ -302,6 +310,10 @@ int run_command(const RunConfig& given) {
     std::fflush(stderr);
     run.reported = true;
     code = interrupted.load() ? 130 : 1;
+    try {
+      remove_old_results(config.out_dir);
+    } catch (const Error&) {  // the run's own failure is the message that matters
+    }
   } else {
     write_view(run);
     try {

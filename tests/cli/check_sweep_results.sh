@@ -30,6 +30,14 @@ PY
 printf 'save(polyline({ { 0, 0 }, { 1, 1 } }), "p.svg")\n' >none.lua
 "$selfsim" run none.lua -o none -q || fail "a run without results"
 [ -e none/results.json ] && fail "a run that gave no result wrote results.json"
+# A later run into the same folder that gives none, or fails, takes the earlier run's results.json away: it
+# would stand for numbers this run never gave.
+"$selfsim" run none.lua -o one -q || fail "a run without results into a folder with results"
+[ -e one/results.json ] && fail "a run that gave no result left an earlier run's results.json"
+"$selfsim" run s.lua -o one --set x=2 -q || fail "the run with results again"
+printf 'result("x", 1)\nerror("no")\n' >fails.lua
+"$selfsim" run fails.lua -o one -q 2>/dev/null && fail "a failing recipe succeeded"
+[ -e one/results.json ] && fail "a failed run left an earlier run's results.json"
 
 # A local sweep: one row per run, in run order, values exact, the failed run's cells empty.
 check_table() { # FOLDER
