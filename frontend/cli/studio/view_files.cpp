@@ -87,9 +87,11 @@ void write_view(const std::filesystem::path& root, const std::string& file, cons
     std::optional<io::Dataset> only;
     int up = 1;
     bool own = false;  // the last step's own colours, drawn as they are (as the preview draws them)
+    std::size_t most_segments = 0;
     for (const std::filesystem::path& s : steps) {
       io::Dataset d = read_below(root, s, limits);
       summaries.push_back(io::summarise(d));
+      most_segments = std::max(most_segments, io::line_segments(d));
       widen(bounds, d);
       if (&s == &steps.back()) {  // the grown result's up and colours, as the preview takes them
         up = io::up_axis(d);
@@ -109,6 +111,8 @@ void write_view(const std::filesystem::path& root, const std::string& file, cons
     for (int j = 0; j < 3; ++j)
       if (bounds[2 * j + 1] > bounds[2 * j]) diagonal += std::pow(bounds[2 * j + 1] - bounds[2 * j], 2);
     widths.radius = 0.012 * (diagonal > 0 ? std::sqrt(diagonal) : 1);
+    // Tubes for every step or for none: a growth that turned from tubes to lines halfway would not read as one.
+    if (most_segments > io::max_tube_segments) widths.radius = 0;
     std::string names, urls;
     for (std::size_t i = 0; i < steps.size(); ++i) {
       const io::Dataset d = only ? std::move(*only) : read_below(root, steps[i], limits);

@@ -151,15 +151,19 @@ std::uint64_t tubes(const Dataset& d, const Painted& painted, const TubeWidths& 
 
 }  // namespace
 
+std::size_t line_segments(const Dataset& d) {
+  std::size_t segments = 0;
+  for (std::size_t i = 0, begin = 0; i < d.cell_ends.size(); begin = d.cell_ends[i++])
+    segments += d.cell_ends[i] - begin > 0 ? d.cell_ends[i] - begin - 1 : 0;
+  return segments;
+}
+
 bool drawn_as_tubes(const Dataset& d, const TubeWidths& widths) {
   if (d.shapes != CellShapes::lines || !(widths.radius > 0) || !(widths.max_width > 0)) return false;
   const auto w = d.point_fields.find("width");
   if (w == d.point_fields.end() || w->second.components != 1 || w->second.values.size() != d.points.size())
     return false;
-  std::size_t segments = 0;
-  for (std::size_t i = 0, begin = 0; i < d.cell_ends.size(); begin = d.cell_ends[i++])
-    segments += d.cell_ends[i] - begin > 0 ? d.cell_ends[i] - begin - 1 : 0;
-  return segments <= max_tube_segments;
+  return line_segments(d) <= max_tube_segments;
 }
 
 std::string geometry_payload(const Dataset& d, const Colouring& c, std::uint64_t max_bytes, const TubeWidths& widths,

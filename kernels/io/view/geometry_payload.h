@@ -53,6 +53,9 @@ inline constexpr int tube_sides = 8;
 // about a second where WebGL runs on the CPU, and 16 triangles a segment would pass that.
 inline constexpr std::size_t max_tube_segments = 50000;
 
+// The line segments of d's polylines.
+std::size_t line_segments(const Dataset& d);
+
 // Whether d is drawn as tubes with these widths: a dataset of lines alone, with a one-component point field
 // `width`, of at most max_tube_segments segments.
 bool drawn_as_tubes(const Dataset& d, const TubeWidths& widths);

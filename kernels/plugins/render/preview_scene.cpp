@@ -22,6 +22,7 @@
 #include <string>
 
 #include "kernels/io/text/palette.h"
+#include "kernels/io/view/geometry_payload.h"
 
 namespace selfsim::io {
 
@@ -95,15 +96,9 @@ vtkSmartPointer<vtkUnsignedCharArray> class_bytes(const std::string& name, const
   return a;
 }
 
-std::size_t segments(const Dataset& d) {
-  std::size_t n = 0;
-  for (std::size_t i = 0, begin = 0; i < d.cell_ends.size(); begin = d.cell_ends[i++]) n += d.cell_ends[i] - begin;
-  return n;
-}
-
 // Tube geometry (8 sides per segment) is built up to this many segments; past it lines are drawn as tubes
 // by the line shader, which costs nothing per segment but cannot vary the width.
-constexpr std::size_t max_tube_segments = 200000;
+constexpr std::size_t preview_tube_segments = 200000;
 // Past this many faces normals are computed without splitting at sharp edges or reorienting: both cost
 // more than the rest of a preview of a million-triangle mesh.
 constexpr vtkIdType max_careful_normals = 300000;
@@ -177,6 +172,9 @@ SceneStyle scene_style(std::span<const Dataset> steps, const Colouring& colourin
       for (double v : w->second.values)
         if (std::isfinite(v)) s.max_width = std::max(s.max_width, std::abs(v));
   }
+  // Tubes for every step or for none: a growth that turned from tubes to lines halfway would not read as one.
+  for (const Dataset& d : steps)
+    if (line_segments(d) > preview_tube_segments) s.max_width = 0;
   double diagonal = 0;
   for (int a = 0; a < 3; ++a) diagonal += hi[a] > lo[a] ? (hi[a] - lo[a]) * (hi[a] - lo[a]) : 0;
   s.size = diagonal > 0 ? std::sqrt(diagonal) : 1;
@@ -188,11 +186,11 @@ StepDrawing step_drawing(const Dataset& d, const SceneStyle& style) {
   vtkSmartPointer<vtkPolyData> poly = poly_data(d, style.colouring);
   out.mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
   out.surface = poly->GetNumberOfPolys() > 0;
-  const std::size_t n = segments(d);
+  const std::size_t n = line_segments(d);
   out.line_width = n < 4000 ? 2.5f : n < 40000 ? 1.5f : 1.0f;
   const auto width = d.point_fields.find("width");
   const bool widths = !out.surface && poly->GetNumberOfLines() > 0 && style.max_width > 0 &&
-                      width != d.point_fields.end() && width->second.components == 1 && n <= max_tube_segments;
+                      width != d.point_fields.end() && width->second.components == 1;
   const bool direct = style.direct && has_direct_colours(d) && poly->GetNumberOfPolys() == 0;
   if (direct) poly->GetCellData()->AddArray(colour_bytes(d.cell_fields.at(direct_colour_field)));
   if (widths) {

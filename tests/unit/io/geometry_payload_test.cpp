@@ -144,6 +144,16 @@ TEST(GeometryPayload, PolylinesBecomeSegmentsAndPolygonsFans) {
   EXPECT_EQ(colour_of(p, 4), io::value_colour(io::Colouring{}, 0));  // uncoloured: the preview's solid colour
 }
 
+// The count that decides tubes for a whole series: a polyline of n points has n - 1 segments, a lone point none.
+TEST(GeometryPayload, LineSegmentsOfPolylines) {
+  io::Dataset d;
+  d.points = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {5, 5, 5}, {0, 1, 0}, {0, 2, 0}};
+  d.cell_ends = {3, 4, 6};
+  d.cell_points = {0, 1, 2, 3, 4, 5};
+  EXPECT_EQ(io::line_segments(d), 3u);
+  EXPECT_EQ(io::line_segments(io::Dataset{}), 0u);
+}
+
 TEST(GeometryPayload, RefusesWhatCannotBeDrawn) {
   io::Dataset d = two_triangles();
   EXPECT_THROW(io::geometry_payload(d, {}, 200), Error);  // over the size it may take
