@@ -169,9 +169,14 @@ ViewChild::ViewChild(const RunConfig& limits, const std::filesystem::path& root,
     if (limits.timeout > 0)
       ::alarm(static_cast<unsigned>(std::min(4e9, std::ceil(limits.timeout * static_cast<double>(files.size())))));
     // The last run's indexes go first: a view this child does not finish (stopped by the next run, out of
-    // time) is then no view, shown as its PNG, never the last run's view under this run's name.
+    // time) is then no view, shown as its PNG, never the last run's view under this run's name. Its steps go
+    // too (N.bin): a series that grew shorter would leave its old last steps behind.
+    const auto last_runs = [](const std::string& name) {
+      return name == "index.json" ||
+             (name.size() > 4 && name.ends_with(".bin") && name.find_first_not_of("0123456789") == name.size() - 4);
+    };
     for (const std::string& f : files) try {
-        io::remove_files(root, view_folder(f), [](const std::string& name) { return name == "index.json"; });
+        io::remove_files(root, view_folder(f), last_runs);
       } catch (const Error&) {
       }
     int code = 0;

@@ -6,6 +6,7 @@
 #include <functional>
 #include <limits>
 
+#include "kernels/base/check.h"
 #include "kernels/base/error.h"
 #include "kernels/io/text/json_text.h"
 #include "kernels/io/text/palette.h"
@@ -180,8 +181,14 @@ std::string geometry_payload(const Dataset& d, const Colouring& c, std::uint64_t
       bounds[2 * j] = std::min(bounds[2 * j], p[j]);
       bounds[2 * j + 1] = std::max(bounds[2 * j + 1], p[j]);
     }
-  const std::array<double, 3> origin{(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2,
-                                     (bounds[4] + bounds[5]) / 2};
+  // Halves first: (lo + hi) / 2 overflows for points near the largest double. Positions go to the page as
+  // float32 relative to the origin, so half the extent must fit one, or a vertex would arrive infinite.
+  const std::array<double, 3> origin{bounds[0] / 2 + bounds[1] / 2, bounds[2] / 2 + bounds[3] / 2,
+                                     bounds[4] / 2 + bounds[5] / 2};
+  for (int j = 0; j < 3; ++j)
+    if (!(bounds[2 * j + 1] / 2 - bounds[2 * j] / 2 < 0.5 * std::numeric_limits<float>::max()))
+      throw Error("it is too large for a 3D view (an extent of " + number_text(bounds[2 * j + 1] - bounds[2 * j]) +
+                  "; a browser draws in 32-bit floats)");
 
   // What the cells become: a polygon of n points n - 2 triangles, a polyline of n points n - 1 segments.
   std::uint64_t triangles = 0, segments = 0;

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 
 #include "kernels/base/error.h"
@@ -169,6 +170,14 @@ TEST(GeometryPayload, RefusesWhatCannotBeDrawn) {
   io::Dataset bad = two_triangles();
   bad.cell_points[4] = 9;  // no such point
   EXPECT_THROW(io::geometry_payload(bad, {}, 1 << 20), Error);
+  // Far apart beyond what float32 holds (the page's positions would be infinite); near the largest double the
+  // origin must not overflow either. Far from zero but small is fine: positions are relative to the origin.
+  io::Dataset far = two_triangles();
+  far.points[0] = {-1e300, 0, 0};
+  EXPECT_THROW(io::geometry_payload(far, {}, 1 << 20), Error);
+  far.points = {{1.7e308, 0, 0}, {1.7e308, 1, 0}, {1.7e308, 0, 1}, {1.7e308, 1, 1}};
+  const Decoded p = decode(io::geometry_payload(far, {}, 1 << 20));
+  for (float v : p.positions) EXPECT_TRUE(std::isfinite(v));
 }
 
 TEST(GeometryPayload, StepsShareOneRangeAndTheLastStepsField) {
