@@ -36,22 +36,6 @@ constexpr double modules_per_point = 64;
 Vec3 lift(Vec2 p) { return {p.x, p.y, 0}; }
 Vec3 lift(Vec3 p) { return p; }
 
-constexpr std::string_view turns_3d = "&^\\/$";
-
-// Whether the axiom or a successor writes a symbol that `wanted` accepts.
-template <class F>
-bool writes(const Grammar& g, F wanted) {
-  auto in = [&](const std::vector<Call>& calls) {
-    return std::any_of(calls.begin(), calls.end(), [&](const Call& c) { return wanted(c.symbol); });
-  };
-  if (in(g.start)) return true;
-  for (const auto* rules : {&g.productions, &g.decomposition, &g.interpretation})
-    for (const Production& p : *rules)
-      for (const Successor& o : p.options)
-        if (in(o.modules)) return true;
-  return false;
-}
-
 template <class V, class Heading>
 class Turtle final : public ModuleSink {
  public:
@@ -63,8 +47,8 @@ class Turtle final : public ModuleSink {
         polygons_(polygons),
         progress_(progress),
         tree_(branches(g)),
-        widths_kept_(writes(g, [](std::uint8_t s) { return s == '!'; })),
-        colors_kept_(writes(g, [](std::uint8_t s) { return s == '\''; })),
+        widths_kept_(writes_symbol(g, '!')),
+        colors_kept_(writes_symbol(g, '\'')),
         heading_(start_heading(g, opt), &directions_) {
     // '+', '-' and '|' turn by their parameter even where the grammar's angle makes them turn by nothing.
     for (std::uint8_t s : {'+', '-', '|'})
@@ -383,7 +367,7 @@ Mesh module_polygons(const Grammar& g, const TurtleOptions& opt, Progress& progr
 double module_segments(const Grammar& g, int level, double max_points, Progress& progress) {
   // Without polygons every drawing module is a segment: a level whose size follows from its rules is
   // counted from them, however long (as the byte kernel's count is).
-  if (!writes(g, [](std::uint8_t s) { return s == '{'; })) {
+  if (!writes_symbol(g, '{')) {
     const Compiled c(g);
     std::array<bool, 256> draws{};
     for (int s = 0; s < 256; ++s) draws[s] = c.action[s] == Action::Draw;

@@ -7,8 +7,6 @@ namespace selfsim::lsystem {
 
 namespace {
 
-constexpr std::string_view turns_3d = "&^\\/$";
-
 // Whether the axiom or a successor writes a symbol that `wanted` accepts: a byte grammar's text, or a
 // module grammar's modules (its interpretation rules, what is drawn, included).
 template <class F>
@@ -30,9 +28,13 @@ bool writes(const Grammar& g, F wanted) {
 
 }  // namespace
 
+bool writes_symbol(const Grammar& g, char symbol) {
+  return writes(g, [symbol](char c) { return c == symbol; });
+}
+
 bool branches(const Grammar& g) {
   // '[' pushes unless the grammar makes it a step (compiled_grammar.cpp).
-  return !g.draws('[') && !g.moves('[') && writes(g, [](char c) { return c == '['; });
+  return !g.draws('[') && !g.moves('[') && writes_symbol(g, '[');
 }
 
 bool draws_in_3d(const Grammar& g) {

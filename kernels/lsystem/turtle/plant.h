@@ -7,10 +7,19 @@
 // (heading 0 unless given), false leaves any curve as drawn.
 #pragma once
 
+#include <string_view>
+
 #include "kernels/lsystem/grammar.h"
 #include "kernels/lsystem/turtle/turtle2d.h"
 
 namespace selfsim::lsystem {
+
+// The 3D turtle's turns (pitch & ^, roll \ /, and $), which make a grammar draw in 3D unless given another role.
+inline constexpr std::string_view turns_3d = "&^\\/$";
+
+// Whether g's axiom or a successor (productions, decomposition, interpretation; a byte grammar's text) writes
+// `symbol`.
+bool writes_symbol(const Grammar& g, char symbol);
 
 // Whether g's axiom or a successor (productions, decomposition, interpretation) writes a '[' that pushes.
 bool branches(const Grammar& g);
