@@ -182,7 +182,8 @@ def scenes_of(datasets, bounds):
 
 def with_tubes(reader, bounds):
     """A curve with a point field `width` (a grammar's '!') as tubes of radius proportional to it, the widest
-    1.2% of the drawing's diagonal (as selfsim preview draws it); other sources as they are."""
+    1.2% of the drawing's diagonal, none thinner than a tenth of that (as selfsim preview draws it); other
+    sources as they are."""
     if "width" not in reader.PointData.keys():
         return reader
     low, high = reader.PointData["width"].GetRange()
@@ -193,7 +194,8 @@ def with_tubes(reader, bounds):
     radius = Calculator(Input=reader)
     radius.AttributeType = "Point Data"
     radius.ResultArrayName = "tube_radius"
-    radius.Function = "abs(width)*%.17g" % (0.012 * diagonal / widest)
+    # None thinner than a tenth of the widest, as the preview draws them: a width lowered to 0 would vanish.
+    radius.Function = "max(abs(width),%.17g)*%.17g" % (0.1 * widest, 0.012 * diagonal / widest)
     tubes = Tube(Input=radius)
     tubes.Scalars = ["POINTS", "tube_radius"]
     tubes.VaryRadius = "By Absolute Scalar"
