@@ -43,7 +43,11 @@ def drawn(a):
 
 def views(a):
     h = a.shape[0]
-    return a[int(h * TITLE) + 2:int(h * (1 - LEGEND)) - 2]
+    v = a[int(h * TITLE) + 2:int(h * (1 - LEGEND)) - 2].copy()
+    if a.shape[1] > a.shape[0]:  # a 3D preview's two views: leave out each one's name in its lower left corner
+        for x0 in (0, a.shape[1] // 2):
+            v[-24:, x0:x0 + 170] = 255
+    return v
 
 
 def legend(a):

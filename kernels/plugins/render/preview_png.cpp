@@ -181,6 +181,10 @@ int render_in_child(PipeOut& out, std::span<const Dataset> steps, const Plan& pl
     view->AddActor(actor);
     view->SetUseFXAA(fxaa);
     place_view(view, steps, flat, v == 1, plan.up, (size.width / double(views)) / (size.height * (top - bottom)));
+    // Which view is which, and which axis stands up: a reader cannot tell a front view from an oblique one.
+    if (!flat)
+      view->AddActor2D(text(v == 0 ? std::string("front, ") + "xyz"[plan.up] + " up" : std::string("oblique"), 13, 0.02,
+                            0.03, VTK_TEXT_LEFT));
     actors.push_back(actor);
   }
   vtkSmartPointer<vtkRenderer> head = strip(window, 0, top, 1, 1);
