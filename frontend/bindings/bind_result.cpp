@@ -41,6 +41,9 @@ int result(lua_State* L) {
       throw Error("'" + name + "' is the name of a parameter (declared at " + place(run.params[p->second].where) +
                   "): give the result another name");
     const std::string where = recipe_where(L);
+    if (run.results.size() >= io::max_results && !run.result_where.contains(name))
+      throw Error("a run gives at most " + std::to_string(io::max_results) + " results (each a column of a sweep's " +
+                  "results.csv and a plot); '" + name + "' would be one more");
     const auto [at, first] = run.result_where.try_emplace(name, where);
     if (first) {
       run.results.push_back({name, value});

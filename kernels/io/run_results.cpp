@@ -36,6 +36,8 @@ class Parser {
         RunResult r;
         r.name = name();
         if (!seen.insert(r.name).second) throw Error("the result \"" + r.name + "\" is given twice");
+        if (seen.size() > max_results)
+          throw Error("it holds more than " + std::to_string(max_results) + " results, the most a run gives");
         need(':', "':' after \"" + r.name + "\"");
         r.value = number(r.name);
         results.push_back(std::move(r));

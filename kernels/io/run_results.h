@@ -21,6 +21,9 @@ struct RunResult {
 inline constexpr const char* results_file = "results.json";
 
 inline constexpr std::size_t max_result_name = 64;
+// The most results one run may give: each is a column of the sweep's results.csv and a plot of its own, so
+// that thousands are a table nobody reads and minutes of writing plots (200,000 took 4.5 minutes).
+inline constexpr std::size_t max_results = 1000;
 
 // Empty when `name` is a result name; else what is wrong with it ("is empty", "holds ' ' (a result name is
 // ...)"), for a message that names the name first.

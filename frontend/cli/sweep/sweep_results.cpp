@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <map>
 #include <optional>
+#include <set>
 
 #include "frontend/lua/lua_support.h"
 #include "frontend/lua/parse_text.h"
@@ -53,13 +54,14 @@ SweepResults write_sweep_results(const SweepConfig& c, const SweepPlan& plan, co
   SweepResults r;
   // Each run's results by name; the names in the order first seen, over the runs in order.
   std::vector<std::map<std::string, double>> values(n);
+  std::set<std::string> seen;  // r.names as a set: a search of the list for each result was quadratic
   for (std::size_t i = 0; i < n; ++i) {
     if (codes[i] != 0) continue;  // a failed run's results (if any) are not the run's: its cells stay empty
     try {
       const auto given = io::read_results(out / plan.runs[i].folder);
       if (!given) continue;
       for (const io::RunResult& one : *given) {
-        if (std::find(r.names.begin(), r.names.end(), one.name) == r.names.end()) r.names.push_back(one.name);
+        if (seen.insert(one.name).second) r.names.push_back(one.name);
         values[i][one.name] = one.value;
       }
     } catch (const Error& e) {

@@ -82,4 +82,16 @@ TEST(RunResults, RefusesWhatItDoesNotWrite) {
   EXPECT_EQ(refusal("{\"results\": {}}"), "expected ',' after \"results\", found '}'");
 }
 
+// A results.json edited by hand with more results than a run may give (each a column and a plot of the
+// sweep's: 200,000 took minutes to collect) is refused; max_results of them read back.
+TEST(RunResults, AtMostMaxResults) {
+  std::vector<io::RunResult> given;
+  for (std::size_t i = 0; i < io::max_results; ++i) given.push_back({"r" + std::to_string(i), 1.0 * i});
+  const std::string text = io::results_json(given, provenance());
+  EXPECT_EQ(io::parse_results(text).size(), io::max_results);
+  given.push_back({"one_more", 1});
+  EXPECT_EQ(refusal(io::results_json(given, provenance())),
+            "it holds more than " + std::to_string(io::max_results) + " results, the most a run gives");
+}
+
 }  // namespace
