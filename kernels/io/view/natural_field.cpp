@@ -188,9 +188,25 @@ Colouring series_colouring(std::span<const ValueRef> steps, Progress& progress) 
 Colouring steps_colouring(std::span<const Dataset> steps, const std::string& name) {
   if (steps.empty()) return {};
   const std::vector<FieldSummary> last = summarise(steps.back());
-  Colouring c = name.empty() ? natural_colouring(last) : named_colouring(last, name);
-  widen(c, steps, [](const Dataset& d) { return summarise(d); });
-  return c;
+  if (name.empty()) {
+    Colouring c = natural_colouring(last);
+    widen(c, steps, [](const Dataset& d) { return summarise(d); });
+    return c;
+  }
+  // --field names a field of the series: the last step that holds it decides (a growth may gain or lose a
+  // field on the way; the steps without it are drawn plain). No step holding it: the error lists the
+  // fields of every step, not only the last's ("it holds no fields" of a series whose first step held it).
+  std::vector<FieldSummary> every;
+  for (std::size_t k = steps.size(); k-- > 0;) {
+    std::vector<FieldSummary> step = k + 1 == steps.size() ? last : summarise(steps[k]);
+    if (std::any_of(step.begin(), step.end(), [&](const FieldSummary& f) { return f.name == name; })) {
+      Colouring c = named_colouring(step, name);
+      widen(c, steps, [](const Dataset& d) { return summarise(d); });
+      return c;
+    }
+    every.insert(every.end(), std::make_move_iterator(step.begin()), std::make_move_iterator(step.end()));
+  }
+  return named_colouring(every, name);  // throws: no step holds it
 }
 
 Rgb category_colour(int value, std::size_t rank, bool by_value) {

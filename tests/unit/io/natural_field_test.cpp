@@ -167,3 +167,24 @@ TEST(NaturalField, StepsShareTheRangeOfEveryStep) {
   c = io::steps_colouring(again, "arclength");
   EXPECT_EQ(c.max, 5);  // an earlier step's larger value widens the range
 }
+
+// --field on a series names a field of any step: the last step that holds it decides, and a name no step
+// holds is refused listing every step's fields (it said "it holds no fields" when only the last had none).
+TEST(NaturalField, ANamedFieldOfAnEarlierStep) {
+  io::Dataset first = plant(), last = plant();
+  first.point_fields["age"] = {1, {0, 1, 2, 7}};
+  last.point_fields.clear();
+  last.cell_fields.clear();
+  const std::vector<io::Dataset> steps{first, last};
+  const io::Colouring c = io::steps_colouring(steps, "age");
+  EXPECT_EQ(c.field, "age");
+  EXPECT_TRUE(c.on_points);
+  EXPECT_EQ(c.min, 0);
+  EXPECT_EQ(c.max, 7);
+  try {
+    io::steps_colouring(steps, "aeg");
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("it holds age"), std::string::npos) << e.what();
+  }
+}
