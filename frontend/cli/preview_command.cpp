@@ -293,9 +293,12 @@ int preview_command(const PreviewConfig& config) {
       // Every message names the file: the readers' say "cannot read 'FILE'", the rest get it here.
       if (message.rfind("cannot read '", 0) != 0 && message.find("no X display") == std::string::npos)
         message = "cannot preview '" + io::one_line(name) + "': " + message;
-      // OpenGL drivers meet an allocation failure with a crash or a failed context, not a message.
+      // OpenGL drivers meet an allocation failure with a crash or a failed context, not a message; VTK's own
+      // say "out of memory" or "Unable to allocate" without naming the limit that caused them.
       if (config.max_memory > 0 &&
-          (message.find("crashed") != std::string::npos || message.find("OpenGL context") != std::string::npos))
+          (message.find("crashed") != std::string::npos || message.find("OpenGL context") != std::string::npos ||
+           message.find("out of memory") != std::string::npos ||
+           message.find("nable to allocate") != std::string::npos))
         message += " (perhaps --max-memory " + std::to_string(static_cast<long long>(max_memory / (1 << 20))) +
                    "M is too little)";
       std::fprintf(stderr, "selfsim preview: %s\n", message.c_str());

@@ -100,6 +100,12 @@ check "unknown option: usage exit 2" test "$code" = 2
 run_selfsim preview "$tmp/in/mesh.vtp" -o "$tmp/lim" --max-memory 16M
 check "--max-memory 16M: exit 1 ($(first_err))" test "$code" = 1
 check "--max-memory 16M: one line" test "$(wc -l <"$tmp/err")" = 1
+# Whatever the renderer meets at a limit too small (a crash, VTK's "ran out of memory" or "Unable to
+# allocate"), the line says the limit may be why ("ran out of memory" alone did not).
+for m in 70M 80M 90M 100M; do
+  run_selfsim preview "$tmp/in/curve.vtp" -o "$tmp/lim" --max-memory $m
+  [ "$code" = 0 ] || check "--max-memory $m: names the limit ($(first_err))" grep -q "perhaps --max-memory $m" "$tmp/err"
+done
 # The --timeout case is held, not raced: DISPLAY names an X server of ours that takes the connection and
 # never answers, so the preview waits in XOpenDisplay (after its timer started) until the timer ends it.
 /usr/bin/python3 -c '
