@@ -110,9 +110,9 @@ void write_view(const std::filesystem::path& root, const std::string& file, cons
     double diagonal = 0;
     for (int j = 0; j < 3; ++j)
       if (bounds[2 * j + 1] > bounds[2 * j]) diagonal += std::pow(bounds[2 * j + 1] - bounds[2 * j], 2);
-    widths.radius = 0.012 * (diagonal > 0 ? std::sqrt(diagonal) : 1);
+    widths.diagonal = diagonal > 0 ? std::sqrt(diagonal) : 1;
     // Tubes for every step or for none: a growth that turned from tubes to lines halfway would not read as one.
-    if (most_segments > io::max_tube_segments) widths.radius = 0;
+    if (most_segments > io::max_tube_segments) widths.diagonal = 0;
     std::string names, urls;
     for (std::size_t i = 0; i < steps.size(); ++i) {
       const io::Dataset d = only ? std::move(*only) : read_below(root, steps[i], limits);

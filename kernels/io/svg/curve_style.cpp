@@ -5,6 +5,7 @@
 
 #include "kernels/base/check.h"
 #include "kernels/base/error.h"
+#include "kernels/io/drawn_width.h"
 #include "kernels/io/text/colour.h"
 #include "kernels/io/text/palette.h"
 
@@ -83,12 +84,16 @@ CurveStyles::CurveStyles(const Polyline& c, const SaveOptions& opt, double units
     if (const double k = point_color_->at(i); !(std::abs(k) <= 2147483647))
       throw Error("point field 'color' of point " + std::to_string(i + 1) +
                   " must be a colour index (a whole number), got " + number_text(k));
-  for (std::size_t i = 0; point_width_ != nullptr && i < c.points.size(); ++i) {
-    const double w = point_width_->at(i) * turtle_width_unit * units;
-    if (!(w >= 0 && w < 1e6))
-      throw Error("point field 'width' of point " + std::to_string(i + 1) +
-                  " must be a line width from 0, in the curve's units (it draws " + number_text(w) +
-                  " drawing units)");
+  // (point_style_field has refused a width that is not finite.)
+  for (std::size_t i = 0; point_width_ != nullptr && i < c.points.size(); ++i)
+    widest_ = std::max(widest_, std::abs(point_width_->at(i)));
+  if (point_width_ != nullptr) {  // drawn relative to the drawing (drawn_width.h): its diagonal, in curve units
+    Vec2 lo = c.points.empty() ? Vec2{} : c.points.front(), hi = lo;
+    for (const Vec2& p : c.points) {
+      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    }
+    diagonal_ = std::hypot(hi.x - lo.x, hi.y - lo.y);
   }
   // Fields may come from a loaded file: check them once here rather than write a colour nobody chose.
   const bool palette = (stroke_given_ && opt.stroke.size() > 1) || (width_given_ && opt.stroke_width.size() > 1) ||
@@ -140,7 +145,7 @@ bool CurveStyles::per_segment(const PathStyle& path_style) const {
 
 PathStyle CurveStyles::segment(const PathStyle& path_style, std::size_t point) const {
   PathStyle s = path_style;
-  if (point_width_ != nullptr) s.width = point_width_->at(point) * turtle_width_unit * units_;
+  if (point_width_ != nullptr) s.width = 2 * drawn_radius(point_width_->at(point), widest_, diagonal_) * units_;
   if (point_color_ != nullptr) {
     // A negative index (ABOP's turtle allows any) is drawn as its magnitude.
     const auto k = static_cast<std::int64_t>(std::llround(std::abs(point_color_->at(point))));

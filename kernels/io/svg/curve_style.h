@@ -3,12 +3,11 @@
 // `width` (stroke width in the drawing's unit) and `fill` (RGB in [0, 1], or negative for none). save()'s options, when
 // given, override them; each option is one value or a palette, the member numbered k by the `curve` cell field taking
 // entry (k − 1) mod size (a curve without that field is one member).
-// A turtle's curve may also carry one-component point fields (module_turtle.h): `width` (its '!' line width, in
-// the curve's own units) and `color` (its '\'' colour index). A segment takes its end point's: the width drawn
-// turtle_width_unit times its value in the curve's units (so it scales with the drawing: a trunk of width 10 is
-// ten times a twig of width 1), the stroke the index's class_colour (io/text/palette.h, the colours previews
-// use). Both only where nothing else styles the path (an option or a cell field wins) and only for paths that
-// are not filled (a fill needs whole paths).
+// A turtle's curve may also carry one-component point fields (module_turtle.h): `width` (its '!' line width)
+// and `color` (its '\'' colour index). A segment takes its end point's: the width drawn as every picture draws
+// it (drawn_width.h: relative to the drawing, the widest 2.4% of its diagonal across, the others in proportion),
+// the stroke the index's class_colour (io/text/palette.h, the colours previews use). Both only where nothing else
+// styles the path (an option or a cell field wins) and only for paths that are not filled (a fill needs whole paths).
 #pragma once
 
 #include <cstdint>
@@ -48,11 +47,6 @@ struct PathStyle {
   bool operator==(const PathStyle&) const = default;
 };
 
-// The line a turtle width of 1 draws, in the curve's units: a fiftieth of a unit step. ABOP writes widths as
-// line widths on a drawing (Figure 2.6's trunk is !(10) on unit steps): at this scale its trees read as the
-// book draws them (that trunk a fifth of a step wide), and widths stay in proportion to the steps.
-inline constexpr double turtle_width_unit = 0.02;
-
 class CurveStyles {
  public:
   // Throws Error naming the first path (or point) whose style fields are out of range. `units` is drawing
@@ -70,6 +64,7 @@ class CurveStyles {
   const Field *point_width_, *point_color_;  // used only where nothing else styles the paths
   bool stroke_given_, width_given_, fill_given_;
   double units_;
+  double widest_ = 0, diagonal_ = 0;      // the largest |width| and the curve's diagonal, for drawn_radius
   mutable std::int64_t last_index_ = -1;  // the last colour index and its text: runs of one index are common
   mutable std::string last_colour_;
 };

@@ -2,8 +2,8 @@
 // transform makes y point up, as in the papers); the viewBox fits the curve with a small margin, and the
 // stroke width is given in pixels of the drawing's width/height, converted to curve units, so a curve of
 // any size reads the same. (vector-effect: non-scaling-stroke would say this too, but librsvg and some
-// other renderers ignore it.) A turtle's own widths are in the curve's units instead, so a plant's trunk and
-// twigs keep their proportion to its steps (curve_style.h).
+// other renderers ignore it.) A turtle's own widths are drawn relative to the drawing, as every picture draws
+// them (drawn_width.h, curve_style.h).
 #include <algorithm>
 #include <cmath>
 #include <span>

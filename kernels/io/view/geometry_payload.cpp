@@ -8,6 +8,7 @@
 
 #include "kernels/base/check.h"
 #include "kernels/base/error.h"
+#include "kernels/io/drawn_width.h"
 #include "kernels/io/text/json_text.h"
 #include "kernels/io/text/palette.h"
 #include "kernels/io/view/tube_rings.h"
@@ -132,8 +133,7 @@ std::uint64_t tubes(const Dataset& d, const Painted& painted, const TubeWidths& 
       const std::size_t p = d.cell_points[k];
       if (p >= d.points.size()) throw Error("a cell names point " + std::to_string(p) + ", past its points");
       line.push_back(d.points[p]);
-      const double w = std::isfinite(width[p]) ? std::abs(width[p]) / widths.max_width : 0;
-      radii.push_back(widths.radius * std::clamp(w, 0.1, 1.0));  // as the preview: none under a tenth
+      radii.push_back(drawn_radius(width[p], widths.max_width, widths.diagonal));
     }
     rings.clear();
     const std::size_t before = indices.size();
@@ -160,7 +160,7 @@ std::size_t line_segments(const Dataset& d) {
 }
 
 bool drawn_as_tubes(const Dataset& d, const TubeWidths& widths) {
-  if (d.shapes != CellShapes::lines || !(widths.radius > 0) || !(widths.max_width > 0)) return false;
+  if (d.shapes != CellShapes::lines || !(widths.diagonal > 0) || !(widths.max_width > 0)) return false;
   const auto w = d.point_fields.find("width");
   if (w == d.point_fields.end() || w->second.components != 1 || w->second.values.size() != d.points.size())
     return false;

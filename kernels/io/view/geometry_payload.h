@@ -41,12 +41,11 @@ std::string colouring_json(const Colouring& c, bool own = false);
 // of c: grey), as 0-255 RGB.
 std::array<std::uint8_t, 3> value_colour(const Colouring& c, double v);
 
-// A curve's widths drawn as the preview draws them: a point field `width` makes each polyline a tube
-// (tube_rings.h) whose widest point has radius `radius` (the preview: 1.2% of the drawing's diagonal), the
-// others in proportion to their width over `max_width` (the largest over every step of a series), none
-// thinner than a tenth of it. radius 0: lines.
+// A curve's widths drawn as every picture draws them (drawn_width.h): a point field `width` makes each polyline
+// a tube, relative to `diagonal` (the drawing's, over every step of a series) and `max_width` (the largest
+// |width| over every step). diagonal 0: lines.
 struct TubeWidths {
-  double radius = 0, max_width = 0;
+  double diagonal = 0, max_width = 0;
 };
 inline constexpr int tube_sides = 8;
 // More segments than this and a curve is drawn as lines after all: a browser draws a million triangles in

@@ -182,8 +182,8 @@ def scenes_of(datasets, bounds):
 
 def with_tubes(reader, bounds):
     """A curve with a point field `width` (a grammar's '!') as tubes of radius proportional to it, the widest
-    1.2% of the drawing's diagonal, none thinner than a tenth of that (as selfsim preview draws it); other
-    sources as they are."""
+    1.2% of the drawing's diagonal, none thinner than a tenth of that: every picture's rule
+    (kernels/io/drawn_width.h); other sources as they are."""
     if "width" not in reader.PointData.keys():
         return reader
     low, high = reader.PointData["width"].GetRange()

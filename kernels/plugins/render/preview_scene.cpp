@@ -21,6 +21,7 @@
 #include <limits>
 #include <string>
 
+#include "kernels/io/drawn_width.h"
 #include "kernels/io/text/palette.h"
 #include "kernels/io/view/geometry_payload.h"
 
@@ -194,17 +195,14 @@ StepDrawing step_drawing(const Dataset& d, const SceneStyle& style) {
   const bool direct = style.direct && has_direct_colours(d) && poly->GetNumberOfPolys() == 0;
   if (direct) poly->GetCellData()->AddArray(colour_bytes(d.cell_fields.at(direct_colour_field)));
   if (widths) {
-    // The widest branch a tube of radius 1.2% of the drawing's size, the others in proportion, none thinner
-    // than a tenth of that (a width of 0 would vanish).
+    // Every picture's rule (drawn_width.h): relative to the drawing's size and the widest width.
     auto radius = vtkSmartPointer<vtkDoubleArray>::New();
     radius->SetName("selfsim_radius");
     radius->SetNumberOfTuples(poly->GetNumberOfPoints());
-    const double largest = 0.012 * style.size;
     for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i) {
-      const double w = static_cast<std::size_t>(i) < width->second.values.size()
-                           ? std::abs(width->second.values[static_cast<std::size_t>(i)])
-                           : 0;
-      radius->SetValue(i, largest * std::max(0.1, std::isfinite(w) ? w / style.max_width : 0.1));
+      const auto at = static_cast<std::size_t>(i);
+      const double w = at < width->second.values.size() ? width->second.values[at] : 0;
+      radius->SetValue(i, drawn_radius(w, style.max_width, style.size));
     }
     poly->GetPointData()->SetScalars(radius);
     vtkNew<vtkTubeFilter> tubes;

@@ -220,7 +220,7 @@ TEST(GeometryPayload, ACurvesWidthsAreTubes) {
   d.point_fields["width"] = {1, {4, 2, 1, 2, 0}};
   d.point_fields["branch_order"] = {1, {0, 0, 0, 1, 1}};
   const io::Colouring c = io::natural_colouring(io::summarise(d));
-  const io::TubeWidths widths{0.1, 4};
+  const io::TubeWidths widths{10, 4};  // a drawing 10 across: the widest radius 0.012 of that (drawn_width.h)
   ASSERT_TRUE(io::drawn_as_tubes(d, widths));
   const Decoded p = decode(io::geometry_payload(d, c, 1 << 20, widths));
   EXPECT_EQ(p.segments, 0u);
@@ -232,8 +232,8 @@ TEST(GeometryPayload, ACurvesWidthsAreTubes) {
     return std::hypot(p.positions[24 * ring] + 0.5 - centre[0], p.positions[24 * ring + 1] + 1 - centre[1],
                       p.positions[24 * ring + 2] - centre[2]);
   };
-  EXPECT_NEAR(radius(0, {0, 0, 0}), 0.1, 1e-6);
-  EXPECT_NEAR(radius(4, {1, 2, 0}), 0.01, 1e-6);
+  EXPECT_NEAR(radius(0, {0, 0, 0}), 0.12, 1e-6);
+  EXPECT_NEAR(radius(4, {1, 2, 0}), 0.012, 1e-6);
   // Each ring coloured as its point: the branch's by branch_order 1, the trunk's by 0.
   EXPECT_EQ(colour_of(p, 0), rgb(io::ramp_colour(0)));
   EXPECT_EQ(colour_of(p, 39), rgb(io::ramp_colour(1)));

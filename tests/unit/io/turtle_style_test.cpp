@@ -2,6 +2,7 @@
 // style_runs.h): segment by segment, grouped into one element per run of one style.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <regex>
 #include <string>
 #include <vector>
@@ -61,24 +62,38 @@ TEST(TurtleStyle, WidthsAndColourIndicesBecomeStrokes) {
   EXPECT_EQ(e[0].stroke, colour_of(0));
   EXPECT_EQ(e[1].stroke, colour_of(2));
   EXPECT_NE(e[0].stroke, e[1].stroke);
-  // Widths in the curve's own units (the path data's), turtle_width_unit per unit of width: 10x apart.
-  EXPECT_DOUBLE_EQ(e[0].width, 10 * io::turtle_width_unit);
-  EXPECT_DOUBLE_EQ(e[1].width, 1 * io::turtle_width_unit);
+  // Widths relative to the drawing (drawn_width.h), in the path data's units: the widest (10) 2.4% of the
+  // diagonal (the plant is 1 x 3, so sqrt(10)) across, the twig (1) a tenth of that.
+  EXPECT_NEAR(e[0].width, 0.024 * std::sqrt(10.0), 1e-4);
+  EXPECT_NEAR(e[1].width, 0.0024 * std::sqrt(10.0), 1e-5);
   EXPECT_EQ(e[0].d, "M0 0L0 1 0 2");
   EXPECT_EQ(e[1].d, "M0 2L0 3M0 2L1 3");  // the twig starts where the trunk's run ended
   // The points read back as drawn: nothing lost or doubled but the cut's shared point.
   EXPECT_EQ(io::read_dataset(dir.path / "p.svg").points.size(), 7u);
 }
 
-TEST(TurtleStyle, WidthsScaleWithTheCurve) {
+// Widths are drawn relative to the drawing and the widest width, so whatever unit a grammar writes them in
+// (ABOP's !(10), a recipe's !(0.05)) a plant reads the same: a plant three times the size draws three times as
+// wide in its own units, and widths a thousandth of the first draw the same.
+TEST(TurtleStyle, WidthsAreRelativeToTheDrawingAndTheWidest) {
   TempDir dir;
   Polyline c = plant();
-  for (Vec2& p : c.points) p = 3 * p;  // a plant three times the size, widths given in its units
-  c.point_fields.set(real_field("width", {30, 30, 30, 3, 3, 3}));
   io::save(&c, dir.path / "p.svg", {}, no_progress());
-  const std::vector<Element> e = elements(text_of(dir.path / "p.svg"));
+  const double first = elements(text_of(dir.path / "p.svg"))[0].width;
+  for (Vec2& p : c.points) p = 3 * p;
+  c.point_fields.set(real_field("width", {0.01, 0.01, 0.01, 0.001, 0.001, 0.001}));
+  io::save(&c, dir.path / "q.svg", {}, no_progress());
+  const std::vector<Element> e = elements(text_of(dir.path / "q.svg"));
   ASSERT_EQ(e.size(), 2u);
-  EXPECT_DOUBLE_EQ(e[0].width, 30 * io::turtle_width_unit);
+  EXPECT_NEAR(e[0].width, 3 * first, 1e-9);
+  EXPECT_NEAR(e[1].width, 0.3 * first, 1e-9);
+  // A width of 0 is drawn as the thinnest, a tenth of the widest, not as nothing; a huge one is the widest.
+  c.point_fields.set(real_field("width", {1e300, 1e300, 1e300, 0, 0, 0}));
+  io::save(&c, dir.path / "r.svg", {}, no_progress());
+  const std::vector<Element> r = elements(text_of(dir.path / "r.svg"));
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_NEAR(r[0].width, 3 * first, 1e-9);
+  EXPECT_NEAR(r[1].width, 0.3 * first, 1e-9);
 }
 
 TEST(TurtleStyle, GivenOptionsWin) {
@@ -124,12 +139,12 @@ TEST(TurtleStyle, EpsDrawsTheSameStrokes) {
 TEST(TurtleStyle, BadPointFieldsAreRefusedNamingThePoint) {
   TempDir dir;
   Polyline c = plant();
-  c.point_fields.set(real_field("width", {10, 10, -1, 1, 1, 1}));
+  c.point_fields.set(real_field("width", {10, 10, std::nan(""), 1, 1, 1}));
   try {
     io::save(&c, dir.path / "p.svg", {}, no_progress());
-    FAIL() << "a negative width was written";
+    FAIL() << "a width that is not a number was written";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("point field 'width' of point 3"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("point field 'width' has a non-finite value"), std::string::npos) << e.what();
   }
   EXPECT_FALSE(std::filesystem::exists(dir.path / "p.svg"));
 }
