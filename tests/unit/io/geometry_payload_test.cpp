@@ -212,6 +212,29 @@ TEST(GeometryPayload, ACurvesOwnColoursAreDrawnAsTheyAre) {
   EXPECT_FALSE(io::has_own_colours(d));
 }
 
+// Every cell its own colour (a curve of 60,000 coloured segments): each drawn in its colour. The colours are
+// found by a hash map, not a sorted list whose inserts took quadratic time (measured, not asserted here).
+TEST(GeometryPayload, ManyOwnColoursEachDrawnAsItIs) {
+  io::Dataset d;
+  const std::size_t n = 60000;
+  std::vector<double> colours;
+  for (std::size_t i = 0; i < n; ++i) {
+    d.points.push_back({static_cast<double>(i), 0, 0});
+    d.points.push_back({static_cast<double>(i), 1, 1});
+    d.cell_points.insert(d.cell_points.end(), {2 * i, 2 * i + 1});
+    d.cell_ends.push_back(2 * i + 2);
+    colours.insert(colours.end(), {(i & 255) / 255.0, ((i >> 8) & 255) / 255.0, 7 / 255.0});
+  }
+  d.cell_fields["color"] = {3, colours};
+  const Decoded p = decode(io::geometry_payload(d, {}, 1 << 26));
+  ASSERT_EQ(p.segments, n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::uint32_t v : {p.indices[2 * i], p.indices[2 * i + 1]})
+      ASSERT_EQ(colour_of(p, v), (std::array<std::uint8_t, 3>{static_cast<std::uint8_t>(i & 255),
+                                                              static_cast<std::uint8_t>((i >> 8) & 255), 7}))
+          << "segment " << i;
+}
+
 TEST(GeometryPayload, ACurvesWidthsAreTubes) {
   io::Dataset d;
   d.points = {{0, 0, 0}, {0, 1, 0}, {0, 2, 0}, {0, 1, 0}, {1, 2, 0}};
