@@ -168,4 +168,20 @@ check "60 steps: exit 0 ($(head -1 "$tmp/err"))" test "$code" = 0
 check "60 steps: a filmstrip of 48 cells ($(grep steps.png "$tmp/out"))" grep -q \
   "^wrote $tmp/long/long.steps.png (3000x[0-9]*, 60 steps)" "$tmp/out"
 check "60 steps: an animation of 60 frames" grep -q "^wrote $tmp/long/long.apng (1200x600, 60 frames)" "$tmp/out"
+# Any size draws: a drawing thousands of units across, flat or 3D, and one a millionth of a unit (the views were
+# placed before they had anything to draw, so VTK kept its default clipping range, 0.1 to 1000, and a drawing a
+# few hundred units across came out blank).
+cat >"$tmp/sizes.lua" <<'LUA'
+local curves = require "selfsim.curves"
+save(curves.dragon():curve(6):transform { scale = 5000 }, "flat_big.vtp")
+save(curves.dragon():curve(6):transform { scale = 1e-6 }, "flat_tiny.vtp")
+save(volume.sphere { center = { 0, 0, 0 }, radius = 400 }, "ball_big.vtp")
+save(volume.sphere { center = { 1e4, 0, 0 }, radius = 1e-3 }, "ball_far_tiny.vtp")
+LUA
+"$selfsim" run "$tmp/sizes.lua" -o "$tmp/sizes" -q 2>"$tmp/run_err"
+for f in flat_big flat_tiny ball_big ball_far_tiny; do
+  preview "$tmp/sizes/$f.vtp" -o "$tmp/sizes_png"
+  check "$f: exit 0 ($(head -1 "$tmp/err"))" test "$code" = 0
+  check "$f: drawn, not blank" pixels drawing "$tmp/sizes_png/$f.png" 0.01
+done
 finish

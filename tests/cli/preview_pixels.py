@@ -12,6 +12,7 @@ that imports VTK (tests/viewer/vtk_python.sh): its PNG reader and numpy.
   same_views A B          the views of A and B are the same pixels (a still and its series' last frame)
   differ A B              A and B are not the same picture
   colour PNG R G B        pixels near that colour are drawn (at least 200)
+  drawing PNG SHARE       at least SHARE (0..1) of the views' pixels are drawn
 """
 import os
 import struct
@@ -179,6 +180,13 @@ def differ(a_path, b_path):
         sys.exit(f"{a_path} and {b_path} are the same picture")
 
 
+def drawing(path, share):
+    """At least `share` of the views' pixels are drawn (not a blank picture)."""
+    d = drawn(views(pixels(path)))
+    if d.mean() < float(share):
+        sys.exit(f"{path}: {d.mean():.2%} of the views drawn, expected at least {float(share):.0%}")
+
+
 def colour(path, r, g, b):
     a = pixels(path)
     near = (abs(a - [int(r), int(g), int(b)]).max(axis=2) < 40).sum()
@@ -187,5 +195,5 @@ def colour(path, r, g, b):
 
 
 commands = {"upright": upright, "upright_view": upright_view, "frames": frames, "same_camera": same_camera, "same_views": same_views,
-            "differ": differ, "colour": colour}
+            "differ": differ, "colour": colour, "drawing": drawing}
 commands[sys.argv[1]](*sys.argv[2:])

@@ -69,18 +69,24 @@ void fit_perspective(vtkCamera* camera, std::span<const Dataset> steps, const Ve
   const double angle = 30;
   camera->SetViewAngle(angle);
   const double tan_v = std::tan(vtkMath::RadiansFromDegrees(angle / 2)) / 1.12, tan_h = tan_v * aspect;
-  double distance = 0;
+  double distance = 0, reach = 0;  // reach: the farthest point from the centre
   for (const Dataset& d : steps)
     for (const auto& p : d.points) {
       const Vec3 q{p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]};
       const double x = dot(q, right), y = dot(q, up), z = dot(q, back);
       distance = std::max({distance, z + std::abs(x) / tan_h, z + std::abs(y) / tan_v});
+      reach = std::max(reach, std::sqrt(dot(q, q)));
     }
   if (!(distance > 0) || !std::isfinite(distance)) distance = 1;
+  if (!std::isfinite(reach)) reach = distance;
   camera->SetFocalPoint(centre.data());
   camera->SetPosition(centre[0] + distance * back[0], centre[1] + distance * back[1], centre[2] + distance * back[2]);
   camera->SetViewUp(up.data());
   camera->ParallelProjectionOff();
+  // The clipping range from the drawing itself, set here because the views are placed before their actors
+  // have anything to draw (VTK's reset would then keep its default range, 0.1 to 1000, and a drawing a few
+  // hundred units across would vanish). Every point lies within `reach` of the centre.
+  camera->SetClippingRange(std::max(distance - 1.01 * reach, 1e-4 * (distance + reach)), distance + 1.01 * reach);
 }
 
 void fit_top(vtkCamera* camera, std::span<const Dataset> steps, double aspect) {
@@ -94,6 +100,7 @@ void fit_top(vtkCamera* camera, std::span<const Dataset> steps, double aspect) {
   camera->SetPosition(cx, cy, 4 * scale);
   camera->SetViewUp(0, 1, 0);
   camera->SetParallelScale(scale);
+  camera->SetClippingRange(2 * scale, 6 * scale);  // the drawing lies at 4 × scale (see fit_perspective)
 }
 
 }  // namespace selfsim::io

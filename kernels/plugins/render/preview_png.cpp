@@ -121,7 +121,6 @@ void place_view(vtkRenderer* view, std::span<const Dataset> steps, bool flat, bo
     vtkNew<vtkLightKit> lights;
     lights->AddLightsToRenderer(view);
   }
-  view->ResetCameraClippingRange();
 }
 
 // Everything VTK does, in the child: build the scenes, render, send 'P', the number of pictures and each
