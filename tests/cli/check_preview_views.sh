@@ -122,6 +122,9 @@ check "series without --steps: the still alone" test "$(grep -c '^wrote ' "$tmp/
 # the same bytes.)
 check "series without --steps: the same camera" pixels same_camera "$tmp/plain/growth.png" "$tmp/steps/growth.png" \
   drawing
+# A frame is titled with the file's name alone ("growth.pvd"), its caption saying the step: the still's title,
+# "growth.pvd (last of 2 steps)", on every frame contradicted all but the last.
+check "a frame's title is the name alone" pixels title_shorter "$tmp/frames/frame_0.png" "$tmp/plain/growth.png"
 # --steps among other files: the series get their filmstrip and animation, a single file its PNG alone.
 preview "$tmp/g/growth/s1.vtp" "$tmp/g/growth.pvd" --steps -o "$tmp/mixed"
 check "--steps with a single file: its PNG alone" test -e "$tmp/mixed/s1.png" -a ! -e "$tmp/mixed/s1.apng" -a \

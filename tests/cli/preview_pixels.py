@@ -13,6 +13,7 @@ that imports VTK (tests/viewer/vtk_python.sh): its PNG reader and numpy.
   differ A B              A and B are not the same picture
   colour PNG R G B        pixels near that colour are drawn (at least 200)
   drawing PNG SHARE       at least SHARE (0..1) of the views' pixels are drawn
+  title_shorter A B       A's title is drawn much shorter than B's
 """
 import os
 import struct
@@ -187,6 +188,20 @@ def drawing(path, share):
         sys.exit(f"{path}: {d.mean():.2%} of the views drawn, expected at least {float(share):.0%}")
 
 
+def title_extent(a):
+    """How far right the title (the top strip's left part) is drawn, in pixels."""
+    strip = drawn(a[:int(a.shape[0] * TITLE)])[:, :int(a.shape[1] * 0.4)]  # left of a frame's caption
+    cols = strip.any(axis=0).nonzero()[0]
+    return cols[-1] if len(cols) else 0
+
+
+def title_shorter(a_path, b_path):
+    """A's title is drawn much shorter than B's ("growth.pvd" against "growth.pvd (last of 2 steps)")."""
+    a, b = title_extent(pixels(a_path)), title_extent(pixels(b_path))
+    if not 0 < a < 0.7 * b:
+        sys.exit(f"the title of {a_path} reaches x {a}, that of {b_path} x {b}")
+
+
 def colour(path, r, g, b):
     a = pixels(path)
     near = (abs(a - [int(r), int(g), int(b)]).max(axis=2) < 40).sum()
@@ -195,5 +210,5 @@ def colour(path, r, g, b):
 
 
 commands = {"upright": upright, "upright_view": upright_view, "frames": frames, "same_camera": same_camera, "same_views": same_views,
-            "differ": differ, "colour": colour, "drawing": drawing}
+            "differ": differ, "colour": colour, "drawing": drawing, "title_shorter": title_shorter}
 commands[sys.argv[1]](*sys.argv[2:])

@@ -198,6 +198,9 @@ int render_in_child(PipeOut& out, std::span<const Dataset> steps, const Plan& pl
   // frame itself when there are frames (its caption then says so too).
   vtkSmartPointer<vtkTextActor> caption = text("", 18, 0.5, 0.5, VTK_TEXT_CENTERED);
   head->AddActor2D(caption);
+  // Frames are titled with the file's name alone: the plain title says "(last of N steps)", which every
+  // frame but the last would then contradict.
+  if (frames && !plan.options.name.empty()) title->SetInput(shown_title(plan.options.name).c_str());
   std::vector<std::string> pictures(1);
   auto picture = [&](std::size_t k) {
     const StepDrawing& d = drawing(k);
