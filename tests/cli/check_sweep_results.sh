@@ -144,6 +144,10 @@ assert rows[0] == ["t", "status", "folder", "_status", "_folder"], rows[0]
 assert rows[1] == ["a,b", "1", "2", "ok", "t=a_b"], rows[1]
 PY
 
+# Numbers a unit in the last place apart are a plot too (the tick loop never ended: std::bad_alloc, exit 2).
+"$selfsim" run s.lua -o ulp --set x=1,1.0000000000000002 -q 2>err.txt || fail "x one ulp apart: $(cat err.txt)"
+[ -f ulp/plot_twice.svg ] || fail "x one ulp apart: no plot"
+
 # A job list may not take the table's or a plot's name.
 for name in results.csv plot_x.svg; do
   "$selfsim" sweep s.lua -o jr --set x=1,2 --jobs-file "$name" >out.txt 2>err.txt

@@ -59,9 +59,11 @@ std::vector<double> plot_ticks(double lo, double hi) {
   const double step = (m <= 1 ? 1 : m <= 2 ? 2 : m <= 5 ? 5 : 10) * power;
   const double first = std::floor(lo / step), last = std::ceil(hi / step);
   std::vector<double> ticks;
+  // The tick numbers counted as whole numbers a double holds exactly: a range a few units in the last place
+  // wide (x = 1 and the next double) has first near 2^54, where ++k is k again and the loop never ended.
   if (std::isfinite(step) && step > 0 && std::isfinite(first * step) && std::isfinite(last * step) &&
-      last - first <= 20)
-    for (double k = first; k <= last; ++k) ticks.push_back(k * step);
+      last - first <= 20 && std::abs(first) < 0x1p52 && std::abs(last) < 0x1p52)
+    for (int k = 0; k <= static_cast<int>(last - first); ++k) ticks.push_back((first + k) * step);
   if (ticks.size() < 2) ticks = {lo, hi};  // a range at the edge of the doubles: its own ends
   return ticks;
 }

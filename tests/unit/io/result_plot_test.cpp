@@ -70,6 +70,22 @@ TEST(ResultPlot, PointsCarryTheirValuesInOrderOfX) {
   EXPECT_NE(svg.find("class=\"ylabel\""), std::string::npos);
 }
 
+// A range a few units in the last place wide (a sweep over x = 1 and the next double): the tick count ran
+// forever at 2^54, where k + 1 == k, until memory ran out. Ticks now, covering it, increasing.
+TEST(ResultPlot, ARangeOfAFewUlps) {
+  for (const double lo : {1.0, 1.5, -3.0, 1e15, 4503599627370496.0}) {
+    const double hi = std::nextafter(std::nextafter(lo, INFINITY), INFINITY);
+    const std::vector<double> t = io::plot_ticks(lo, hi);
+    ASSERT_GE(t.size(), 2u) << lo;
+    EXPECT_LE(t.size(), 22u) << lo;
+    EXPECT_LE(t.front(), lo);
+    EXPECT_GE(t.back(), hi);
+    for (std::size_t i = 1; i < t.size(); ++i) EXPECT_LT(t[i - 1], t[i]) << lo;
+  }
+  const std::string svg = io::result_plot_svg({"t", "", "x", "y"}, {{1, 1}, {std::nextafter(1.0, 2.0), 2}});
+  EXPECT_NE(svg.find("data-x=\"1.0000000000000002\""), std::string::npos) << svg;
+}
+
 TEST(ResultPlot, OnePointAndRefusals) {
   const std::string one = io::result_plot_svg({"t", "", "x", "y"}, {{2, 3}});
   EXPECT_EQ(one.find("<polyline"), std::string::npos);  // nothing to join
