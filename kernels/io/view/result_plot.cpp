@@ -47,6 +47,16 @@ std::string text(const std::string& t) { return xml_escaped(xml_shown(t)); }
 
 }  // namespace
 
+std::vector<double> legend_ticks(double lo, double hi) {
+  if (!(std::isfinite(lo) && std::isfinite(hi) && lo < hi)) return {};
+  std::vector<double> inside;
+  const double slack = 1e-9 * (hi - lo);  // a tick computed as k * step a rounding away from an end
+  for (double t : plot_ticks(lo, hi))
+    if (t >= lo - slack && t <= hi + slack) inside.push_back(t);
+  if (inside.size() < 2) inside.clear();
+  return inside;
+}
+
 std::vector<double> plot_ticks(double lo, double hi) {
   if (!(std::isfinite(lo) && std::isfinite(hi) && lo <= hi)) throw Error("plot_ticks: a range of finite numbers");
   if (lo == hi) {  // one value: a range around it

@@ -29,5 +29,8 @@ std::string result_plot_svg(const PlotLabels& labels, std::vector<PlotPoint> poi
 // giving 4 to 10 ticks, the first at or below lo and the last at or above hi. A range of one value is
 // widened around it first. Exposed for the unit test.
 std::vector<double> plot_ticks(double lo, double hi);
+// The same round ticks, only those inside [lo, hi] (a colour bar's labels, which cannot reach past its ends);
+// empty when fewer than two fall inside or the range is not finite.
+std::vector<double> legend_ticks(double lo, double hi);
 
 }  // namespace selfsim::io

@@ -1,6 +1,7 @@
 #include "kernels/plugins/render/preview_legend.h"
 
 #include <vtkCoordinate.h>
+#include <vtkDoubleArray.h>
 #include <vtkLookupTable.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
@@ -10,6 +11,7 @@
 #include <cmath>
 
 #include "kernels/io/read_error.h"
+#include "kernels/io/view/result_plot.h"
 
 namespace selfsim::io {
 
@@ -72,10 +74,19 @@ void add_legend(vtkRenderer* legend, const Colouring& colouring, vtkLookupTable*
     vtkNew<vtkScalarBarActor> bar;
     bar->SetLookupTable(lut);
     bar->SetOrientationToHorizontal();
-    const double range = colouring.max - colouring.min;
-    const bool whole = std::floor(colouring.min) == colouring.min && std::floor(range) == range && range <= 10;
-    bar->SetNumberOfLabels(whole ? static_cast<int>(range) + 1 : 5);
-    bar->SetLabelFormat(whole ? "%.0f" : "%.4g");
+    // Labels at round numbers inside the bar's range (the result plots' ticks, result_plot.h): 0, 2, 4, ... for
+    // a whole-number field of 0..11 and 0.7, 0.8, ... for a wall of 0.6982..1.033, not the range's fifths.
+    const double lo = colouring.min, hi = colouring.max > lo ? colouring.max : lo + 1;  // continuous_table's
+    vtkNew<vtkDoubleArray> labels;
+    for (double t : legend_ticks(lo, hi)) labels->InsertNextValue(t);
+    if (labels->GetNumberOfTuples() >= 2) {
+      bar->SetCustomLabels(labels);
+      bar->UseCustomLabelsOn();
+      bar->SetLabelFormat("%.6g");
+    } else {
+      bar->SetNumberOfLabels(5);
+      bar->SetLabelFormat("%.4g");
+    }
     legend->AddActor2D(text(colouring.field, 16, 0.19, 0.7, VTK_TEXT_RIGHT));
     bar->UnconstrainedFontSizeOn();
     bar->SetTextPositionToPrecedeScalarBar();

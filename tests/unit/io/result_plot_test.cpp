@@ -45,6 +45,20 @@ TEST(ResultPlot, TicksAreRoundAndCover) {
   EXPECT_GE(wide.back(), DBL_MAX);
 }
 
+// A colour bar's labels: round numbers inside its range, not its fifths (0.6982, 0.8655, ...).
+TEST(ResultPlot, LegendTicksAreRoundAndInside) {
+  const std::vector<double> wall = io::legend_ticks(0.6982, 1.033);
+  ASSERT_EQ(wall.size(), 4u);
+  EXPECT_NEAR(wall.front(), 0.7, 1e-12);
+  EXPECT_NEAR(wall.back(), 1.0, 1e-12);
+  EXPECT_EQ(io::legend_ticks(0, 11), (std::vector<double>{0, 5, 10}));  // not 2.75, 5.5, 8.25
+  const std::vector<double> ends = io::legend_ticks(0, 1);  // ticks on both ends are kept
+  EXPECT_EQ(ends.front(), 0);
+  EXPECT_NEAR(ends.back(), 1, 1e-12);
+  EXPECT_TRUE(io::legend_ticks(3, 3).empty());
+  EXPECT_TRUE(io::legend_ticks(0, std::nan("")).empty());
+}
+
 TEST(ResultPlot, PointsCarryTheirValuesInOrderOfX) {
   io::PlotLabels labels{"dimension against factor", "b.lua: 3 of 3 runs", "factor", "dimension"};
   const std::string svg = io::result_plot_svg(labels, {{0.9, 1.5}, {0.3, 1.1}, {0.6, 0.1 + 0.2}});
