@@ -59,7 +59,9 @@ save(s, "surface.vtp")
 save(s:levels(), "growth.pvd")
 local tree = lsystem { axiom = "A", angle = 30, rules = { "A -> F [ & + A ] [ ^ - A ] F A" } }
 save(tree:curve { level = 4, normalize = false }, "tree.vtp")
-save(lsystem { axiom = "F", angle = 90, rules = { "F -> F+F-F-F+F" } }:curve(2), "koch.svg")
+local koch = lsystem { axiom = "F", angle = 90, rules = { "F -> F+F-F-F+F" } }:curve(2)
+save(koch, "koch.svg")
+save(koch, "koch.vtp")
 """
 
 # The share of a canvas's pixels that are not the white background, and its pixels kept as window[key] (and
@@ -159,6 +161,9 @@ try:
     check(not driver.find_element(By.ID, "view-note").is_displayed(), "no note when every 3D result is a view")
     svg = driver.find_element(By.CSS_SELECTOR, 'img[alt="koch.svg"]')
     check(svg.get_attribute("src").split("?")[0].endswith("/out/koch.svg"), "2D stays an SVG picture")
+    # The same drawing saved as an SVG and a .vtp is drawn once, as the SVG; the .vtp says so, not a bare link.
+    koch_vtp = output(driver, "koch.vtp").text
+    check("drawn as koch.svg" in koch_vtp, "koch.vtp says it is drawn as koch.svg: %r" % koch_vtp)
 
     # (A curve is drawn in lines a pixel wide: less of its canvas is ink than of a surface's.)
     for name, least in [("surface.vtp", 0.01), ("tree.vtp", 0.002), ("growth.pvd", 0.01)]:

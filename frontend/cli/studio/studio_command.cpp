@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <set>
 
 #include "frontend/cli/commands.h"
@@ -91,6 +92,11 @@ struct Studio {
   std::string state_json() const {
     std::string list;
     std::error_code ec;
+    // A result that is also an SVG is drawn once, as the SVG: the page says so beside it.
+    std::map<std::string, std::string> svgs;  // stem -> the SVG's name
+    for (const std::string& f : files)
+      if (lower_case(std::filesystem::path(f).extension().string()) == ".svg")
+        svgs.emplace(std::filesystem::path(f).stem().string(), f);
     for (const std::string& f : files) {
       if (f.ends_with(".stl.json") || f.ends_with(".vdb.json")) continue;  // provenance beside a file
       std::string image = "null";
@@ -102,9 +108,12 @@ struct Studio {
       std::string view = "null";
       if (previewable(f) && std::filesystem::is_regular_file(base.out_dir / view_folder(f) / "index.json", ec))
         view = io::json_string("/out/" + io::url_path(view_folder(f)) + "/");
+      std::string drawn_as = "null";
+      if (const auto svg = svgs.find(std::filesystem::path(f).stem().string()); previewable(f) && svg != svgs.end())
+        drawn_as = io::json_string(svg->second);
       list += std::string(list.empty() ? "" : ", ") + "{\"name\": " + io::json_string(f) +
               ", \"url\": " + io::json_string("/out/" + io::url_path(f)) + ", \"image\": " + image +
-              ", \"view\": " + view + "}";
+              ", \"view\": " + view + ", \"drawn_as\": " + drawn_as + "}";
     }
     return "{\"version\": " + std::to_string(version) + ", \"generation\": " + std::to_string(generation) +
            ", \"running\": " + (running ? "true" : "false") +
