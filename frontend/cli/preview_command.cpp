@@ -124,6 +124,12 @@ double frame_seconds(std::size_t frames) {
   return std::clamp(10.0 / static_cast<double>(std::max<std::size_t>(frames, 1)), 0.1, 0.5);
 }
 
+// NAME of the still NAME.png (a name given by --as without .png is NAME itself): its filmstrip and animation
+// are NAME.steps.png and NAME.apng.
+std::string still_base(const std::string& leaf) {
+  return leaf.size() > 4 && lower_case(leaf.substr(leaf.size() - 4)) == ".png" ? leaf.substr(0, leaf.size() - 4) : leaf;
+}
+
 }  // namespace
 
 PreviewConfig parse_preview_arguments(const std::vector<std::string>& args) {
@@ -224,18 +230,35 @@ int preview_command(const PreviewConfig& config) {
                                          : file.parent_path().empty() ? std::filesystem::path(".")
                                                                       : file.parent_path();
       const bool named = at < config.names.size() && !config.names[at].empty();
+      const bool filmed = config.steps && series;  // a single file has no steps to film: its PNG alone
+      // The files a still named `leaf` comes with: with --steps, NAME.steps.png and NAME.apng beside NAME.png.
+      auto names_with = [&](const std::string& still) {
+        std::vector<std::string> names{still};
+        if (filmed) {
+          const std::string b = still_base(still);
+          names.push_back(b + ".steps.png");
+          names.push_back(b + ".apng");
+        }
+        return names;
+      };
+      auto taken = [&](const std::string& still) {
+        for (const std::string& n : names_with(still))
+          if (written.contains((root / n).lexically_normal().string())) return true;
+        return false;
+      };
       std::string leaf = named ? config.names[at] : stem + ".png";
-      // A later input of the same name in this run gets NAME_EXT.png, then NAME_EXT_2.png, ...
-      if (!written.insert((root / leaf).lexically_normal().string()).second && !named) {
+      // A later input whose PNG, filmstrip or animation would take a name this run wrote (growth.steps.vtp's
+      // PNG is growth.pvd's filmstrip) gets NAME_EXT.png, then NAME_EXT_2.png, ...
+      if (!named && taken(leaf)) {
         const std::string base = stem + "_" + lower_case(file.extension().string()).substr(1);
         leaf = base + ".png";
-        for (int n = 2; !written.insert((root / leaf).lexically_normal().string()).second; ++n)
-          leaf = base + "_" + std::to_string(n) + ".png";
+        for (int n = 2; taken(leaf); ++n) leaf = base + "_" + std::to_string(n) + ".png";
       }
+      for (const std::string& n : names_with(leaf)) written.insert((root / n).lexically_normal().string());
       io::PreviewOptions options;
       options.field = config.field;
       options.up = config.up;
-      options.steps = config.steps && series;  // a single file has no steps to film: its PNG alone
+      options.steps = filmed;
       options.name = file.filename().string();
       // "step 3 of 10", and the series' own time of the step where it gives one ("step 3 of 10, t = 2").
       const std::vector<double> times = series ? io::read_series_times(file) : std::vector<double>{};
@@ -251,9 +274,7 @@ int preview_command(const PreviewConfig& config) {
       const io::PreviewPictures pictures = io::render_preview(steps, title, options, no_progress());
       // With --steps: NAME.steps.png (the filmstrip) and NAME.apng (the animation) beside NAME.png, written
       // before it, so that the still appearing says the others are there.
-      const std::string base = leaf.size() > 4 && lower_case(leaf.substr(leaf.size() - 4)) == ".png"
-                                   ? leaf.substr(0, leaf.size() - 4)
-                                   : leaf;
+      const std::string base = still_base(leaf);
       std::vector<std::pair<std::string, const std::string*>> files;
       std::string animation;
       if (options.steps) {

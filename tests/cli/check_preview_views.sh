@@ -187,4 +187,15 @@ for f in flat_big flat_tiny ball_big ball_far_tiny; do
   check "$f: exit 0 ($(head -1 "$tmp/err"))" test "$code" = 0
   check "$f: drawn, not blank" pixels drawing "$tmp/sizes_png/$f.png" 0.01
 done
+# One run's names never overwrite each other: growth.steps.vtp's PNG would be growth.pvd's filmstrip, in
+# either order (the later file's took the name, silently: four wrote lines, three files).
+cp "$tmp/g/growth/s1.vtp" "$tmp/g/growth.steps.vtp"
+for order in "growth.pvd growth.steps.vtp" "growth.steps.vtp growth.pvd"; do
+  rm -rf "$tmp/names"
+  # shellcheck disable=SC2086
+  preview $(printf "$tmp/g/%s " $order) --steps -o "$tmp/names"
+  check "$order: exit 0 ($(head -1 "$tmp/err"))" test "$code" = 0
+  check "$order: four files for four wrote lines" test "$(find "$tmp/names" -type f | wc -l)" = 4 -a \
+    "$(grep -c '^wrote ' "$tmp/out")" = 4
+done
 finish
