@@ -120,6 +120,15 @@ assert rows["x=2"]["status"] == "not run" and rows["x=2"]["twice"] == "", rows["
 assert rows["x=1"]["status"] == "ok" and rows["x=1"]["twice"] == "", rows["x=1"]
 PY
 
+# A results.json edited to give a result named like the swept key: refused as unreadable (its cells empty),
+# not a second column x that a reader of the table would take for the key.
+sed -i 's/{"results": {/{"results": {"x": 99, /' pw/x=4.25/results.json
+"$selfsim" sweep s.lua -o pw --set x=0.5,1,2,3,4.25 --collect -q 2>err.txt
+grep -qF "warning: cannot read 'pw/x=4.25/results.json': it gives a result named 'x', as the swept key" err.txt ||
+  fail "a result named like the key is said: $(cat err.txt)"
+[ "$(head -1 pw/results.csv | tr -d '\r' | tr ',' '\n' | grep -c '^x$')" = 1 ] && [ ! -e pw/plot_x.svg ] ||
+  fail "one column x, no plot of x: $(head -1 pw/results.csv)"
+
 # Two keys vary: the table has both, and no plot, said in the summary and on the sheet. A key whose values
 # are not numbers: no plot either. Plots an earlier sweep left in the folder go.
 printf 'local a = param("a", 1)\nlocal b = param("b", "u")\nresult("r", a * 10)\nsave(polyline({ { 0, 0 }, { a, 1 } }), "p.svg")\n' >ab.lua

@@ -10,6 +10,7 @@
 #include "frontend/lua/parse_text.h"
 #include "kernels/io/csv_file.h"
 #include "kernels/io/output_file.h"
+#include "kernels/io/read_error.h"
 #include "kernels/io/run_results.h"
 #include "kernels/io/view/result_plot.h"
 
@@ -58,8 +59,15 @@ SweepResults write_sweep_results(const SweepConfig& c, const SweepPlan& plan, co
   for (std::size_t i = 0; i < n; ++i) {
     if (codes[i] != 0) continue;  // a failed run's results (if any) are not the run's: its cells stay empty
     try {
-      const auto given = io::read_results(out / plan.runs[i].folder);
+      const std::filesystem::path folder = out / plan.runs[i].folder;
+      const auto given = io::read_results(folder);
       if (!given) continue;
+      // result() refuses a parameter's name, so a result named like a swept key was written by hand (or by
+      // another recipe): a second column of that name would be read as the key by whoever reads the table.
+      for (const io::RunResult& one : *given)
+        if (std::find(plan.keys.begin(), plan.keys.end(), one.name) != plan.keys.end())
+          throw Error(io::cannot_read(folder / io::results_file,
+                                      "it gives a result named '" + one.name + "', as the swept key"));
       for (const io::RunResult& one : *given) {
         if (seen.insert(one.name).second) r.names.push_back(one.name);
         values[i][one.name] = one.value;
