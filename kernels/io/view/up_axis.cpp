@@ -10,10 +10,16 @@ namespace selfsim::io {
 
 namespace {
 
-// Sums for Pearson's correlation between a level and each coordinate.
+// Sums for Pearson's correlation between a level and each coordinate, each taken relative to the first
+// sample: sums of squares at a distance from the origin (a stack at z = 1e9) lose the spread to rounding.
 struct Sums {
   double n = 0, l = 0, ll = 0, c[3] = {0, 0, 0}, cc[3] = {0, 0, 0}, lc[3] = {0, 0, 0};
-  void add(double level, const std::array<double, 3>& p) {
+  double level0 = 0;
+  std::array<double, 3> p0{};
+  void add(double level_at, const std::array<double, 3>& p_at) {
+    if (n == 0) level0 = level_at, p0 = p_at;
+    const double level = level_at - level0;
+    const std::array<double, 3> p{p_at[0] - p0[0], p_at[1] - p0[1], p_at[2] - p0[2]};
     n += 1;
     l += level;
     ll += level * level;

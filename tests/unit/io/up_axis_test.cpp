@@ -36,6 +36,19 @@ TEST(UpAxis, TheAxisALevelFollows) {
   EXPECT_EQ(io::up_axis(stack(2, -1)), 2);  // a surface developing downwards hangs along z
 }
 
+// A stack far from the origin (moved by a transform, or in a file's world units) stands as it does at the
+// origin: the sums of squares at 1e9 lost the stack's own spread to rounding.
+TEST(UpAxis, FarFromTheOrigin) {
+  for (const double offset : {1e6, 1e9, -3e12})
+    for (int axis : {0, 2}) {
+      io::Dataset d = stack(axis, 1);
+      for (auto& p : d.points)
+        for (double& x : p) x += offset;
+      for (double& l : d.point_fields["level"].values) l += offset;
+      EXPECT_EQ(io::up_axis(d), axis) << offset;
+    }
+}
+
 TEST(UpAxis, ALevelThatFollowsNoAxisLeavesY) {
   io::Dataset d;
   for (int i = 0; i < 20; ++i) {
