@@ -198,4 +198,10 @@ for order in "growth.pvd growth.steps.vtp" "growth.steps.vtp growth.pvd"; do
   check "$order: four files for four wrote lines" test "$(find "$tmp/names" -type f | wc -l)" = 4 -a \
     "$(grep -c '^wrote ' "$tmp/out")" = 4
 done
+# A drawing wider than a 32-bit float holds: one line saying so, no PNG (it was a blank picture and exit 0).
+vtp "$tmp/g/huge.vtp" "0 0 0  0 1e200 0.3  0.2 1.5 1e200" "0 0 0" "0 1 2" "3" 3 1
+preview "$tmp/g/huge.vtp" -o "$tmp/huge"
+check "1e200 across: exit 1, one line ($(head -1 "$tmp/err"))" test "$code" = 1 -a "$(wc -l <"$tmp/err")" = 1
+check "1e200 across: says why" grep -q "too large to draw (an extent of 1e+200; the renderer draws in 32-bit" "$tmp/err"
+check "1e200 across: no PNG" test ! -e "$tmp/huge/huge.png"
 finish

@@ -19,10 +19,12 @@
 #include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 
+#include "kernels/base/check.h"
 #include "kernels/base/error.h"
 #include "kernels/io/child_process.h"
 #include "kernels/io/dataset/dataset_pipe.h"
@@ -309,13 +311,22 @@ PreviewPictures render_preview(std::span<const Dataset> steps, const std::string
                                Progress& progress) {
   if (steps.empty()) throw Error("it holds no steps");
   std::size_t total = 0;
+  std::array<double, 3> lo{DBL_MAX, DBL_MAX, DBL_MAX}, hi{-DBL_MAX, -DBL_MAX, -DBL_MAX};
   for (const Dataset& d : steps) {
     if (d.points.empty()) throw Error(steps.size() > 1 ? "a step holds no points" : "it holds no points");
-    for (const auto& p : d.points)
+    for (const auto& p : d.points) {
       if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
         throw Error("it holds a point that is not finite");
+      for (int j = 0; j < 3; ++j) lo[j] = std::min(lo[j], p[j]), hi[j] = std::max(hi[j], p[j]);
+    }
     total += d.points.size() + d.cell_points.size();
   }
+  // OpenGL draws in 32-bit floats: a drawing wider than one holds came out a blank picture, exit 0. The
+  // studio's 3D view refuses the same extent (geometry_payload.cpp).
+  for (int j = 0; j < 3; ++j)
+    if (!(hi[j] / 2 - lo[j] / 2 < 0.5 * FLT_MAX))
+      throw Error("it is too large to draw (an extent of " + number_text(hi[j] - lo[j]) +
+                  "; the renderer draws in 32-bit floats)");
   if (progress.cancelled()) throw Cancelled();
   Plan plan;
   plan.title = title;
