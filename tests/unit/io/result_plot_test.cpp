@@ -52,7 +52,7 @@ TEST(ResultPlot, LegendTicksAreRoundAndInside) {
   EXPECT_NEAR(wall.front(), 0.7, 1e-12);
   EXPECT_NEAR(wall.back(), 1.0, 1e-12);
   EXPECT_EQ(io::legend_ticks(0, 11), (std::vector<double>{0, 5, 10}));  // not 2.75, 5.5, 8.25
-  const std::vector<double> ends = io::legend_ticks(0, 1);  // ticks on both ends are kept
+  const std::vector<double> ends = io::legend_ticks(0, 1);              // ticks on both ends are kept
   EXPECT_EQ(ends.front(), 0);
   EXPECT_NEAR(ends.back(), 1, 1e-12);
   EXPECT_TRUE(io::legend_ticks(3, 3).empty());
