@@ -186,5 +186,32 @@ if m:
 studio.send_signal(signal.SIGINT)
 studio.wait(60)
 
+# 6. A 3D view its reader cannot hold under --max-memory (a 709 x 709 grid, 19 MB of PLY, at 64M): the page's
+# reason names the limit, as the preview's line does ("cannot read 'big.ply': out of memory" alone before).
+import math, struct
+n = 709
+big = os.path.join(tmp, "big.ply")
+with open(big, "wb") as f:
+    f.write((f"ply\nformat binary_little_endian 1.0\nelement vertex {n * n}\nproperty float x\nproperty float y\n"
+             f"property float z\nelement face {2 * (n - 1) ** 2}\nproperty list uchar int vertex_indices\n"
+             "end_header\n").encode())
+    f.write(b"".join(struct.pack("<fff", i / n, j / n, 0.1 * math.sin(i / 20)) for j in range(n) for i in range(n)))
+    f.write(b"".join(struct.pack("<BiiiBiii", 3, j * n + i, j * n + i + 1, j * n + i + n, 3, j * n + i + 1,
+                                 j * n + i + n + 1, j * n + i + n) for j in range(n - 1) for i in range(n - 1)))
+with open(recipe, "w") as f:
+    f.write('local n = param("n", 1)\nsave(load("big.ply"), "big.ply")\n')
+shutil.rmtree(out, ignore_errors=True)
+studio, port, line = start_studio("--max-memory", "64M")
+index = os.path.join(out, ".studio", "big.ply.3d", "index.json")
+until(lambda: os.path.isfile(index), 120)
+try:
+    with open(index) as f:
+        view = f.read()
+except OSError:
+    view = ""
+check('"error"' in view and "--max-memory" in view, f"a view over --max-memory names the limit: {view!r}")
+studio.send_signal(signal.SIGINT)
+studio.wait(60)
+
 shutil.rmtree(tmp, ignore_errors=True)
 finish()

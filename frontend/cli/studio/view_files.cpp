@@ -134,7 +134,11 @@ void write_view(const std::filesystem::path& root, const std::string& file, cons
             io::json_string("'" + io::one_line(file) + "' needs more memory for its 3D view than --max-memory allows") +
             "}\n";
   } catch (const Error& e) {
-    index = "{\"error\": " + io::json_string(io::one_line(e.what())) + "}\n";
+    // A reader or VTK meeting the limit says "out of memory" or "Unable to allocate" without naming it.
+    std::string why = io::one_line(e.what());
+    if (why.find("out of memory") != std::string::npos || why.find("nable to allocate") != std::string::npos)
+      why += " (perhaps --max-memory is too little)";
+    index = "{\"error\": " + io::json_string(why) + "}\n";
   }
   io::write_whole(root, folder + "/index.json", index);
 }
