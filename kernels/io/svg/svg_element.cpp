@@ -1,6 +1,9 @@
 #include "kernels/io/svg/svg_element.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <optional>
 
 #include "kernels/base/error.h"
 #include "kernels/base/lower_case.h"
@@ -149,10 +152,38 @@ void SvgScopes::push(const SvgElement& e, const SvgTag& tag) {
   scopes_.push_back({e.drawn && e.local != "path", e.visible, e.to_selfsim, namespaces_.size(), e.stroke, e.fill});
 }
 
+namespace {
+
+// A paint as SVG and CSS write it: a colour name, #rgb, #rrggbb, or rgb()/rgba() of three numbers (0 to 255)
+// or percentages, by commas or spaces, an alpha after them ignored, each clamped as CSS does. Inkscape and
+// many plotting tools write rgb(): read as no colour, such a stroke was drawn black.
+std::optional<Rgb> paint_rgb(const std::string& text) {
+  if (auto c = colour_rgb(text)) return c;
+  const std::string t = lower_case(text);
+  const std::size_t open = t.find('(');
+  if (open == std::string::npos || t.back() != ')' ||
+      (t.compare(0, open, "rgb") != 0 && t.compare(0, open, "rgba") != 0))
+    return std::nullopt;
+  Rgb c{};
+  const char* at = t.c_str() + open + 1;
+  for (int j = 0; j < 3; ++j) {
+    while (*at == ' ' || *at == '\t' || (j > 0 && *at == ',')) ++at;
+    char* end = nullptr;
+    const double v = std::strtod(at, &end);
+    if (end == at || !std::isfinite(v)) return std::nullopt;
+    const bool percent = *end == '%';
+    c[static_cast<std::size_t>(j)] = std::clamp(percent ? v / 100 : v / 255, 0.0, 1.0);
+    at = end + (percent ? 1 : 0);
+  }
+  return c;
+}
+
+}  // namespace
+
 Rgb SvgElement::colour() const {
-  if (auto c = colour_rgb(stroke)) return *c;
+  if (auto c = paint_rgb(stroke)) return *c;
   if (fill != "none")
-    if (auto c = colour_rgb(fill)) return *c;
+    if (auto c = paint_rgb(fill)) return *c;
   return {0, 0, 0};  // SVG's own default: a black fill
 }
 

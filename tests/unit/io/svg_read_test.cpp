@@ -267,3 +267,17 @@ TEST(SvgRead, StrokeColoursPerPath) {
   EXPECT_EQ(c->second.components, 3);
   EXPECT_EQ(c->second.values, (std::vector<double>{1, 0, 0, 0, 0, 1, 0, 0, 1, 0, 1, 0, 1, 1, 0, 0, 0, 0}));
 }
+
+// rgb() and rgba() paints (Inkscape's and many plotting tools' form): numbers 0 to 255 or percentages, by
+// commas or spaces, clamped; an alpha ignored. They were read as no colour, so drawn black.
+TEST(SvgRead, RgbFunctionPaints) {
+  TempDir dir;
+  const io::Dataset d = read_text(
+      dir, in_flip("<path stroke=\"rgb(255, 0, 0)\" d=\"M0 0 L1 0\"/><path stroke=\"RGB(0%,100%,0%)\" d=\"M0 1 L1 1\"/>"
+                   "<path stroke=\"rgba(0 0 255 / 0.5)\" d=\"M0 2 L1 2\"/><path style=\"stroke: rgb(300,-5,51)\" "
+                   "d=\"M0 3 L1 3\"/><path stroke=\"rgb(1,2)\" d=\"M0 4 L1 4\"/>"));
+  ASSERT_EQ(d.cell_ends.size(), 5u);
+  const auto c = d.cell_fields.find("color");
+  ASSERT_NE(c, d.cell_fields.end());
+  EXPECT_EQ(c->second.values, (std::vector<double>{1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 0.2, 0, 0, 0}));
+}
