@@ -6,43 +6,11 @@ recipe and sees the picture follow. Then what the page must refuse: another Host
 of the output folder, a value outside its range. The waits are bounds against a hang, not timings.
 
 usage: check_studio.py SELFSIM [SCREENSHOT.png]   exit 77 when Chromium or Selenium is missing"""
-import http.client, os, re, shutil, signal, subprocess, sys, tempfile, time
+import http.client, os, re, shutil, signal, subprocess, sys, tempfile
 
-try:
-    from selenium import webdriver
-    from selenium.webdriver.chrome.options import Options
-    from selenium.webdriver.chrome.service import Service
-    from selenium.webdriver.common.by import By
-    from selenium.webdriver.common.keys import Keys
-except ImportError:
-    print("skipped: python3-selenium is not installed (make test installs it)")
-    sys.exit(77)
-if not shutil.which("chromium") or not os.path.exists("/usr/bin/chromedriver"):
-    print("skipped: chromium or chromium-driver is not installed (make test installs them)")
-    sys.exit(77)
+from browser_lib import By, Keys, Options, Service, check, failures, until, webdriver
 
 selfsim = sys.argv[1]
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-        print("FAIL: " + what)
-
-
-def until(condition, seconds=30):
-    end = time.monotonic() + seconds
-    while time.monotonic() < end:
-        try:
-            value = condition()
-            if value:
-                return value
-        except Exception:
-            pass
-        time.sleep(0.1)
-    return None
-
 
 RECIPE = """local curves = require "selfsim.curves"
 local level = param("level", 6, {{ min = 1, max = 12, doc = "levels of the curve" }})

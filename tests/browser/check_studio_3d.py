@@ -9,46 +9,20 @@ waits are bounds against a hang, not timings.
 
 usage: check_studio_3d.py SELFSIM [SCREENSHOT.png]
 exit 77 when Chromium, Selenium or libjs-three is missing"""
-import http.client, os, re, shutil, signal, subprocess, sys, tempfile, time
+import http.client, os, re, shutil, signal, subprocess, sys, tempfile
 
-try:
-    from selenium import webdriver
-    from selenium.webdriver.chrome.options import Options
-    from selenium.webdriver.chrome.service import Service
-    from selenium.webdriver.common.action_chains import ActionChains
-    from selenium.webdriver.common.by import By
-    from selenium.webdriver.common.keys import Keys
-except ImportError:
-    print("skipped: python3-selenium is not installed (make test installs it)")
-    sys.exit(77)
-if not shutil.which("chromium") or not os.path.exists("/usr/bin/chromedriver"):
-    print("skipped: chromium or chromium-driver is not installed (make test installs them)")
-    sys.exit(77)
+import browser_lib
+from browser_lib import ActionChains, By, Keys, Options, Service, check, failures, webdriver
+
 if not os.path.exists("/usr/share/javascript/three/build/three.min.js"):
     print("skipped: libjs-three is not installed (make deps installs it)")
     sys.exit(77)
 
 selfsim = sys.argv[1]
-failures = []
 
 
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-        print("FAIL: " + what)
-
-
-def until(condition, seconds=60):
-    end = time.monotonic() + seconds
-    while time.monotonic() < end:
-        try:
-            value = condition()
-            if value:
-                return value
-        except Exception:
-            pass
-        time.sleep(0.1)
-    return None
+def until(condition, seconds=60):  # software WebGL draws slowly: longer bounds
+    return browser_lib.until(condition, seconds)
 
 
 RECIPE = """local levels = param("levels", 3, { min = 1, max = 4 })
