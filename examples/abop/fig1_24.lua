@@ -10,7 +10,7 @@
 --   f  n=5  delta=22.5  X -> F-[[X]+X]+F[+FX]-X, F -> FF
 --   selfsim run examples/abop/fig1_24.lua
 local sheet = require "selfsim.sheet"
-local level = param("level", 0)
+local level = param("level", 0, { min = 0, max = 9, doc = "every plant's level; 0: the book's n" })
 
 local figures = {
   { n = 5, angle = 25.7, axiom = "F", rules = { F = "F[+F]F[-F]F" } },

@@ -6,7 +6,7 @@
 -- (selfsim's turtle starts at width 1, cpfg's at its view file's width); colours and shading are left to
 -- ParaView; the leaves are a separate mesh (face field `color`: the colour index, 3 more than its stem's).
 --   selfsim run examples/abop/fig1_25.lua --set level=7
-local level = param("level", 7)
+local level = param("level", 7, { min = 0, max = 9, doc = "the level (the book: 7)" })
 local bush = lsystem {
   axiom = "!(" .. level .. ")A", angle = 22.5,
   rules = {

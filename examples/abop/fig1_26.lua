@@ -7,7 +7,7 @@
 --   pedicel  -> FF                                     wedge -> ['^F][{&&&&-f+f|-f+f}]
 -- Stems are the curve, leaves and petals the mesh (face field `color`: the book's colour index, from `'`).
 --   selfsim run examples/abop/fig1_26.lua --set level=5
-local level = param("level", 5)
+local level = param("level", 5, { min = 0, max = 8, doc = "the level (the book: 5)" })
 local plant = lsystem {
   axiom = "P", angle = 18,
   rules = {

@@ -6,7 +6,7 @@
 -- plant each seed draws (the book's random numbers are not given).
 --   selfsim run examples/abop/fig1_27.lua --set level=5
 local sheet = require "selfsim.sheet"
-local level = param("level", 5)
+local level = param("level", 5, { min = 0, max = 8, doc = "the level (the book: 5)" })
 local plants = {}
 for i, seed in ipairs { 1, 2, 3 } do
   local g = lsystem {

@@ -14,8 +14,8 @@
 -- tests/lsystem/abop_context_check.py compares with its own rewriter.
 --   selfsim run examples/abop/fig1_31.lua
 local sheet = require "selfsim.sheet"
-local level = param("level", 0)
-local strings = param("strings", 0)
+local level = param("level", 0, { min = 0, max = 40, doc = "every plant's level; 0: the book's n" })
+local strings = param("strings", 0, { min = 0, max = 1, doc = "1: print the strings instead of drawing" })
 
 local contexts = { "0 < 0 > 0", "0 < 0 > 1", "0 < 1 > 0", "0 < 1 > 1", "1 < 0 > 0", "1 < 0 > 1", "1 < 1 > 0",
                    "1 < 1 > 1" }

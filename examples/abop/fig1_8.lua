@@ -2,7 +2,7 @@
 -- n visits every point of a (2^n)^3 lattice cube once). Yaw + -, pitch & ^ (the book's ∧), roll \ /, and
 -- | turns around. The same model as examples/lsystem_hilbert3d.lua.
 --   selfsim run examples/abop/fig1_8.lua --set level=3
-local level = param("level", 2)
+local level = param("level", 2, { min = 0, max = 5, doc = "the level (the book: 2)" })
 local hilbert = lsystem {
   axiom = "A", angle = 90,
   rules = {

@@ -6,10 +6,9 @@
 -- `variant` picks one (1 = a ... 4 = d). Differs from the book: no tropism (the book's Figure 2.6 has none;
 -- examples/lsystem_tree3d.lua adds a little).
 --   selfsim run examples/abop/fig2_6.lua --set variant=4
-local level = param("level", 10)
-local variant = param("variant", 1)
+local level = param("level", 10, { min = 0, max = 16, doc = "the level (the book: 10)" })
+local variant = param("variant", 1, { min = 1, max = 4, step = 1, doc = "the book's variant: 1 = a ... 4 = d" })
 local v = ({ { 0.6, 45, 45 }, { 0.9, 45, 45 }, { 0.8, 45, 45 }, { 0.7, 30, -30 } })[variant]
-if not v then error("variant must be 1, 2, 3 or 4 (the book's a-d), got " .. tostring(variant)) end
 local tree = lsystem {
   axiom = "A(1, 10)",
   define = { r1 = 0.9, r2 = v[1], a0 = v[2], a2 = v[3], d = 137.5, wr = 0.707 },

@@ -8,11 +8,10 @@
 -- `variant` picks one (1 = a ... 4 = d), `level` another n than the book's (0: the book's).
 -- The book's `F(l) : * -> F(l*lr)` and `!(w) : * -> !(w*vr)` (`*`: always) are written without a condition.
 --   selfsim run examples/abop/fig2_8.lua --set variant=1
-local variant = param("variant", 1)
-local level = param("level", 0)
+local variant = param("variant", 1, { min = 1, max = 4, step = 1, doc = "the book's variant: 1 = a ... 4 = d" })
+local level = param("level", 0, { min = 0, max = 10, doc = "the level; 0: the book's n" })
 local v = ({ { 94.74, 132.63, 18.95, 1.109, 0.22, 6 }, { 137.5, 137.5, 18.95, 1.109, 0.14, 8 },
              { 112.5, 157.5, 22.5, 1.790, 0.27, 8 }, { 180, 252, 36, 1.070, 0.40, 6 } })[variant]
-if not v then error("variant must be 1, 2, 3 or 4 (the book's a-d), got " .. tostring(variant)) end
 local tree = lsystem {
   axiom = "!(1) F(200) /(45) A",
   define = { d1 = v[1], d2 = v[2], a = v[3], lr = v[4], vr = 1.732 },
