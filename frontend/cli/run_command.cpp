@@ -17,6 +17,7 @@
 #include "frontend/cli/sweep/literal_params.h"
 #include "frontend/cli/sweep/sweep.h"
 #include "frontend/lua/lua_support.h"
+#include "frontend/lua/nil_name_hint.h"
 #include "frontend/lua/options_reader.h"
 #include "frontend/lua/sandbox.h"
 #include "frontend/process/spawn_selfsim.h"
@@ -48,7 +49,12 @@ int message_handler(lua_State* L) {
   const std::string where = recipe_where(L);
   lua_pushstring(L, where.c_str());
   lua_setfield(L, LUA_REGISTRYINDEX, error_where_key);
-  if (lua_type(L, 1) == LUA_TSTRING) return 1;
+  if (lua_type(L, 1) == LUA_TSTRING) {
+    // A misspelt global or DSL function names the closest name (nil_name_hint.h); any other text as it is.
+    const std::string text = with_nil_name_hint(L, lua_tostring(L, 1));
+    lua_pushlstring(L, text.data(), text.size());
+    return 1;
+  }
   // A __tostring is called under pcall: one that raises or loops (the hook stops it) still gives a line.
   std::string text;
   lua_getglobal(L, "tostring");
@@ -332,7 +338,12 @@ int run_command(const RunConfig& given) {
       }
   }
   std::fflush(stdout);
-  lua_close(L);
+  lua_close(L);  // finalizers run here: one that fails ends the run with its own message first
+  // A recipe that ran to its end and wrote nothing most likely forgot its save(): said, not an error (a
+  // recipe may only print), so the exit status stays 0. results.json counts as something written.
+  if (status == LUA_OK && code == 0 && !config.params_only && run.saved.empty() && run.results.empty())
+    std::fprintf(stderr, "selfsim: warning: %s saved nothing (call save(value, \"name.ext\") to write a file)\n",
+                 shown_text(config.recipe.string()).c_str());
   return code;
 }
 

@@ -5,6 +5,7 @@
 
 #include "frontend/lua/curve_value.h"
 #include "frontend/lua/lua_support.h"
+#include "frontend/lua/option_hints.h"
 #include "frontend/lua/point_reader.h"
 #include "frontend/lua/value_types.h"
 #include "kernels/base/check.h"
@@ -249,6 +250,13 @@ void Options::finish() {
     return;
   }
   const std::vector<std::string> known(read_.begin(), read_.end());
+  // A name known from elsewhere for one of these options ("elasticity" for tropism) says how it is written.
+  std::string value;
+  lua_pushlstring(L, unknown.front().data(), unknown.front().size());
+  if (lua_rawget(L, index_) == LUA_TNUMBER) value = number_text(lua_tonumber(L, -1));
+  lua_pop(L, 1);
+  if (const std::string hint = option_hint(unknown.front(), known, value); !hint.empty())
+    throw Error("unknown option '" + shown_text(unknown.front()) + "': " + hint);
   const std::string near = suggestion(unknown.front(), known);
   // Without a likely meaning, the valid options themselves (a short list: every binding reads few).
   const std::string hint = !near.empty()        ? " (did you mean '" + near + "'?)"
