@@ -7,6 +7,7 @@
 
 #include "frontend/bindings/bindings.h"
 #include "frontend/bindings/lsystem_rules.h"
+#include "frontend/bindings/lsystem_value.h"
 #include "frontend/lua/curve_value.h"
 #include "frontend/lua/growth.h"
 #include "frontend/lua/lua_support.h"
@@ -145,6 +146,8 @@ Grammar read_grammar(lua_State* L, int index) {
   g.seed = static_cast<std::uint64_t>(o.integer("seed", RunContext::of(L).config.seed, 0, (1LL << 53)));
   g.dimension = static_cast<int>(o.integer("dimension", 0, 2, 3));  // absent: 0, chosen by the symbols
   if (const std::optional<Vec3> t = o.point3("tropism")) g.tropism = *t;
+  // The book's "derivation length": the level drawn when a call gives none.
+  g.level = static_cast<int>(o.integer("level", -1, 0, lsystem::max_level));
   o.finish();
   // The byte turtle draws plain grammars in 2D; the module turtle also turns in 3D, keeps widths and
   // colours, and fills polygons.
@@ -165,7 +168,8 @@ namespace {
 
 // The level argument of g:string(n) / g:count(n).
 // A whole float (3.0, a level computed as n / 2) is accepted as the integer it is.
-int level_argument(lua_State* L, int index) {
+int level_argument(lua_State* L, int index, const Grammar& g) {
+  if (lua_isnoneornil(L, index) && g.level >= 0) return g.level;  // the grammar's own (derivation length)
   const bool number = lua_type(L, index) == LUA_TNUMBER;
   const double v = number ? lua_tonumber(L, index) : 0;
   if (!lua_isinteger(L, index) && !(number && std::floor(v) == v && std::abs(v) < 1e18))
@@ -175,14 +179,15 @@ int level_argument(lua_State* L, int index) {
 }
 
 // g:curve{ level, normalize } or g:curve(level).
-lsystem::TurtleOptions turtle_options(lua_State* L, const char* method) {
+lsystem::TurtleOptions turtle_options(lua_State* L, const char* method, const Grammar& g) {
   lsystem::TurtleOptions opt;
-  if (lua_type(L, 2) == LUA_TNUMBER) {
-    opt.level = level_argument(L, 2);
+  if (lua_type(L, 2) == LUA_TNUMBER || (lua_isnoneornil(L, 2) && g.level >= 0)) {
+    opt.level = level_argument(L, 2, g);
   } else {
     Options o(L, 2);
-    o.require("level", std::string("the rewriting level: g:") + method + "{ level = 10 } or g:" + method + "(10)");
-    opt.level = static_cast<int>(o.integer("level", 0, 0, lsystem::max_level));
+    if (g.level < 0)
+      o.require("level", std::string("the rewriting level: g:") + method + "{ level = 10 } or g:" + method + "(10)");
+    opt.level = static_cast<int>(o.integer("level", std::max(g.level, 0), 0, lsystem::max_level));
     if (o.has("normalize")) opt.normalize = o.boolean("normalize", true);  // not given: the grammar decides
     o.finish();
   }
@@ -201,7 +206,7 @@ int grammar_curve(lua_State* L) {
   const Grammar& g = *held;
   return call_kernel(L, "curve", [&] {
     RunContext& run = RunContext::of(L);
-    lsystem::TurtleOptions opt = turtle_options(L, "curve");
+    lsystem::TurtleOptions opt = turtle_options(L, "curve", g);
     GrownValue drawn = with_budget(L, [&](const PointBudget& b) {
       opt.budget = b;
       return draw(g, opt, run);
@@ -230,7 +235,7 @@ int grammar_polygons(lua_State* L) {
       throw Error(
           "this grammar writes no polygons: '{', '.' and '}' make them in a grammar with parameters, "
           "contexts or choices (or write its rules as ABOP strings, rules = { \"F -> ...\" })");
-    lsystem::TurtleOptions opt = turtle_options(L, "polygons");
+    lsystem::TurtleOptions opt = turtle_options(L, "polygons", g);
     push_geometry(L, with_budget(L, [&](const PointBudget& b) {
                     opt.budget = b;
                     return lsystem::module_polygons(g, opt, RunContext::of(L));
@@ -243,7 +248,7 @@ int grammar_string(lua_State* L) {
   const Held<Grammar> held = self(L, "string");
   const Grammar& g = *held;
   return call_kernel(L, "string", [&] {
-    const int level = level_argument(L, 2);
+    const int level = level_argument(L, 2, g);
     const std::string s = g.modules() ? lsystem::module_string_text(g, level, 1e7, RunContext::of(L))
                                       : lsystem::expand_string(g, level, 1e7);
     lua_pushlstring(L, s.data(), s.size());
@@ -255,7 +260,7 @@ int grammar_count(lua_State* L) {
   const Held<Grammar> held = self(L, "count");
   const Grammar& g = *held;
   return call_kernel(L, "count", [&] {
-    const int level = level_argument(L, 2);
+    const int level = level_argument(L, 2, g);
     RunContext& run = RunContext::of(L);
     const double n = g.modules() ? lsystem::module_segments(g, level, run.budget().left(), run)
                                  : lsystem::predict_counts(g, level, run).segments;
@@ -277,34 +282,40 @@ int grammar_tostring(lua_State* L) {
   return 1;
 }
 
+}  // namespace
+
+int push_lsystem(lua_State* L, int index) {
+  Grammar g = read_grammar(L, index);
+  // A 3D tree drawn by the 2D turtle (dimension = 2) would silently collapse: said once per grammar.
+  const std::string ignored = lsystem::draws_in_3d(g) ? "" : turtle_symbols(g, g.modules() ? "&^\\/$" : "&^\\/$!'{}");
+  if (!ignored.empty()) {
+    std::string list;
+    for (char c : ignored) list += std::string(list.empty() ? "'" : ", '") + c + "'";
+    const std::string message = recipe_where(L) + "lsystem: the 2D turtle ignores the 3D turtle commands " + list +
+                                " (they still take part in rewriting)";
+    lua_warning(L, message.c_str(), 0);
+  }
+  for (const std::string& w : lsystem::context_warnings(g)) {
+    const std::string message = recipe_where(L) + "lsystem: " + w;
+    lua_warning(L, message.c_str(), 0);
+  }
+  // A grammar's rules are recipe data held in C++ memory: they count against --max-memory like Lua's
+  // own strings, so a recipe cannot hoard gigabytes of grammars.
+  std::size_t bytes = sizeof(Grammar) + g.axiom.size() + g.draw.size() + g.move.size();
+  for (const auto& [symbol, rule] : g.rules) bytes += rule.size() + 64;
+  for (const lsystem::Production& p : g.productions) {
+    bytes += sizeof(p) + 2 * p.text.size() + p.where.size();
+    for (const lsystem::Successor& o : p.options) bytes += 64 * (o.modules.size() + 1);
+  }
+  bytes += 64 * g.start.size();
+  push_value(L, grammar_type, std::move(g), 0, bytes);
+  return 1;
+}
+
+namespace {
+
 int make_lsystem(lua_State* L) {
-  return call_kernel(L, "lsystem", [&] {
-    Grammar g = read_grammar(L, 1);
-    // A 3D tree drawn by the 2D turtle (dimension = 2) would silently collapse: said once per grammar.
-    const std::string ignored = lsystem::draws_in_3d(g) ? "" : turtle_symbols(g, g.modules() ? "&^\\/$" : "&^\\/$!'{}");
-    if (!ignored.empty()) {
-      std::string list;
-      for (char c : ignored) list += std::string(list.empty() ? "'" : ", '") + c + "'";
-      const std::string message = recipe_where(L) + "lsystem: the 2D turtle ignores the 3D turtle commands " + list +
-                                  " (they still take part in rewriting)";
-      lua_warning(L, message.c_str(), 0);
-    }
-    for (const std::string& w : lsystem::context_warnings(g)) {
-      const std::string message = recipe_where(L) + "lsystem: " + w;
-      lua_warning(L, message.c_str(), 0);
-    }
-    // A grammar's rules are recipe data held in C++ memory: they count against --max-memory like Lua's
-    // own strings, so a recipe cannot hoard gigabytes of grammars.
-    std::size_t bytes = sizeof(Grammar) + g.axiom.size() + g.draw.size() + g.move.size();
-    for (const auto& [symbol, rule] : g.rules) bytes += rule.size() + 64;
-    for (const lsystem::Production& p : g.productions) {
-      bytes += sizeof(p) + 2 * p.text.size() + p.where.size();
-      for (const lsystem::Successor& o : p.options) bytes += 64 * (o.modules.size() + 1);
-    }
-    bytes += 64 * g.start.size();
-    push_value(L, grammar_type, std::move(g), 0, bytes);
-    return 1;
-  });
+  return call_kernel(L, "lsystem", [&] { return push_lsystem(L, 1); });
 }
 
 }  // namespace
@@ -318,7 +329,17 @@ void open_lsystem(lua_State* L) {
        {"string", grammar_string, 1, "one argument: the level, g:string(5)"},
        {"count", grammar_count, 1, "one argument: the level, g:count(5)"}},
       grammar_tostring);
-  lua_register(L, "lsystem", make_lsystem);
+  // lsystem{...} makes a grammar; lsystem.book and lsystem.load read the book's notation and cpfg's files.
+  const luaL_Reg functions[] = {{"book", lsystem_book}, {nullptr, nullptr}};
+  luaL_newlib(L, functions);
+  lua_newtable(L);
+  lua_pushcfunction(L, [](lua_State* S) {
+    lua_remove(S, 1);  // the lsystem table itself
+    return make_lsystem(S);
+  });
+  lua_setfield(L, -2, "__call");
+  lua_setmetatable(L, -2);
+  lua_setglobal(L, "lsystem");
 }
 
 }  // namespace selfsim::interp

@@ -9,6 +9,7 @@
 #include "frontend/lua/lua_support.h"
 #include "frontend/lua/options_reader.h"
 #include "kernels/base/error.h"
+#include "kernels/lsystem/book_text.h"
 #include "kernels/lsystem/rule_parser.h"
 
 namespace selfsim::interp {
@@ -31,10 +32,16 @@ std::vector<std::string> constant_names(const lsystem::Grammar& g) {
   return names;
 }
 
+// A rule in the book's notation ('→', 'p1:', a probability at the arrow, ...) is named as the book's, with the
+// way to write it here: the parser's own message would not say why the book's form fails.
 Production parse(const std::string& text, const std::string& where, const std::vector<std::string>& constants) {
+  if (const auto hint = lsystem::book_form_hint(text, false))
+    rule_error(lsystem::RuleError(hint->first, hint->second), where, text);
   try {
     return lsystem::parse_rule(text, where, constants);
   } catch (const lsystem::RuleError& e) {
+    if (const auto hint = lsystem::book_form_hint(text, true))
+      rule_error(lsystem::RuleError(hint->first, hint->second), where, text);
     rule_error(e, where, text);
   }
 }
@@ -75,6 +82,16 @@ void read_block(Read& r, std::string_view block) {
     ++line;
     const std::string text(block.substr(begin, end - begin));
     const std::size_t first = text.find_first_not_of(" \t\r");
+    // '#' starts a comment, but the book's '#define' and '#ignore' are never one: read as comments they
+    // would silently leave the constants undefined and the contexts unchanged.
+    if (first != std::string::npos && text[first] == '#') {
+      const std::string_view word = std::string_view(text).substr(first + 1, 6);
+      if (word == "define" || word == "ignore")
+        throw Error(r.option + " line " + std::to_string(line) + ": '#" + std::string(word) + "' is the book's: " +
+                    (word == "define" ? "give the constants as option 'define', { r1 = 0.9 }"
+                                      : "give the symbols as option 'ignore', \"+-F\"") +
+                    " (or use lsystem.book)");
+    }
     if (first != std::string::npos && text[first] != '#')
       add_text_rule(r, text, r.option + " line " + std::to_string(line));
     begin = end + 1;

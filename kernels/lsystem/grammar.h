@@ -45,6 +45,7 @@ struct Grammar {
   std::uint64_t seed = 0;            // stochastic choices follow from it
   int dimension = 0;                 // the turtle's: 2, 3, or 0 to choose by the symbols (module_turtle.h)
   Vec3 tropism{};                    // 3D: the heading bends toward it after each step (turtle_frame3.h)
+  int level = -1;                    // the level g:curve() and g:string() draw when given none (-1: none)
 
   bool modules() const { return !start.empty(); }
   bool stochastic() const;

@@ -266,6 +266,7 @@ function Volume:boundary(options) end
 ---@field max_depth? integer how deep decomposition and interpretation recurse, 0 to 64 (8)
 ---@field dimension? 2|3 the 2D or 3D turtle (default: 3D when the grammar writes & ^ \ / $ or has a tropism)
 ---@field tropism? number[] 3D: {x, y, z}, the heading bends toward it after every step
+---@field level? integer the level g:curve(), g:string() and g:count() draw when given none (the book's derivation length)
 
 ---@class selfsim.TurtleOptions
 ---@field level integer the rewriting level
@@ -509,10 +510,20 @@ function save(value, name, options) end
 ---@return selfsim.Curve|selfsim.Curve3|selfsim.Mesh
 function load(name) end
 
----An L-system grammar; draw it with g:curve{ level = n }.
----@param options selfsim.LsystemOptions
+---An L-system grammar; draw it with g:curve{ level = n }. lsystem{...} makes one from selfsim's own syntax;
+---lsystem.book reads the book's notation.
+---@class selfsim.lsystem
+---@overload fun(options: selfsim.LsystemOptions): selfsim.Grammar
+lsystem = {}
+
+---A grammar written in the notation of The Algorithmic Beauty of Plants: ω : axiom, p1 : labels, → (or -->, ->),
+---∧, #define NAME value, #ignore: symbols, conditions after ':', '*' for any, probabilities at the arrow
+---(F →(0.33) ...), before it (F (0.33) → ...) or after the successor (: 0.33), n = 5 / derivation length: 5
+---(the default level), δ = 25.7° (the angle). The table gives the other lsystem{} options (draw, seed, tropism).
+---@param text string the book's text, one line each
+---@param options? selfsim.LsystemOptions without axiom, rules, define, ignore, angle or level the text gives
 ---@return selfsim.Grammar
-function lsystem(options) end
+function lsystem.book(text, options) end
 
 ---An open Curve through the points (at least 2); {x, y, z} points give a Curve3.
 ---@param points number[][]

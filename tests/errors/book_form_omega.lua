@@ -1,0 +1,1 @@
+local g = lsystem { axiom = "F", rules = { "ω : F" } }

@@ -1,0 +1,4 @@
+local g = lsystem.book([[
+ω : F
+δ = 22.5°
+]], { angle = 30 })

@@ -1,0 +1,4 @@
+local g = lsystem.book [[
+ω : F
+p1 : F → F[+F
+]]

@@ -1,0 +1,4 @@
+local g = lsystem.book [[
+ω : F
+#include "leaf.l"
+]]

@@ -1,0 +1,3 @@
+local g = lsystem.book [[
+p1 : F → F[+F]F
+]]

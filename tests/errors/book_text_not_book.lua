@@ -1,0 +1,1 @@
+local g = lsystem.book { axiom = "F" }
