@@ -330,7 +330,7 @@ void open_lsystem(lua_State* L) {
        {"count", grammar_count, 1, "one argument: the level, g:count(5)"}},
       grammar_tostring);
   // lsystem{...} makes a grammar; lsystem.book and lsystem.load read the book's notation and cpfg's files.
-  const luaL_Reg functions[] = {{"book", lsystem_book}, {nullptr, nullptr}};
+  const luaL_Reg functions[] = {{"book", lsystem_book}, {"load", lsystem_load}, {nullptr, nullptr}};
   luaL_newlib(L, functions);
   lua_newtable(L);
   lua_pushcfunction(L, [](lua_State* S) {

@@ -39,13 +39,24 @@ void push_book_options(lua_State* L, const lsystem::BookGrammar& b, int table) {
     }
   }
   if (b.axiom) set_from_text(L, options, "axiom", [&] { lua_pushstring(L, b.axiom->c_str()); });
-  set_from_text(L, options, "rules", [&] {
-    lua_createtable(L, static_cast<int>(b.rules.size()), 0);
-    for (std::size_t i = 0; i < b.rules.size(); ++i) {
-      lua_pushstring(L, b.rules[i].text.c_str());
-      lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
-    }
-  });
+  // The productions, and cpfg's decomposition and homomorphism (interpretation) sections where it has them.
+  for (const auto& [set, key] :
+       {std::pair{lsystem::RuleSet::productions, "rules"}, std::pair{lsystem::RuleSet::decomposition, "decomposition"},
+        std::pair{lsystem::RuleSet::interpretation, "interpretation"}}) {
+    bool any = set == lsystem::RuleSet::productions;
+    for (const lsystem::BookRule& r : b.rules) any = any || r.set == set;
+    if (!any) continue;
+    set_from_text(L, options, key, [&] {
+      lua_newtable(L);
+      lua_Integer n = 0;
+      for (const lsystem::BookRule& r : b.rules)
+        if (r.set == set) {
+          lua_pushstring(L, r.text.c_str());
+          lua_rawseti(L, -2, ++n);
+        }
+    });
+  }
+  if (b.max_depth) set_from_text(L, options, "max_depth", [&] { lua_pushinteger(L, *b.max_depth); });
   if (!b.defines.empty())
     set_from_text(L, options, "define", [&] {
       lua_newtable(L);

@@ -15,5 +15,7 @@ int push_lsystem(lua_State* L, int index);
 void push_book_options(lua_State* L, const lsystem::BookGrammar& b, int table);
 // lsystem.book(text [, options]) (bind_lsystem_book.cpp).
 int lsystem_book(lua_State* L);
+// lsystem.load("tree.l" [, options]): cpfg's file (bind_lsystem_load.cpp).
+int lsystem_load(lua_State* L);
 
 }  // namespace selfsim::interp

@@ -258,10 +258,11 @@ void Options::finish() {
   if (const std::string hint = option_hint(unknown.front(), known, value); !hint.empty())
     throw Error("unknown option '" + shown_text(unknown.front()) + "': " + hint);
   const std::string near = suggestion(unknown.front(), known);
-  // Without a likely meaning, the valid options themselves (a short list: every binding reads few).
+  // Without a likely meaning, the valid options themselves (a short list: every binding reads few, lsystem{} the most,
+  // 17).
   const std::string hint = !near.empty()        ? " (did you mean '" + near + "'?)"
                            : known.empty()      ? " (it takes no options)"
-                           : known.size() <= 16 ? " (valid options: " + quoted_list(known) + ")"
+                           : known.size() <= 20 ? " (valid options: " + quoted_list(known) + ")"
                                                 : "";
   throw Error("unknown option '" + shown_text(unknown.front()) + "'" + hint +
               (unknown.size() > 1 ? " (and " + std::to_string(unknown.size() - 1) + " more unknown)" : ""));

@@ -1,5 +1,6 @@
 #include "kernels/lsystem/book_text.h"
 
+#include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -21,6 +22,12 @@ constexpr std::string_view omega = "\xCF\x89";      // ω
 constexpr std::string_view delta = "\xCE\xB4";      // δ
 constexpr std::string_view degree = "\xC2\xB0";     // °
 constexpr std::string_view epsilon = "\xCE\xB5";    // ε (the empty successor)
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
 
 bool blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
@@ -176,6 +183,29 @@ bool read_settings(std::string_view line, BookGrammar& g) {
   return true;
 }
 
+// What cpfg writes that selfsim cannot do, refused by name rather than read as do-nothing symbols.
+void refuse_cpfg(std::string_view t) {
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (t[i] == '?' && i + 1 < t.size() && (std::isalpha(static_cast<unsigned char>(t[i + 1])) || t[i + 1] == '('))
+      throw Error("'?" + std::string(1, t[i + 1]) +
+                  "' is one of cpfg's query modules (the environment, the turtle's state): selfsim cannot answer it");
+    if (t[i] == '~') throw Error("'~' draws one of cpfg's predefined surfaces (from .s files): selfsim has none");
+    if (t[i] == '@') throw Error("'@' starts one of cpfg's drawing commands (@o, @v, @Gs, ...): selfsim has none");
+  }
+  const std::size_t at = find_outside(t, "->") != npos ? find_outside(t, "->") : t.find(arrow);
+  const std::string_view left = t.substr(0, at);
+  if (const std::size_t colon = find_outside(left, ":"); colon != npos && left.find('{', colon) != npos)
+    throw Error("'{ ... }' in a production's condition holds cpfg's C statements: selfsim cannot run them");
+}
+
+void see_symbols(const Production& p, std::array<bool, 256>& seen) {
+  for (const auto* side : {&p.left, &p.right})
+    for (const Pattern& m : *side) seen[m.symbol] = true;
+  seen[p.pred.symbol] = true;
+  for (const Successor& o : p.options)
+    for (const Call& c : o.modules) seen[c.symbol] = true;
+}
+
 }  // namespace
 
 std::string book_symbols(std::string_view text) {
@@ -229,6 +259,10 @@ std::string book_rule(std::string_view line) {
 
 BookGrammar read_book(std::string_view text) {
   BookGrammar g;
+  RuleSet set = RuleSet::productions;
+  bool lsystem_seen = false, ended = false;
+  std::optional<std::string> consider;
+  std::array<bool, 256> seen{};
   std::size_t line = 0, begin = 0;
   while (begin <= text.size()) {
     std::size_t end = text.find('\n', begin);
@@ -257,6 +291,43 @@ BookGrammar read_book(std::string_view text) {
         continue;
       }
       const std::string_view t = trim(raw.substr(label_length(raw)));
+      if (ended) throw Error("text after endlsystem: selfsim reads one L-system a file");
+      if (keyed(t, "lsystem", ':')) {
+        if (lsystem_seen) throw Error("a second L-system ('Lsystem:'): selfsim reads one a file");
+        lsystem_seen = true;
+        continue;
+      }
+      if (lower(t) == "endlsystem") {
+        ended = true;
+        continue;
+      }
+      if (lower(t).starts_with("homomorphism") || lower(t).starts_with("decomposition")) {
+        set = lower(t).starts_with("homomorphism") ? RuleSet::interpretation : RuleSet::decomposition;
+        continue;
+      }
+      if (const auto d = keyed(t, "maximum depth", ':')) {
+        g.max_depth = level_of(*d, g.defines);
+        if (*g.max_depth > max_rule_depth)
+          throw Error("maximum depth must be at most " + std::to_string(max_rule_depth));
+        continue;
+      }
+      if (const auto i = keyed(t, "ignore", ':')) {
+        if (g.ignore) throw Error("ignore: is given twice");
+        g.ignore = book_symbols(*i);
+        std::erase_if(*g.ignore, blank);
+        continue;
+      }
+      if (const auto c = keyed(t, "consider", ':')) {
+        if (consider) throw Error("consider: is given twice");
+        consider = book_symbols(*c);
+        std::erase_if(*consider, blank);
+        continue;
+      }
+      for (const char* block : {"start", "starteach", "end", "endeach", "define"})
+        if (keyed(t, block, ':'))
+          throw Error(std::string("cpfg's '") + std::string(t.substr(0, std::string_view(block).size())) +
+                      ":' block holds C statements: selfsim cannot run them");
+      refuse_cpfg(t);
       std::optional<std::string_view> axiom =
           t.starts_with(omega) ? keyed(t.substr(omega.size()), "", ':') : keyed(t, "axiom", ':');
       if (axiom) {
@@ -264,7 +335,7 @@ BookGrammar read_book(std::string_view text) {
         g.axiom = book_symbols(*axiom);
         if (trim(*g.axiom).empty()) throw Error("the axiom is empty: write the level-0 string after ω:");
         try {
-          parse_calls(*g.axiom, names);
+          for (const Call& c : parse_calls(*g.axiom, names)) seen[c.symbol] = true;
         } catch (const RuleError& e) {
           throw Error(std::string("the axiom: ") + e.what());
         }
@@ -273,9 +344,9 @@ BookGrammar read_book(std::string_view text) {
       } else if (const auto a = keyed(t, "angle", ':')) {
         g.angle = angle_of(*a, g.defines);
       } else if (!read_settings(book_symbols(t), g)) {
-        BookRule r{book_rule(t), line};
+        BookRule r{book_rule(t), line, set};
         try {
-          parse_rule(r.text, "line " + std::to_string(line), names);
+          see_symbols(parse_rule(r.text, "line " + std::to_string(line), names), seen);
         } catch (const RuleError& e) {
           throw Error(std::string(e.what()) + ", in '" + r.text + "'");
         }
@@ -286,6 +357,14 @@ BookGrammar read_book(std::string_view text) {
     } catch (const Error& e) {
       throw BookError(e.what(), line);
     }
+  }
+  // cpfg's consider: contexts see only these symbols (and the branches), so every other one is ignored.
+  if (consider) {
+    if (g.ignore) throw BookError("both ignore: and consider: are given: keep one", line);
+    g.ignore = "";
+    for (int c = 1; c < 256; ++c)
+      if (seen[c] && c != '[' && c != ']' && consider->find(static_cast<char>(c)) == std::string::npos)
+        *g.ignore += static_cast<char>(c);
   }
   return g;
 }

@@ -7,7 +7,11 @@
 //   #ignore: + - F                   the symbols a context skips
 //   n = 5, δ = 25.7°                 the derivation length (the default level) and the angle; also
 //                                    "derivation length: 5", "angle: 25.7"
-// '∧' is '^' (pitch up), '−' is '-', and '=' alone in a condition is '=='.
+// '∧' is '^' (pitch up), '−' is '-', and '=' alone in a condition is '=='. cpfg's structure is read too:
+// "Lsystem: 1", "Axiom:", "ignore:", "consider:" (every other symbol is ignored), "homomorphism" and
+// "decomposition" sections (with "maximum depth:"), "endlsystem". What selfsim cannot do is refused by name:
+// cpfg's query modules ('?E'), '~' surfaces, '@' commands, C statements in a production ('{ ... }' before the
+// arrow), start:/end: blocks.
 #pragma once
 
 #include <cstddef>
@@ -27,9 +31,13 @@ struct BookError : Error {
   BookError(const std::string& message, std::size_t line) : Error(message), line(line) {}
 };
 
+// The rule sets of a grammar: its productions, and cpfg's decomposition and homomorphism sections.
+enum class RuleSet { productions, decomposition, interpretation };
+
 struct BookRule {
   std::string text;  // in selfsim's syntax: "A(l,w) : l > 1 -> F(l) [...] : 0.33"
   std::size_t line;  // 1-based, in the book's text
+  RuleSet set = RuleSet::productions;
 };
 
 struct BookGrammar {
@@ -39,6 +47,7 @@ struct BookGrammar {
   std::optional<std::string> ignore;                    // the symbols of '#ignore', without blanks
   std::optional<int> level;                             // "derivation length" or "n ="
   std::optional<double> angle;                          // "δ =" or "angle:", in degrees
+  std::optional<int> max_depth;                         // cpfg\'s "maximum depth:" of its sections
 };
 
 // Reads the text; every rule and the axiom are checked by rule_parser.h with the constants in scope, so a

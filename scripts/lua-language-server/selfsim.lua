@@ -511,7 +511,7 @@ function save(value, name, options) end
 function load(name) end
 
 ---An L-system grammar; draw it with g:curve{ level = n }. lsystem{...} makes one from selfsim's own syntax;
----lsystem.book reads the book's notation.
+---lsystem.book reads the book's notation, lsystem.load cpfg's .l files.
 ---@class selfsim.lsystem
 ---@overload fun(options: selfsim.LsystemOptions): selfsim.Grammar
 lsystem = {}
@@ -524,6 +524,16 @@ lsystem = {}
 ---@param options? selfsim.LsystemOptions without axiom, rules, define, ignore, angle or level the text gives
 ---@return selfsim.Grammar
 function lsystem.book(text, options) end
+
+---A grammar from cpfg's L-system file (vlab's .l, the program of the book) in the recipe's folder: #define,
+---#include "file.l" (beside it), /* comments */, Lsystem:, derivation length: (the default level), Axiom:,
+---ignore: or consider:, productions with contexts, conditions and probabilities (: 0.3), homomorphism and
+---decomposition sections (maximum depth:), endlsystem. cpfg's ?E queries, ~ surfaces, @ commands and C
+---statements are refused by name. The table gives the other lsystem{} options (angle, draw, seed, tropism).
+---@param name string relative to the recipe's folder, without '..', ending in .l
+---@param options? selfsim.LsystemOptions without what the file gives
+---@return selfsim.Grammar
+function lsystem.load(name, options) end
 
 ---An open Curve through the points (at least 2); {x, y, z} points give a Curve3.
 ---@param points number[][]

@@ -1,0 +1,1 @@
+local g = lsystem.load("lfile_binary.l")

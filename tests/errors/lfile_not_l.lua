@@ -1,0 +1,1 @@
+local g = lsystem.load("bad_rule.lua")

@@ -1,0 +1,1 @@
+local g = lsystem.load("../lsystem_load/tree.l")
