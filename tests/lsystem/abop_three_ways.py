@@ -6,9 +6,9 @@ Usage: python3 tests/lsystem/abop_three_ways.py SELFSIM SOURCE_DIR
 For every recipe of examples/abop/ and each of its variants, runs abop_three_ways.lua (beside this file) in a
 temporary copy of examples/abop/: the recipe's own lsystem{} grammars, the book's text of each sub-figure
 (book_texts.lua, read by lsystem.book) and its .l file (read by lsystem.load) must give the same strings at
-levels 0-3 and the book's n. Then it shows the check can fail: one rule changed in a copy of a .l file, of a
-book text and of a recipe each makes the run fail with a message naming that sub-figure. Exit 1 on any
-difference, naming the figure.
+levels 0-3 and the book's n; every .l file is one of them, and from_l_file.lua draws each. Then it shows the
+check can fail: one rule changed in a copy of a .l file, of a book text and of a recipe each makes the run
+fail with a message naming that sub-figure. Exit 1 on any difference, naming the figure.
 """
 import os
 import shutil
@@ -64,6 +64,17 @@ def main():
         for name in sorted(os.listdir(folder)):
             if name.endswith(".l") and name[:-2] not in checked:
                 failures.append("%s: no recipe of RECIPES makes its figure, so it is not checked" % name)
+        # from_l_file.lua (the docs' way to run a .l file) draws each one.
+        for name in sorted(os.listdir(folder)):
+            if not name.endswith(".l"):
+                continue
+            out = os.path.join(folder, "drawn_" + name[:-2])
+            result = subprocess.run([selfsim, "run", os.path.join(folder, "from_l_file.lua"), "-o", out, "-q",
+                                     "--set", "file=" + name[:-2], "--set", "level=2"],
+                                    capture_output=True, text=True, timeout=120)
+            if result.returncode != 0 or not os.path.isfile(os.path.join(out, name[:-2] + ".vtp")):
+                failures.append("from_l_file.lua --set file=%s: rc %d, %s" % (name[:-2], result.returncode,
+                                                                               result.stderr.strip()))
         for name, text, changed, figure, variant, names in MUTATIONS:
             shutil.rmtree(folder)
             os.mkdir(folder)
