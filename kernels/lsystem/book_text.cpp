@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "kernels/lsystem/expression.h"
+#include "kernels/lsystem/find_outside.h"
 #include "kernels/lsystem/grammar.h"
 #include "kernels/lsystem/rule_parser.h"
 
@@ -39,20 +40,6 @@ std::string_view trim(std::string_view s) {
 
 void replace_all(std::string& s, std::string_view from, std::string_view to) {
   for (std::size_t at = s.find(from); at != npos; at = s.find(from, at + to.size())) s.replace(at, from.size(), to);
-}
-
-// Position of `what` outside parentheses, or npos.
-std::size_t find_outside(std::string_view text, std::string_view what, bool last = false) {
-  std::size_t found = npos;
-  int depth = 0;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (depth == 0 && text.substr(i, what.size()) == what) {
-      if (!last) return i;
-      found = i;
-    }
-    depth += text[i] == '(' ? 1 : text[i] == ')' ? -1 : 0;
-  }
-  return found;
 }
 
 std::optional<double> number(std::string_view t) {

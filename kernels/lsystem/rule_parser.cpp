@@ -9,6 +9,7 @@
 
 #include "kernels/base/text_width.h"
 #include "kernels/base/utf8.h"
+#include "kernels/lsystem/find_outside.h"
 
 namespace selfsim::lsystem {
 
@@ -39,20 +40,6 @@ std::string shown(char c) {
 // Column of `part` (a view into `whole`) in `whole`.
 std::size_t column(std::string_view whole, std::string_view part) {
   return static_cast<std::size_t>(part.data() - whole.data());
-}
-
-// Position of `what` in `text` outside parentheses, the first (or last) one, or npos.
-std::size_t find_outside(std::string_view text, std::string_view what, bool last = false) {
-  std::size_t found = npos;
-  int depth = 0;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (depth == 0 && text.substr(i, what.size()) == what) {
-      if (!last) return i;
-      found = i;
-    }
-    depth += text[i] == '(' ? 1 : text[i] == ')' ? -1 : 0;
-  }
-  return found;
 }
 
 bool name_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
