@@ -19,6 +19,7 @@ constexpr std::size_t npos = std::string_view::npos;
 constexpr std::string_view arrow = "\xE2\x86\x92";  // →
 constexpr std::string_view wedge = "\xE2\x88\xA7";  // ∧ (pitch up)
 constexpr std::string_view minus = "\xE2\x88\x92";  // − (the typeset minus)
+constexpr std::string_view quote = "\xE2\x80\x99";  // ’ (the typeset apostrophe: the book's colour index ')
 constexpr std::string_view omega = "\xCF\x89";      // ω
 constexpr std::string_view delta = "\xCE\xB4";      // δ
 constexpr std::string_view degree = "\xC2\xB0";     // °
@@ -199,6 +200,7 @@ std::string book_symbols(std::string_view text) {
   std::string s(text);
   replace_all(s, wedge, "^");
   replace_all(s, minus, "-");
+  replace_all(s, quote, "'");
   replace_all(s, epsilon, "");
   return s;
 }
@@ -365,6 +367,8 @@ std::optional<std::pair<std::string, std::size_t>> book_form_hint(std::string_vi
     return std::pair{"'∧' is the book's pitch up: write '^' (or use lsystem.book)", at};
   if (const std::size_t at = text.find(minus); at != npos)
     return std::pair{"'−' is the book's minus sign: write '-' (or use lsystem.book)", at};
+  if (const std::size_t at = text.find(quote); at != npos)
+    return std::pair{"'’' is the book's colour index: write \"'\" (or use lsystem.book)", at};
   if (t.starts_with(omega) || (failed && keyed(t, "axiom", ':')))
     return std::pair{"'ω:' is the book's axiom line: give the axiom as option 'axiom' (or use lsystem.book)", lead};
   if (!failed) return std::nullopt;

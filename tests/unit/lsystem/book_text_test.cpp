@@ -21,6 +21,10 @@ TEST(BookText, SymbolsAndConditions) {
   EXPECT_EQ(book_rule("A(t) : t = 0 -> B"), "A(t) : t == 0 -> B");
   EXPECT_EQ(book_rule("A(t) : t >= 0 && t != 2 -> B"), "A(t) : t >= 0 && t != 2 -> B");
   EXPECT_EQ(book_rule("A -> \xCE\xB5"), "A -> ");
+  // The book's typeset apostrophe (its colour index) is selfsim's ': it was a silent do-nothing symbol.
+  EXPECT_EQ(book_rule("A \xE2\x86\x92 F\xE2\x80\x99"
+                      "A"),
+            "A -> F'A");
 }
 
 TEST(BookText, Probabilities) {
@@ -77,6 +81,10 @@ TEST(BookText, HintsInOwnSyntax) {
                      "F]",
                      false));
   EXPECT_TRUE(book_form_hint("\xCF\x89 : F", false));
+  EXPECT_TRUE(
+      book_form_hint("A -> F\xE2\x80\x99"
+                     "A",
+                     false));
   EXPECT_FALSE(book_form_hint("p1 : F -> F", false));  // only once the parser has refused it
   EXPECT_TRUE(book_form_hint("p1 : F -> F", true));
   EXPECT_TRUE(book_form_hint("F (0.3) -> F", true));

@@ -1,0 +1,1 @@
+local g = lsystem { axiom = "A", rules = { "A -> F’A" } }
