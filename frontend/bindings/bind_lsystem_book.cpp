@@ -40,9 +40,12 @@ void push_book_options(lua_State* L, const lsystem::BookGrammar& b, int table) {
   }
   if (b.axiom) set_from_text(L, options, "axiom", [&] { lua_pushstring(L, b.axiom->c_str()); });
   // The productions, and cpfg's decomposition and homomorphism (interpretation) sections where it has them.
-  for (const auto& [set, key] :
+  // (A plain variable, not a structured binding: clang 14, which builds the fuzz targets, cannot capture one.)
+  for (const auto& entry :
        {std::pair{lsystem::RuleSet::productions, "rules"}, std::pair{lsystem::RuleSet::decomposition, "decomposition"},
         std::pair{lsystem::RuleSet::interpretation, "interpretation"}}) {
+    const lsystem::RuleSet set = entry.first;
+    const char* const key = entry.second;
     bool any = set == lsystem::RuleSet::productions;
     for (const lsystem::BookRule& r : b.rules) any = any || r.set == set;
     if (!any) continue;
