@@ -2,7 +2,7 @@
 # shellcheck shell=bash
 
 # shellcheck disable=SC2034  # used by run.sh
-FUZZ_TARGETS_ALL="grammar vtp svg stl obj ply vdb recipe provenance"
+FUZZ_TARGETS_ALL="grammar vtp svg stl obj ply vdb recipe provenance book cpfg"
 FUZZ_TIMEOUT=${FUZZ_TIMEOUT:-10}   # seconds one input may run before it counts as a hang
 FUZZ_RSS_MB=${FUZZ_RSS_MB:-2048}
 

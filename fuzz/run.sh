@@ -6,7 +6,7 @@
 #
 # usage: fuzz/run.sh [BUILD_DIR]          (default: build-fuzz)
 # env:   FUZZ_SECONDS   seconds of fuzzing per target (default 60)
-#        FUZZ_TARGETS   targets to run (default: grammar vtp svg stl obj ply vdb recipe provenance)
+#        FUZZ_TARGETS   targets to run (default: grammar vtp svg stl obj ply vdb recipe provenance book cpfg)
 #        FUZZ_JOBS      libFuzzer -fork jobs (default: the number of cores)
 #        FUZZ_TIMEOUT   seconds one input may run before it is a hang (default 10)
 # Corpora, artifacts and logs stay under BUILD_DIR/fuzz-work/ (not in git), so later runs start from
