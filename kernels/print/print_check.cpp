@@ -307,9 +307,10 @@ void add_findings(PrintReport& r) {
       r.findings.push_back("it is " + size_text(size) + ", larger than the bed's " + size_text(rules.bed));
   }
   const double longest = std::max({size.x, size.y, size.z});
-  if (longest < 2)
+  // Under 5 mm is almost always a solid still in its curve's units (a unit box, a radius of 1), not a print.
+  if (longest < 5)
     r.findings.push_back("it is only " + mm_text(longest) +
-                         " across: sizes are millimetres, so scale it first (solid.size, or develop's size)");
+                         " across: probably still in model units (sizes are mm): solid.size(s, 80)");
   if (!r.skipped.empty()) r.findings.push_back(r.skipped);
 }
 

@@ -6,7 +6,7 @@
 //     grid (wall_rays.h: from every triangle's incentre, inwards to the far side of the wall
 //     and outwards to the next part), within the grid's interpolation error (WallGrid::error);
 //   - the triangle count and the bounding box, against the triangle budget and the printer's bed;
-//   - a solid only a few millimetres across, which is most often one still in its curve's units.
+//   - a solid under 5 mm across, which is most often one still in its curve's units.
 // Thin walls or narrow gaps over less area than the nozzle's spot (a disc of its width), and under a tenth
 // of the surface, are no finding: the printer cannot draw anything that small (a mesher's dimple); the
 // summary says them apart.

@@ -326,7 +326,9 @@ Mesh tube(const Polyline3& c, std::span<const double> radii, const TubeOptions& 
   if (const auto hit = first_intersection(m, checking))
     throw Error("the tube meets itself near " + place_text(hit->where) + ": " +
                 part_text(paths, triangle_begin, sides, hit->first) + " and " +
-                part_text(paths, triangle_begin, sides, hit->second) + " come closer than their two radii");
+                part_text(paths, triangle_begin, sides, hit->second) +
+                " come closer than their two radii; a smaller radius, or a tube on a grid, where paths that meet "
+                "merge into one solid: method = \"grid\"");
 
   m.point_fields = picked_fields<std::uint32_t>(c.point_fields, source, progress);
   m.point_fields.set(real_field("radius", std::move(radius)));

@@ -94,7 +94,12 @@ TEST(PrintCheck, InwardCrossingBigAndTinyAreFindings) {
   EXPECT_TRUE(mentions(big, "larger than the bed")) << big.summary();
 
   const PrintReport tiny = check_print(box_mesh({0, 0, 0}, {1, 1, 1}), PrintRules{}, PointBudget{}, no_progress());
-  EXPECT_TRUE(mentions(tiny, "sizes are millimetres")) << tiny.summary();
+  EXPECT_TRUE(mentions(tiny, "probably still in model units (sizes are mm): solid.size(s, 80)")) << tiny.summary();
+  // Under 5 mm across is flagged (a 2.47 mm blob passed as a print); a 6 mm block is a print.
+  const PrintReport small = check_print(box_mesh({0, 0, 0}, {4, 4, 4}), PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_TRUE(mentions(small, "probably still in model units")) << small.summary();
+  const PrintReport fine = check_print(box_mesh({0, 0, 0}, {6, 6, 6}), PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_FALSE(mentions(fine, "model units")) << fine.summary();
 }
 
 TEST(PrintCheck, AGridOverTheBudgetIsSaidNotThrown) {
