@@ -13,6 +13,16 @@
 
 namespace selfsim::io {
 
+std::optional<std::string>* SvgTag::slot(const std::string& attribute) {
+  if (attribute == "transform") return &transform;
+  if (attribute == "style") return &style;
+  if (attribute == "display") return &display;
+  if (attribute == "visibility") return &visibility;
+  if (attribute == "stroke") return &stroke;
+  if (attribute == "fill") return &fill;
+  return nullptr;
+}
+
 namespace {
 
 constexpr std::size_t max_namespaces = 4096;  // declarations in scope at once

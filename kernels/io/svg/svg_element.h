@@ -39,6 +39,10 @@ namespace selfsim::io {
 struct SvgTag {
   std::optional<std::string> transform, style, display, visibility, stroke, fill;
   std::vector<std::pair<std::string, bool>> namespaces;  // xmlns ("") and xmlns:prefix: bound to SVG?
+
+  // The field an attribute of this name is kept in, or nullptr for one that does not matter for drawing
+  // (xmlns is kept apart, in `namespaces`).
+  std::optional<std::string>* slot(const std::string& attribute);
 };
 
 struct SvgElement {

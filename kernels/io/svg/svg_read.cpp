@@ -44,17 +44,8 @@ std::string local(const std::string& name) {
   return colon == std::string::npos ? name : name.substr(colon + 1);
 }
 
-// The attribute values an element's meaning depends on, kept while its tag is read.
-enum class Keep { none, transform, style, display, visibility, stroke, fill, xmlns };
-Keep kept(const std::string& attribute) {
-  if (attribute == "transform") return Keep::transform;
-  if (attribute == "style") return Keep::style;
-  if (attribute == "display") return Keep::display;
-  if (attribute == "visibility") return Keep::visibility;
-  if (attribute == "stroke") return Keep::stroke;
-  if (attribute == "fill") return Keep::fill;
-  if (attribute == "xmlns" || (attribute.size() > 6 && attribute.compare(0, 6, "xmlns:") == 0)) return Keep::xmlns;
-  return Keep::none;
+bool xmlns_attribute(const std::string& attribute) {
+  return attribute == "xmlns" || (attribute.size() > 6 && attribute.compare(0, 6, "xmlns:") == 0);
 }
 
 // A streaming, checking XML tokenizer that hands path data to PathData and each complete start tag to
@@ -206,7 +197,7 @@ class SvgParser {
       case State::value:
         if (c == quote_) return end_value();
         if (c == '<') fail("'<' in an attribute value");
-        if (keep_ == Keep::none) return;
+        if (!slot_ && !xmlns_) return;  // a value that does not matter for drawing is not kept
         if (value_.size() >= max_value)
           throw Error("the '" + shown(attr_) + "' attribute is longer than " + std::to_string(max_value) + " bytes");
         value_ += c;
@@ -219,7 +210,7 @@ class SvgParser {
           path_.finish();
         } catch (const Error& e) {  // counts only if the path is drawn (end_path)
           path_error_ = e.what();
-          if (c != quote_) state_ = State::value, keep_ = Keep::none;
+          if (c != quote_) state_ = State::value, slot_ = nullptr, xmlns_ = false;
         }
         return;
       case State::end_name:
@@ -273,15 +264,16 @@ class SvgParser {
       state_ = State::path_data;
       return;
     }
-    keep_ = content ? kept(attr_) : Keep::none;
+    // The attribute values an element's meaning depends on are kept while its tag is read.
+    slot_ = content ? tag_.slot(attr_) : nullptr;
+    xmlns_ = content && xmlns_attribute(attr_);
     value_.clear();
     state_ = State::value;
   }
 
   void end_value() {
     state_ = State::in_tag;
-    if (keep_ == Keep::none) return;
-    if (keep_ == Keep::xmlns) {
+    if (xmlns_) {
       // Illustrator declares namespaces through its DOCTYPE's entities (xmlns="&ns_svg;",
       // xmlns:i="&ns_ai;"), which are not expanded: such a default namespace counts as undeclared (its
       // names as SVG), such a prefix as not SVG.
@@ -292,33 +284,11 @@ class SvgParser {
       }
       if (uri || attr_ != "xmlns")
         tag_.namespaces.emplace_back(attr_ == "xmlns" ? "" : attr_.substr(6), uri && *uri == svg_namespace);
-      keep_ = Keep::none;
+      xmlns_ = false;
       return;
     }
-    std::string v = xml_unescaped(value_, attr_);
-    switch (keep_) {
-      case Keep::transform:
-        tag_.transform = std::move(v);
-        break;
-      case Keep::style:
-        tag_.style = std::move(v);
-        break;
-      case Keep::display:
-        tag_.display = std::move(v);
-        break;
-      case Keep::visibility:
-        tag_.visibility = std::move(v);
-        break;
-      case Keep::stroke:
-        tag_.stroke = std::move(v);
-        break;
-      case Keep::fill:
-        tag_.fill = std::move(v);
-        break;
-      default:
-        break;
-    }
-    keep_ = Keep::none;
+    if (slot_) *slot_ = xml_unescaped(value_, attr_);
+    slot_ = nullptr;
   }
 
   void open_element(bool self_closing) {
@@ -379,11 +349,12 @@ class SvgParser {
   State state_ = State::text;
   std::string name_, attr_;
   std::vector<std::string> stack_;
-  SvgTag tag_;                        // the start tag being read
-  std::set<std::string> attributes_;  // its attribute names so far
-  Keep keep_ = Keep::none;
-  std::string value_;       // a kept attribute value so far
-  bool path_read_ = false;  // the tag has path data, from marks_ on in the dataset
+  SvgTag tag_;                                  // the start tag being read
+  std::set<std::string> attributes_;            // its attribute names so far
+  std::optional<std::string>* slot_ = nullptr;  // where the value being read is kept (SvgTag::slot)
+  bool xmlns_ = false;                          // the value being read declares a namespace
+  std::string value_;                           // a kept attribute value so far
+  bool path_read_ = false;                      // the tag has path data, from marks_ on in the dataset
   Marks marks_;
   std::string path_error_;  // what was wrong with that path data
   bool root_seen_ = false;
