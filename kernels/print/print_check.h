@@ -75,6 +75,9 @@ struct PrintReport {
 // `wall` and `gap` (mm). Throws Error for a mesh with no triangles or an open one (naming an open edge);
 // BudgetError does not escape: a distance grid over the budget leaves the walls unmeasured, which the
 // report says (and suggests a larger voxel). Cancelled when progress says stop.
+// Fills r.findings from the report's numbers (print_findings.cpp): what check_print ends with.
+void add_findings(PrintReport& r);
+
 PrintReport check_print(const Mesh& m, const PrintRules& rules, const PointBudget& budget, Progress& progress,
                         Mesh* marked = nullptr);
 

@@ -12,6 +12,7 @@ void PrintRules::validate() const {
   check_between(nozzle, 0.01, 100, "option 'nozzle' (mm)");
   check_between(min_wall, 0.01, 100, "option 'min_wall' (mm)");
   check_between(min_gap, 0.01, 100, "option 'min_gap' (mm)");
+  check_between(overhang, 1, 89, "option 'overhang' (degrees from vertical)");
   check_between(max_triangles, 4, 1e12, "option 'triangles'");
   if (bed != Vec3{})
     for (double side : {bed.x, bed.y, bed.z})

@@ -20,6 +20,7 @@ struct PrintRules {
   double min_wall = 0.8;       // mm: thinner walls are findings
   double min_gap = 0.4;        // mm: narrower gaps between parts fuse
   double max_triangles = 2e6;  // more is a finding (decimate)
+  double overhang = 45;        // degrees from vertical: faces tilted down past it need support (overhang.h)
   Vec3 bed{};                  // mm: the build volume; zero: not checked
   double voxel = 0;            // mm: the distance grid's; 0 for a third of the smaller of min_wall and min_gap
 
