@@ -316,6 +316,8 @@ void open_solid(lua_State* L) {
                                 {"smooth", solid_smooth},     {"size", solid_size}, {"check", solid_check},
                                 {"decimate", solid_decimate}, {nullptr, nullptr}};
   luaL_newlib(L, functions);
+  add_solid_placing(L);
+  add_solid_union(L);
   lua_setglobal(L, "solid");
 }
 

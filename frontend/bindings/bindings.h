@@ -31,6 +31,9 @@ void open_exclusion(lua_State* L);   // bind_exclusion.cpp: exclusion.curve{}
 void open_analysis(lua_State* L);    // bind_analysis.cpp: dimension()
 void open_volume(lua_State* L);      // bind_volume.cpp: Volume, volume.box{} and the rest
 void open_solid(lua_State* L);       // bind_solid.cpp: solid.thicken, solid.check and the rest
+// Called by open_solid with the `solid` table on top of the stack: each adds its functions to it.
+void add_solid_placing(lua_State* L);  // bind_solid_place.cpp: solid.place, solid.orient
+void add_solid_union(lua_State* L);    // bind_solid_union.cpp: solid.union, solid.difference
 
 // bind_lsystem.cpp: the grammar at index, or null (develop() takes one as its source).
 Held<lsystem::Grammar> test_grammar(lua_State* L, int index);
