@@ -1,12 +1,14 @@
 // Meshes as Lua values: the Mesh type's own methods and mesh{ points, triangles }, a small mesh written in
 // a recipe (a start surface or a region later). The methods every value has come from value_types.h.
 #include "frontend/bindings/bindings.h"
+#include "frontend/bindings/transform_options.h"
 #include "frontend/lua/lua_support.h"
 #include "frontend/lua/options_reader.h"
 #include "frontend/lua/point_reader.h"
 #include "frontend/lua/run_context.h"
 #include "frontend/lua/value_types.h"
 #include "kernels/base/check.h"
+#include "kernels/geom/mesh_transform.h"
 
 namespace selfsim::interp {
 
@@ -16,6 +18,20 @@ int mesh_faces(lua_State* L) {
   const Held<Mesh> m = geometry_self<Mesh>(L, "faces");
   lua_pushinteger(L, static_cast<lua_Integer>(m->faces()));
   return 1;
+}
+
+// m:transform{ scale, rotate, axis, translate } -> a new mesh: scaled about the origin (a factor or one per
+// axis; negative mirrors), rotated by degrees about `axis`, then translated (kernels/geom/mesh_transform.h).
+int mesh_transform(lua_State* L) {
+  const Held<Mesh> m = geometry_self<Mesh>(L, "transform");
+  return call_kernel(L, "transform", [&] {
+    Options o(L, 2);
+    const MeshTransform t = read_mesh_transform(L, o);
+    o.finish();
+    check_run_budget(L, budget_size(*m), "the transformed copy");
+    push_geometry(L, transformed(*m, t.map(), RunContext::of(L)));
+    return 1;
+  });
 }
 
 // The triangles table at index: {i, j, k} of 1-based point indices, counter-clockwise seen from outside.
@@ -68,7 +84,9 @@ int make_mesh(lua_State* L) {
 }  // namespace
 
 void open_mesh(lua_State* L) {
-  register_geometry<Mesh>(L, {{"faces", mesh_faces, 0, "no arguments: m:faces()"}});
+  register_geometry<Mesh>(
+      L, {{"faces", mesh_faces, 0, "no arguments: m:faces()"},
+          {"transform", mesh_transform, 1, "one table: m:transform{ scale, rotate, axis, translate }"}});
   lua_register(L, "mesh", make_mesh);
 }
 

@@ -185,6 +185,19 @@ function Mesh:level(k) end
 ---@return { [integer]: selfsim.Mesh, times: integer[] }
 function Mesh:levels() end
 
+---A new mesh: scaled about the origin (a factor, or one per axis; a negative one mirrors, the triangles
+---turned to keep facing outwards), rotated by degrees about `axis`, then translated. `normal` fields turn
+---with the faces; length fields (`thickness`, `wall`, ...) scale with a uniform factor.
+---@param options selfsim.MeshTransformOptions
+---@return selfsim.Mesh
+function Mesh:transform(options) end
+
+---@class selfsim.MeshTransformOptions
+---@field scale? number|number[] a factor or {sx, sy, sz}, never zero; negative mirrors (1)
+---@field rotate? number degrees about `axis`, counterclockwise seen from where it points (0)
+---@field axis? number[] {x, y, z} ({0, 0, 1})
+---@field translate? number[] {x, y, z} ({0, 0, 0})
+
 ---An L-system grammar, made by lsystem{} or the functions of selfsim.curves.
 ---@class selfsim.Grammar
 local Grammar = {}
@@ -738,3 +751,27 @@ function solid.size(value, size) end
 ---@return selfsim.PrintReport report
 ---@return selfsim.Mesh marked
 function solid.check(mesh, options) end
+
+---@class selfsim.PlaceOptions
+---@field centre? boolean centre the footprint (true); false only drops it to z = 0
+---@field at? number[] {x, y}: where the footprint's centre goes ({0, 0})
+
+---The mesh moved so its lowest point is at z = 0 and its footprint is centred on x = y = 0 (or `at`).
+---@param mesh selfsim.Mesh
+---@param options? selfsim.PlaceOptions
+---@return selfsim.Mesh
+function solid.place(mesh, options) end
+
+---@class selfsim.OrientOptions: selfsim.PlaceOptions
+---@field face? "largest" lie on its largest flat face (the default)
+---@field least? "overhang" turn to the least area overhanging past `overhang` degrees
+---@field rotate? number or turn by these degrees about `axis`, as Mesh:transform
+---@field axis? number[] {x, y, z} ({0, 0, 1})
+---@field overhang? number degrees from vertical past which a face overhangs, 1 to 89 (45)
+
+---The mesh turned to lie on its largest flat face, to the least overhang, or by a given rotation, then
+---placed on the bed (solid.place); prints what it did and the overhang before and after.
+---@param mesh selfsim.Mesh
+---@param options? selfsim.OrientOptions
+---@return selfsim.Mesh
+function solid.orient(mesh, options) end

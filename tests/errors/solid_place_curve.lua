@@ -1,0 +1,1 @@
+solid.place(polyline { {0,0}, {1,0} })

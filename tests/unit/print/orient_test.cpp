@@ -1,0 +1,130 @@
+// Poses on the bed: a tilted box back on its largest face (no overhang), a mushroom on its cap's top (by
+// either goal, from upright or tilted), a sphere left as it is (no flat face), and the turn and the shift
+// that put them there.
+#include "kernels/print/orient.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "kernels/geom/mesh_transform.h"
+#include "kernels/print/overhang.h"
+#include "tests/unit/print/lathe_fixture.h"
+
+using namespace selfsim;
+using namespace selfsim::print;
+using namespace lathe_fixture;
+
+namespace {
+
+// A 40 x 20 x 10 mm box tilted 30 degrees about x and 10 about z.
+Mesh tilted_box() {
+  Mesh b = lathe({{1, 0}, {1, 1}}, 0, 1, 4, 45);  // a cube of side sqrt(2)
+  b = transformed(b, MeshTransform{.scale = {40 / std::sqrt(2.0), 20 / std::sqrt(2.0), 10}}.map());
+  b = transformed(b, MeshTransform{.degrees = 30, .axis = {1, 0, 0}}.map());
+  return transformed(b, MeshTransform{.degrees = 10, .axis = {0, 0, 1}}.map());
+}
+
+// m as best_orientation turns it.
+Mesh turned(const Mesh& m, const Orientation& o) { return transformed(m, o.turn); }
+
+double overhang(const Mesh& m) { return overhang_of(m, {}).area; }
+
+}  // namespace
+
+TEST(Orient, ATiltedBoxLiesBackOnItsLargestFace) {
+  const Mesh b = tilted_box();
+  ASSERT_NEAR(overhang(b), 800, 1e-6);  // its bottom, 60 degrees below horizontal
+  for (bool least : {false, true}) {
+    const Orientation o = best_orientation(b, {.least_overhang = least});
+    EXPECT_NEAR(o.face, 800, 1e-6) << least;
+    EXPECT_NEAR(o.overhang_before, 800, 1e-6);
+    EXPECT_NEAR(o.overhang, 0, 1e-9);
+    const Mesh t = turned(b, o);
+    EXPECT_NEAR(t.bbox().size().z, 10, 1e-9) << least;  // on a 40 x 20 face, not on its ends or sides
+    EXPECT_EQ(overhang(t), 0);
+  }
+}
+
+TEST(Orient, AMushroomStandsOnItsCap) {
+  const Mesh upright = mushroom(3, 10);
+  const Mesh leaning = transformed(upright, MeshTransform{.degrees = 30, .axis = {1, 1, 0}}.map());
+  const double cap = polygon_area(32, 10), ring = cap - polygon_area(32, 3);
+  for (const Mesh* m : {&upright, &leaning})
+    for (bool least : {false, true}) {
+      const Orientation o = best_orientation(*m, {.least_overhang = least});
+      EXPECT_NEAR(o.face, cap, 1e-6 * cap) << least;
+      EXPECT_EQ(o.overhang, 0);
+      const Mesh t = turned(*m, o);
+      EXPECT_EQ(overhang(t), 0);
+      // Upside down: the cap's points (radius 10 about the axis, now vertical) are in the lowest 4 mm.
+      const double low = t.bbox().min.z;
+      const Vec3 axis_point = t.points.back();  // the top fan's centre, now at the bottom
+      EXPECT_NEAR(axis_point.z, low, 1e-9);
+      for (const Vec3& p : t.points)
+        if (std::hypot(p.x - axis_point.x, p.y - axis_point.y) > 9) EXPECT_LE(p.z - low, 4 + 1e-9);
+    }
+  EXPECT_NEAR(best_orientation(upright, {}).overhang_before, ring, 1e-9);
+}
+
+TEST(Orient, AFacetedSphereRestsOnAFacet) {
+  // Every facet of a convex polyhedron bounds it: the largest (a quad at the equator, two triangles) is the
+  // face it lies on, a sliver of its surface.
+  const Mesh s = sphere(10);
+  const Orientation o = best_orientation(s, {});
+  EXPECT_GT(o.face, 0);
+  EXPECT_LT(o.face, 0.01 * surface_area(s));
+  EXPECT_NEAR(std::abs(o.up.z), 0, 0.05);  // an equatorial facet's normal is horizontal
+}
+
+TEST(Orient, ASpikyBallHasNoFlatFaceAndStays) {
+  // A cube of side 2 with a pyramid 3 high on each face: the spikes' tips span every plane that bounds it,
+  // so no face lies on one and the pose is kept.
+  Mesh m;
+  for (int i = 0; i < 8; ++i) m.points.push_back({i & 1 ? 1.0 : -1.0, i & 2 ? 1.0 : -1.0, i & 4 ? 1.0 : -1.0});
+  const std::uint32_t sides[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                     {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& q : sides) {
+    Vec3 centre{};
+    for (std::uint32_t v : q) centre += 0.25 * m.points[v];
+    const auto tip = static_cast<std::uint32_t>(m.points.size());
+    m.points.push_back(4 * centre);
+    for (int k = 0; k < 4; ++k) m.triangles.push_back({q[k], q[(k + 1) % 4], tip});
+  }
+  ASSERT_GT(enclosed_volume(m), 0);
+  const Orientation o = best_orientation(m, {});
+  EXPECT_EQ(o.face, 0);
+  EXPECT_EQ(o.up.z, 1);
+  EXPECT_NEAR(o.overhang, o.overhang_before, 1e-12);
+}
+
+TEST(Orient, TheTurnTakesUpToZ) {
+  for (Vec3 up :
+       {Vec3{0, 0, 1}, Vec3{0, 0, -1}, Vec3{1, 0, 0}, normalized(Vec3{1, -2, 3}), normalized(Vec3{1e-9, 0, -1})}) {
+    const Affine3 t = turn_up(up);
+    const Vec3 z = t.linear(up);
+    EXPECT_NEAR(z.x, 0, 1e-12);
+    EXPECT_NEAR(z.y, 0, 1e-12);
+    EXPECT_NEAR(z.z, 1, 1e-12);
+    EXPECT_NEAR(t.determinant(), 1, 1e-12);  // a rotation, never a mirror
+  }
+}
+
+TEST(Orient, RestingAreaCountsEveryFootOnThePlane) {
+  // Two boxes side by side, one taller: standing, both feet rest; upside down only the taller's top.
+  Mesh two = box(10, 10);
+  Mesh tall = transformed(box(10, 20), MeshTransform{.translate = {30, 0, 0}}.map());
+  const auto n = static_cast<std::uint32_t>(two.points.size());
+  two.points.insert(two.points.end(), tall.points.begin(), tall.points.end());
+  for (Triangle t : tall.triangles) two.triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
+  EXPECT_NEAR(resting_area(two, {0, 0, 1}), 200, 1e-9);
+  EXPECT_NEAR(resting_area(two, {0, 0, -1}), 100, 1e-9);
+}
+
+TEST(Orient, BedShiftPutsTheLowestPointOnZeroCentred) {
+  const Vec3 s = bed_shift({{2, -4, 3}, {6, 10, 8}});
+  EXPECT_EQ(s.x, -4);
+  EXPECT_EQ(s.y, -3);
+  EXPECT_EQ(s.z, -3);
+}
