@@ -14,6 +14,7 @@ print::PrintRules read_print_rules(Options& o) {
   r.min_wall = o.number("min_wall", r.min_wall);
   r.min_gap = o.number("min_gap", r.min_gap);
   r.max_triangles = o.number("triangles", r.max_triangles);
+  r.overhang = o.number("overhang", r.overhang);
   if (const auto bed = o.point3("bed")) r.bed = *bed;
   r.voxel = o.number("voxel", r.voxel);
   r.validate();
@@ -35,22 +36,26 @@ PrintCheckOption read_print_check(Options& o) {
 }
 
 // Reports by value. A value that has died no longer matches (its weak pointer expired), so an address reused
-// by a new value is never mistaken for it; the dead entries go when a report is kept.
+// by a new value is never mistaken for it; the dead entries go when a report is kept. A report keeps its
+// solid's `wall` and `gap` fields (point and face: about as much memory as the solid itself) when the run
+// could afford them, so solid.check after a warning or a save marks the solid without measuring it again.
 struct PrintReports {
   struct Entry {
     std::weak_ptr<const Mesh> mesh;
     print::PrintReport report;
+    std::shared_ptr<const std::pair<Fields, Fields>> marks;  // point and face fields; null when not kept
   };
   std::vector<Entry> entries;
+  std::vector<BBox3> model_boxes;  // boxes the recipe grew things in (note_model_box)
 
-  const print::PrintReport* find(const Held<Mesh>& m, const print::PrintRules& rules) const {
+  const Entry* find(const Held<Mesh>& m, const print::PrintRules& rules) const {
     for (const Entry& e : entries)
-      if (e.report.rules == rules && !e.mesh.expired() && e.mesh.lock() == m) return &e.report;
+      if (e.report.rules == rules && !e.mesh.expired() && e.mesh.lock() == m) return &e;
     return nullptr;
   }
-  void keep(const Held<Mesh>& m, const print::PrintReport& r) {
+  void keep(const Held<Mesh>& m, const print::PrintReport& r, std::shared_ptr<const std::pair<Fields, Fields>> marks) {
     std::erase_if(entries, [](const Entry& e) { return e.mesh.expired(); });
-    entries.push_back({m, r});
+    entries.push_back({m, r, std::move(marks)});
   }
 };
 
@@ -64,23 +69,54 @@ PrintReports& reports_of(lua_State* L) {
 
 }  // namespace
 
+void note_model_box(lua_State* L, const BBox3& box) {
+  std::vector<BBox3>& boxes = reports_of(L).model_boxes;
+  if (boxes.size() < 64) boxes.push_back(box);  // the first few: recipes grow in one or two
+}
+
 print::PrintReport check_print_in_run(lua_State* L, const Held<Mesh>& m, const print::PrintRules& rules, Mesh* marked) {
   PrintReports& reports = reports_of(L);
-  if (marked == nullptr)
-    if (const print::PrintReport* r = reports.find(m, rules)) return *r;
+  if (const PrintReports::Entry* e = reports.find(m, rules)) {
+    if (marked == nullptr || e->marks) {
+      print::PrintReport r = e->report;
+      r.shared = true;
+      if (marked != nullptr) {
+        *marked = *m;
+        marked->point_fields = e->marks->first;
+        marked->face_fields = e->marks->second;
+        print::add_overhang(*m, r, marked);
+      }
+      return r;
+    }
+  }
+  // Marked always when the run can hold a copy of the solid beside the check, so that a later solid.check
+  // shares this check; its fields are kept with the report.
+  Mesh own;
+  Mesh* mark = marked;
+  if (mark == nullptr && with_budget(L, [&](const PointBudget& b) { return b.left() > 4 * budget_size(*m); }))
+    mark = &own;
   print::PrintReport r =
-      with_budget(L, [&](const PointBudget& b) { return print::check_print(*m, rules, b, RunContext::of(L), marked); });
-  reports.keep(m, r);
+      with_budget(L, [&](const PointBudget& b) { return print::check_print(*m, rules, b, RunContext::of(L), mark); });
+  print::flag_model_box(r, reports.model_boxes);
+  std::shared_ptr<const std::pair<Fields, Fields>> marks;
+  if (mark != nullptr && mark->point_fields.find("wall") != nullptr)
+    marks = std::make_shared<const std::pair<Fields, Fields>>(mark->point_fields, mark->face_fields);
+  reports.keep(m, r, std::move(marks));
   return r;
 }
 
-void keep_print_report(lua_State* L, const Held<Mesh>& m, const print::PrintReport& r) { reports_of(L).keep(m, r); }
+void keep_print_report(lua_State* L, const Held<Mesh>& m, const print::PrintReport& r) {
+  reports_of(L).keep(m, r, nullptr);
+}
 
 void warn_unless_printable(lua_State* L, const char* fn, const Held<Mesh>& m, const PrintCheckOption& check) {
   if (!check.on) return;
   const print::PrintReport r = check_print_in_run(L, m, check.rules);
   if (r.passes()) return;
-  const std::string message = recipe_where(L) + fn + ": " + r.summary() + " (check = false to skip)";
+  // Warnings are cut at 500 bytes: the problems most serious first, with their fixes, while they fit.
+  const std::string where = recipe_where(L) + fn + ": ", skip = " (check = false to skip)";
+  const std::size_t room = 490 > where.size() + skip.size() ? 490 - where.size() - skip.size() : 100;
+  const std::string message = where + print::brief(r, room) + skip;
   lua_warning(L, message.c_str(), 0);
 }
 
@@ -89,7 +125,7 @@ void warn_unless_printable_solid(lua_State* L, const char* fn, const Held<Mesh>&
 }
 
 std::string print_summary(lua_State* L, const Held<Mesh>& m) {
-  if (const print::PrintReport* r = reports_of(L).find(m, print::PrintRules{})) return r->summary();
+  if (const PrintReports::Entry* e = reports_of(L).find(m, print::PrintRules{})) return e->report.summary();
   const MeshTopology t = mesh_topology(*m, RunContext::of(L));
   if (t.boundary_edges > 0)
     return "print check: an open surface (" + std::to_string(t.boundary_edges) +
@@ -98,7 +134,7 @@ std::string print_summary(lua_State* L, const Held<Mesh>& m) {
 }
 
 void push_print_report(lua_State* L, const print::PrintReport& r) {
-  lua_createtable(L, 0, 12);
+  lua_createtable(L, 0, 16);
   lua_pushboolean(L, r.passes());
   lua_setfield(L, -2, "passes");
   lua_pushstring(L, r.summary().c_str());
@@ -109,6 +145,20 @@ void push_print_report(lua_State* L, const print::PrintReport& r) {
     lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
   }
   lua_setfield(L, -2, "findings");
+  // Every finding, cosmetic ones too, the most serious first: { severity, what, fix }.
+  lua_createtable(L, static_cast<int>(r.problems.size()), 0);
+  for (std::size_t i = 0; i < r.problems.size(); ++i) {
+    const print::Problem& p = r.problems[i];
+    lua_createtable(L, 0, 3);
+    lua_pushstring(L, print::severity_text(p.severity));
+    lua_setfield(L, -2, "severity");
+    lua_pushstring(L, p.what.c_str());
+    lua_setfield(L, -2, "what");
+    lua_pushstring(L, p.fix.c_str());
+    lua_setfield(L, -2, "fix");
+    lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+  }
+  lua_setfield(L, -2, "problems");
   lua_pushinteger(L, static_cast<lua_Integer>(r.triangles));
   lua_setfield(L, -2, "triangles");
   push_point(L, r.box.size());
@@ -117,6 +167,14 @@ void push_print_report(lua_State* L, const print::PrintReport& r) {
   lua_setfield(L, -2, "closed");
   lua_pushboolean(L, r.crossing.has_value());
   lua_setfield(L, -2, "crossing");
+  lua_pushinteger(L, static_cast<lua_Integer>(r.contact.crease_pairs));
+  lua_setfield(L, -2, "creases");
+  lua_pushinteger(L, static_cast<lua_Integer>(r.contact.specks));
+  lua_setfield(L, -2, "specks");
+  lua_pushnumber(L, r.overhang);
+  lua_setfield(L, -2, "overhang");
+  lua_pushboolean(L, r.shared);
+  lua_setfield(L, -2, "reused");
   if (r.wall.measured) {
     // A reading finer than the grid resolves is given as the bound it is under, with `*_resolved` false:
     // the rays' first-step number means nothing (0.03 mm for a 0.12 mm slab).

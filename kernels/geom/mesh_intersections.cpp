@@ -285,44 +285,135 @@ std::uint64_t least_pair(const Corners& corners, const std::vector<Box>& boxes, 
   return best.load();
 }
 
+// The candidate pairs' grid over m's triangles, scaled to a unit diagonal: what both searches share.
+struct Candidates {
+  Corners corners;
+  std::vector<Box> boxes;
+  Grid grid;
+  std::vector<std::uint64_t> records;
+  static constexpr double eps = 1e-9;  // of the diagonal, which is 1 now
+
+  Candidates(const Mesh& m, const BBox3& bounds, double size, Progress& progress)
+      : corners{m, bounds.min, size, 1 / size} {
+    const std::size_t f = m.triangles.size();
+    // Grown by eps, then by 2^-23 so that rounding to float only ever grows them.
+    constexpr double margin = 0x1p-23;
+    size_large(boxes, f, progress);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, f, 1 << 14), [&](const tbb::blocked_range<std::size_t>& r) {
+      for (std::size_t i = r.begin(); i < r.end(); ++i) {
+        const auto c = corners(static_cast<std::uint32_t>(i));
+        const Vec3 lo = min_each(min_each(c[0], c[1]), c[2]) - Vec3::all(eps + margin);
+        const Vec3 hi = max_each(max_each(c[0], c[1]), c[2]) + Vec3::all(eps + margin);
+        boxes[i] = {{float(lo.x), float(lo.y), float(lo.z)}, {float(hi.x), float(hi.y), float(hi.z)}};
+      }
+    });
+    if (progress.cancelled()) throw Cancelled();
+    const Vec3 reach = bounds.size() / corners.size + Vec3::all(eps + 2 * margin);
+    grid = choose_grid(boxes, {float(reach.x), float(reach.y), float(reach.z)});
+    progress.fraction(0.05);
+    records = sorted_records(boxes, grid, progress);
+    progress.fraction(0.2);
+  }
+
+  // Where triangles i and j meet, in m's coordinates.
+  TrianglePair pair(std::uint32_t i, std::uint32_t j) const {
+    const Vec3 where = *triangles_meet(corners.m.triangles[i], corners.m.triangles[j], ContactTriangle(corners(i)),
+                                       ContactTriangle(corners(j)), eps);
+    return TrianglePair{i, j, corners.origin + where * corners.size};
+  }
+};
+
+// The mesh's box and its diagonal (1 for a mesh of one point).
+double diagonal_of(const Mesh& m, BBox3& bounds) {
+  bounds = m.bbox();
+  const double diagonal = norm(bounds.size());
+  if (!std::isfinite(diagonal)) throw Error("the mesh is too large: its diagonal overflows");
+  return diagonal > 0 ? diagonal : 1;
+}
+
+// Every pair that meets, in the chunks of whole batches until `limit` are found (then the batch's pairs
+// past it are dropped): which pairs does not depend on the threads, as the batches are fixed.
+std::vector<TrianglePair> gather_pairs(const Candidates& c, std::size_t limit, Progress& progress) {
+  const Grid& grid = c.grid;
+  const std::vector<std::uint64_t>& records = c.records;
+  const std::size_t total = records.size(), chunk = 1 << 13, chunks = (total + chunk - 1) / chunk;
+  const std::uint64_t id_mask = (std::uint64_t{1} << grid.id_bits) - 1;
+  auto cell_start = [&](std::size_t k) {
+    while (k > 0 && k < total && (records[k] >> grid.id_bits) == (records[k - 1] >> grid.id_bits)) ++k;
+    return std::min(k, total);
+  };
+  std::vector<std::vector<std::uint64_t>> found(chunks);
+  std::vector<std::uint64_t> pairs;
+  const std::size_t batch = std::max<std::size_t>(chunks / 32, 16);
+  for (std::size_t begin = 0; begin < chunks && pairs.size() < limit; begin += batch) {
+    const std::size_t end = std::min(chunks, begin + batch);
+    tbb::parallel_for(begin, end, [&](std::size_t k0) {
+      struct Entry {
+        std::uint32_t id;
+        unsigned starts;  // bit a: the box starts in this cell on axis a
+        ContactTriangle tri;
+      };
+      std::vector<Entry> in;
+      std::vector<std::uint64_t>& out = found[k0];
+      const std::size_t to = cell_start((k0 + 1) * chunk);
+      for (std::size_t k = cell_start(k0 * chunk); k < to && out.size() < limit;) {
+        const std::uint64_t key = records[k] >> grid.id_bits;
+        const Cell here = Grid::cell_of(key);
+        in.clear();
+        for (; k < to && (records[k] >> grid.id_bits) == key; ++k) {
+          const auto j = static_cast<std::uint32_t>(records[k] & id_mask);
+          const Cell low = grid.low(c.boxes[j]);
+          in.push_back(
+              {j, unsigned(low[0] == here[0]) | unsigned(low[1] == here[1]) << 1 | unsigned(low[2] == here[2]) << 2,
+               ContactTriangle(c.corners(j))});
+        }
+        for (std::size_t x = 0; x + 1 < in.size(); ++x)
+          for (std::size_t y = x + 1; y < in.size(); ++y) {
+            const Entry& p = in[x];
+            const Entry& q = in[y];
+            // Once a pair: in the cell at the low corner of the boxes' overlap.
+            if ((p.starts | q.starts) != 7 || !overlap(c.boxes[p.id], c.boxes[q.id])) continue;
+            if (triangles_meet(c.corners.m.triangles[p.id], c.corners.m.triangles[q.id], p.tri, q.tri, Candidates::eps))
+              out.push_back(std::uint64_t{p.id} << 32 | q.id);
+          }
+      }
+    });
+    for (std::size_t k = begin; k < end; ++k) {
+      pairs.insert(pairs.end(), found[k].begin(), found[k].end());
+      std::vector<std::uint64_t>().swap(found[k]);
+    }
+    progress.step(0.2 + 0.8 * double(end) / double(chunks));
+  }
+  std::sort(pairs.begin(), pairs.end());
+  if (pairs.size() > limit) pairs.resize(limit);
+  std::vector<TrianglePair> out;
+  out.reserve(pairs.size());
+  for (std::uint64_t p : pairs) out.push_back(c.pair(std::uint32_t(p >> 32), std::uint32_t(p)));
+  return out;
+}
+
 }  // namespace
 
 std::optional<TrianglePair> first_intersection(const Mesh& m, Progress& progress) {
   progress.start("intersections");
   check_input(m);
-  const std::size_t f = m.triangles.size();
-  if (f < 2) return std::nullopt;
-  const BBox3 bounds = m.bbox();
-  const double diagonal = norm(bounds.size());
-  if (!std::isfinite(diagonal)) throw Error("the mesh is too large: its diagonal overflows");
-  const double size = diagonal > 0 ? diagonal : 1;
-  const Corners corners{m, bounds.min, size, 1 / size};
-  const double eps = 1e-9;  // of the diagonal, which is 1 now
-
-  // Grown by eps, then by 2^-23 so that rounding to float only ever grows them.
-  constexpr double margin = 0x1p-23;
-  std::vector<Box> boxes;
-  size_large(boxes, f, progress);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, f, 1 << 14), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t i = r.begin(); i < r.end(); ++i) {
-      const auto c = corners(static_cast<std::uint32_t>(i));
-      const Vec3 lo = min_each(min_each(c[0], c[1]), c[2]) - Vec3::all(eps + margin);
-      const Vec3 hi = max_each(max_each(c[0], c[1]), c[2]) + Vec3::all(eps + margin);
-      boxes[i] = {{float(lo.x), float(lo.y), float(lo.z)}, {float(hi.x), float(hi.y), float(hi.z)}};
-    }
-  });
-  if (progress.cancelled()) throw Cancelled();
-  const Vec3 reach = bounds.size() / corners.size + Vec3::all(eps + 2 * margin);
-  const Grid grid = choose_grid(boxes, {float(reach.x), float(reach.y), float(reach.z)});
-  progress.fraction(0.05);
-  const std::vector<std::uint64_t> records = sorted_records(boxes, grid, progress);
-  progress.fraction(0.2);
-  const std::uint64_t pair = least_pair(corners, boxes, grid, records, eps, progress);
+  if (m.triangles.size() < 2) return std::nullopt;
+  BBox3 bounds;
+  const double size = diagonal_of(m, bounds);
+  const Candidates c(m, bounds, size, progress);
+  const std::uint64_t pair = least_pair(c.corners, c.boxes, c.grid, c.records, Candidates::eps, progress);
   if (pair == none) return std::nullopt;
-  const auto first = static_cast<std::uint32_t>(pair >> 32), second = static_cast<std::uint32_t>(pair);
-  const Vec3 where = *triangles_meet(m.triangles[first], m.triangles[second], ContactTriangle(corners(first)),
-                                     ContactTriangle(corners(second)), eps);
-  return TrianglePair{first, second, bounds.min + where * corners.size};
+  return c.pair(static_cast<std::uint32_t>(pair >> 32), static_cast<std::uint32_t>(pair));
+}
+
+std::vector<TrianglePair> intersecting_pairs(const Mesh& m, std::size_t limit, Progress& progress) {
+  progress.start("intersections");
+  check_input(m);
+  if (m.triangles.size() < 2 || limit == 0) return {};
+  BBox3 bounds;
+  const double size = diagonal_of(m, bounds);
+  const Candidates c(m, bounds, size, progress);
+  return gather_pairs(c, limit, progress);
 }
 
 }  // namespace selfsim

@@ -27,6 +27,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "kernels/base/progress.h"
 #include "kernels/geom/mesh.h"
@@ -44,5 +45,11 @@ struct TrianglePair {
 // number of threads. Throws Error for a non-finite point or an index out of range (naming it, counted from 1 as
 // Mesh::validate does), and Cancelled when progress says stop.
 std::optional<TrianglePair> first_intersection(const Mesh& m, Progress& progress);
+
+// Every pair that meets, as first_intersection tests them, sorted, up to `limit` of them (then some `limit`
+// of them: whole batches of the grid's cells are searched until that many are found, so which ones does not
+// depend on the threads, and the time is at most first_intersection's when there are few). The print check
+// tells crossings from touches by them (kernels/print/self_contact.h).
+std::vector<TrianglePair> intersecting_pairs(const Mesh& m, std::size_t limit, Progress& progress);
 
 }  // namespace selfsim

@@ -297,9 +297,10 @@ PrintReport check_print(const Mesh& m, const PrintRules& rules, const PointBudge
   r.inward = enclosed_volume(m) < 0;
   progress.fraction(0.1);
   ProgressStage crossing(progress, 0.1, 0.3);
-  r.crossing = first_intersection(m, crossing);
+  survey_contact(m, r, crossing);  // crossings, creases, specks (print_survey.cpp)
   measure(m, budget, progress, r, marked);
   if (marked != nullptr && r.skipped.size() > 0) *marked = m;
+  add_overhang(m, r, marked);
   add_findings(r);
   progress.fraction(1);
   return r;

@@ -1,7 +1,9 @@
-// The print check's words: its findings, each a line naming where the problem is, and the one-line summary
+// The print check's words: its findings, each a severity, what and where, and the change that fixes it in
+// the recipe's own terms with numbers from the report; the one-line summary and a warning's brief line
 // (print_check.h). Kept apart from the measuring (print_check.cpp), which only fills the report's numbers.
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "kernels/base/count_text.h"
 #include "kernels/geom/point_text.h"
@@ -10,26 +12,106 @@
 
 namespace selfsim::print {
 
+namespace {
+
+// A factor to scale by, rounded up to a tenth: "2.6x".
+std::string times(double k) { return short_number(std::ceil(k * 10 - 1e-9) / 10) + "x"; }
+
+// A tube's radius for walls of `wall`, and a thickness, as a recipe writes them: "0.8".
+std::string length(double v) { return short_number(v); }
+
+void add_walls(PrintReport& r) {
+  const PrintRules& rules = r.rules;
+  // A crossing within the rays' first half step is below what the grid resolves: said as "under" its bound.
+  const double v = r.resolves(r.wall.value) ? r.wall.value : r.unresolved_bound();
+  const std::string value = r.resolves(r.wall.value) ? mm_text(v) : r.unresolved();
+  const std::string places = count_text(double(r.wall.under)) + (r.wall.under == 1 ? " place" : " places");
+  // Thinner than the nozzle draws nothing there: a printer cannot make it. Between the nozzle and two
+  // perimeters it prints, weakly or with gaps.
+  add_problem(r, v < rules.nozzle ? Severity::will_fail : Severity::may_fail,
+              "walls thinner than " + mm_text(rules.min_wall) + " at " + places + ", the thinnest " + value + " at " +
+                  mm_point_text(r.wall.where),
+              "thicken to " + mm_text(rules.min_wall) + " (thickness = " + length(rules.min_wall) +
+                  ", a tube's radius = " + length(rules.min_wall / 2) + ") or scale up " + times(rules.min_wall / v) +
+                  (r.resolves(r.wall.value) ? "" : " or more") + " (solid.size)");
+}
+
+void add_gaps(PrintReport& r) {
+  const PrintRules& rules = r.rules;
+  const double v = r.resolves(r.gap.value) ? r.gap.value : r.unresolved_bound();
+  const std::string value = r.resolves(r.gap.value) ? mm_text(v) : r.unresolved();
+  const std::string places = count_text(double(r.gap.under)) + (r.gap.under == 1 ? " place" : " places");
+  add_problem(r, Severity::may_fail,
+              "gaps narrower than " + mm_text(rules.min_gap) + " (they fuse) at " + places + ", the narrowest " +
+                  value + " at " + mm_point_text(r.gap.where),
+              "scale up " + times(rules.min_gap / v) + (r.resolves(r.gap.value) ? "" : " or more") +
+                  " (solid.size) or thinner walls (thickness, radius)");
+}
+
+void add_contact(PrintReport& r) {
+  const SelfContact& c = r.contact;
+  const std::string more = c.capped ? " or more" : "";
+  if (r.crossing)
+    add_problem(r, Severity::will_fail,
+                "it crosses itself near " + mm_point_text(r.crossing->where) + " (triangles " +
+                    std::to_string(r.crossing->first + 1) + " and " + std::to_string(r.crossing->second + 1) +
+                    ", along " + mm_text(c.crossing_length) + more + ")",
+                "method = \"grid\" (solid.thicken, solid.tube) merges it, or a smaller thickness or radius");
+  if (c.crease)
+    add_problem(r, Severity::cosmetic,
+                "a crease where the surface touches itself near " + mm_point_text(*c.crease) + " (" +
+                    count_text(double(c.crease_pairs)) + more + (c.crease_pairs == 1 ? " pair" : " pairs") +
+                    " of triangles)",
+                "a slicer fuses it");
+  if (c.specks > 0)
+    add_problem(r, Severity::cosmetic,
+                count_text(double(c.specks)) + (c.specks == 1 ? " sealed speck" : " sealed specks") +
+                    " smaller than the nozzle's spot (the largest " + mm_text(c.speck_across) + " across, near " +
+                    mm_point_text(c.speck_where) + ")",
+                c.specks == 1 ? "a slicer fuses or drops it" : "a slicer fuses or drops them");
+}
+
+}  // namespace
+
+const char* severity_text(Severity s) {
+  switch (s) {
+    case Severity::will_fail:
+      return "will fail";
+    case Severity::may_fail:
+      return "may fail";
+    case Severity::cosmetic:
+      return "cosmetic";
+  }
+  return "will fail";
+}
+
+void add_problem(PrintReport& r, Severity severity, std::string what, std::string fix) {
+  Problem p{severity, std::move(what), std::move(fix)};
+  // After every problem as serious or more: the most serious first, each kind in the order found.
+  const auto at = std::find_if(r.problems.begin(), r.problems.end(),
+                               [&](const Problem& q) { return int(q.severity) > int(severity); });
+  r.problems.insert(at, p);
+  r.findings.clear();
+  for (const Problem& q : r.problems)
+    if (q.severity != Severity::cosmetic) r.findings.push_back(q.line());
+}
+
 void add_findings(PrintReport& r) {
   const PrintRules& rules = r.rules;
-  if (!r.topology.manifold()) r.findings.push_back("not a 2-manifold: " + r.topology.first_problem);
-  if (r.inward) r.findings.push_back("its triangles face inwards (a slicer may print it inside out)");
-  if (r.crossing)
-    r.findings.push_back("it crosses itself near " + mm_point_text(r.crossing->where) + " (triangles " +
-                         std::to_string(r.crossing->first + 1) + " and " + std::to_string(r.crossing->second + 1) +
-                         ")");
-  const auto places = [](std::size_t n) { return count_text(double(n)) + (n == 1 ? " place" : " places"); };
-  // A crossing within the rays' first half step is below what the grid resolves: said as "under" its bound.
-  const auto measured = [&](double v) { return r.resolves(v) ? mm_text(v) : r.unresolved(); };
-  if (r.wall.measured && r.wall.under > 0 && !r.speck(r.wall))
-    r.findings.push_back("walls thinner than " + mm_text(rules.min_wall) + " at " + places(r.wall.under) +
-                         ", the thinnest " + measured(r.wall.value) + " at " + mm_point_text(r.wall.where));
-  if (r.gap.measured && r.gap.under > 0 && !r.speck(r.gap))
-    r.findings.push_back("gaps narrower than " + mm_text(rules.min_gap) + " (they fuse) at " + places(r.gap.under) +
-                         ", the narrowest " + measured(r.gap.value) + " at " + mm_point_text(r.gap.where));
+  if (!r.topology.manifold())
+    add_problem(r, Severity::will_fail, "not a 2-manifold: " + r.topology.first_problem,
+                "make it on a grid, method = \"grid\" (solid.thicken, solid.tube)");
+  if (r.inward)
+    add_problem(r, Severity::will_fail, "its triangles face inwards (a slicer may print it inside out)",
+                "reverse each triangle's corners");
+  add_contact(r);
+  if (r.wall.measured && r.wall.under > 0 && !r.speck(r.wall)) add_walls(r);
+  if (r.gap.measured && r.gap.under > 0 && !r.speck(r.gap)) add_gaps(r);
   if (static_cast<double>(r.triangles) > rules.max_triangles)
-    r.findings.push_back(count_text(double(r.triangles)) + " triangles, over the " + count_text(rules.max_triangles) +
-                         " a slicer handles well (decimate it)");
+    add_problem(r, Severity::may_fail,
+                count_text(double(r.triangles)) + " triangles, over the " + count_text(rules.max_triangles) +
+                    " a slicer handles well",
+                "solid.decimate(s, { triangles = " + short_number(rules.max_triangles, 15) + " })");
   const Vec3 size = r.box.size();
   if (rules.bed != Vec3{}) {
     // Any orientation on the bed: the sorted sides must fit the sorted bed.
@@ -37,15 +119,33 @@ void add_findings(PrintReport& r) {
     std::sort(part.begin(), part.end());
     std::sort(bed.begin(), bed.end());
     if (part[0] > bed[0] || part[1] > bed[1] || part[2] > bed[2])
-      r.findings.push_back("it is " + size_text(size) + ", larger than the bed's " + size_text(rules.bed));
+      add_problem(r, Severity::will_fail,
+                  "it is " + size_text(size) + ", larger than the bed's " + size_text(rules.bed),
+                  "solid.size(s, { fit = {" + short_number(rules.bed.x) + ", " + short_number(rules.bed.y) + ", " +
+                      short_number(rules.bed.z) + "} })");
   }
   const double longest = std::max({size.x, size.y, size.z});
   // Under 5 mm is almost always a solid still in its curve's units (a unit box, a radius of 1), not a print.
   if (longest < 5)
-    r.findings.push_back("it is only " + mm_text(longest) +
-                         " across: probably still in model units (sizes are mm): solid.size(s, 80)");
-  if (!r.skipped.empty()) r.findings.push_back(r.skipped);
+    add_problem(r, Severity::may_fail,
+                "it is only " + mm_text(longest) + " across: probably still in model units (sizes are mm)",
+                "solid.size(s, 80)");
+  if (!r.skipped.empty()) add_problem(r, Severity::may_fail, r.skipped, "");
 }
+
+namespace {
+
+// "overhang 320 mm² past 45° (fewer supports: solid.orient)", or "no overhang past 45°".
+std::string overhang_fact(const PrintReport& r) {
+  const std::string past = " past " + short_number(r.rules.overhang) + "°";
+  if (!(r.overhang > 0)) return "no overhang" + past;
+  const std::string area = r.overhang < 100 ? area_text(r.overhang) : short_number(r.overhang / 100, 2) + " cm²";
+  return "overhang " + area + past + " (fewer supports: solid.orient)";
+}
+
+std::string tagged(const Problem& p) { return std::string(severity_text(p.severity)) + ": " + p.line(); }
+
+}  // namespace
 
 std::string PrintReport::summary() const {
   const auto at_least = [&](const Spot& s, double cap) {
@@ -59,11 +159,38 @@ std::string PrintReport::summary() const {
   if (wall.measured) facts += ", walls " + at_least(wall, wall_cap) + ", gaps " + at_least(gap, gap_cap);
   if (wall.measured && spacing > std::max(voxel, rules.nozzle) * (1 + 1e-9))
     facts += ", measured every " + mm_text(spacing) + " (the point budget)";
-  if (passes()) return "print check (" + rules.profile + "): passes: closed, " + facts;
+  facts += ", " + overhang_fact(*this);
+  std::string cosmetic;
+  for (const Problem& p : problems)
+    if (p.severity == Severity::cosmetic) cosmetic += "; " + tagged(p);
+  if (passes()) return "print check (" + rules.profile + "): passes: closed, " + facts + cosmetic;
   std::string out = "print check (" + rules.profile + "): " + std::to_string(findings.size()) +
                     (findings.size() == 1 ? " problem: " : " problems: ");
-  for (std::size_t i = 0; i < findings.size(); ++i) out += (i == 0 ? "" : "; ") + findings[i];
-  return out + " (" + facts + ")";
+  bool first = true;
+  for (const Problem& p : problems)
+    if (p.severity != Severity::cosmetic) {
+      out += (first ? "" : "; ") + tagged(p);
+      first = false;
+    }
+  return out + cosmetic + " (" + facts + ")";
+}
+
+std::string brief(const PrintReport& r, std::size_t bytes) {
+  std::string all = r.summary();
+  if (all.size() <= bytes) return all;
+  std::string out = "print check (" + r.rules.profile + "): " + std::to_string(r.findings.size()) +
+                    (r.findings.size() == 1 ? " problem: " : " problems: ");
+  const std::string more = "; and more: solid.check lists them";
+  std::size_t said = 0;
+  for (const Problem& p : r.problems) {
+    if (p.severity == Severity::cosmetic) continue;
+    const std::string line = (said == 0 ? "" : "; ") + tagged(p);
+    // Room for this line and for saying there is more (the first is said whatever its length).
+    if (said > 0 && out.size() + line.size() + more.size() > bytes) return out + more;
+    out += line;
+    ++said;
+  }
+  return out;
 }
 
 // The bound said is two voxels, not the first step: the far side is placed by the grid's values at voxel

@@ -154,3 +154,144 @@ TEST(PrintCheck, ASolidTooWideForAGridIsSaidNotMeasured) {
   EXPECT_TRUE(mentions(r, "walls and gaps not measured: the solid is")) << r.summary();
   EXPECT_FALSE(r.wall.measured);
 }
+
+// Issue 40: each finding has a severity and the change that fixes it, in the recipe's terms.
+TEST(PrintCheck, FindingsSaySeverityAndFix) {
+  const auto problem = [](const PrintReport& r, const std::string& words) -> const Problem* {
+    for (const Problem& p : r.problems)
+      if (p.what.find(words) != std::string::npos) return &p;
+    return nullptr;
+  };
+  // Walls of 0.3 mm are under the 0.4 mm nozzle: will fail; thicken to 0.8 mm or scale up about 2.7x.
+  const PrintReport thin = check_print(box_mesh({0, 0, 0}, {10, 10, 0.3}), PrintRules{}, PointBudget{}, no_progress());
+  const Problem* w = problem(thin, "walls thinner than 0.8 mm");
+  ASSERT_NE(w, nullptr) << thin.summary();
+  EXPECT_EQ(w->severity, Severity::will_fail);
+  EXPECT_NE(w->fix.find("thicken to 0.8 mm (thickness = 0.8, a tube's radius = 0.4) or scale up 2."), std::string::npos)
+      << w->fix;
+  EXPECT_NE(thin.summary().find("will fail: walls thinner"), std::string::npos) << thin.summary();
+  // 0.6 mm: printable by the nozzle, under two perimeters: may fail.
+  const PrintReport weak = check_print(box_mesh({0, 0, 0}, {10, 10, 0.6}), PrintRules{}, PointBudget{}, no_progress());
+  ASSERT_NE(problem(weak, "walls thinner"), nullptr) << weak.summary();
+  EXPECT_EQ(problem(weak, "walls thinner")->severity, Severity::may_fail);
+  // Gaps that fuse: may fail, scale up (0.4 / 0.2 = 2x, within the grid's error) or thinner walls.
+  const Mesh two = joined(box_mesh({0, 0, 0}, {10, 10, 5}), box_mesh({0, 0, 5.2}, {10, 10, 10}));
+  const PrintReport gap = check_print(two, PrintRules{}, PointBudget{}, no_progress());
+  ASSERT_NE(problem(gap, "gaps narrower"), nullptr) << gap.summary();
+  EXPECT_EQ(problem(gap, "gaps narrower")->severity, Severity::may_fail);
+  EXPECT_NE(problem(gap, "gaps narrower")->fix.find("(solid.size) or thinner walls"), std::string::npos);
+  // Triangles and the bed.
+  PrintRules few;
+  few.max_triangles = 10;
+  few.bed = {5, 50, 50};
+  const PrintReport big = check_print(box_mesh({0, 0, 0}, {10, 10, 10}), few, PointBudget{}, no_progress());
+  EXPECT_EQ(problem(big, "triangles, over")->severity, Severity::may_fail);
+  EXPECT_EQ(problem(big, "triangles, over")->fix, "solid.decimate(s, { triangles = 10 })");
+  EXPECT_EQ(problem(big, "larger than the bed")->severity, Severity::will_fail);
+  EXPECT_EQ(problem(big, "larger than the bed")->fix, "solid.size(s, { fit = {5, 50, 50} })");
+  // Will fail comes before may fail, in the summary as in the list.
+  EXPECT_EQ(big.problems.front().severity, Severity::will_fail) << big.summary();
+  // The newcomer's 2.47 mm blob: may fail, still in model units.
+  const PrintReport blob = check_print(box_mesh({0, 0, 0}, {2.47, 2, 2}), PrintRules{}, PointBudget{}, no_progress());
+  ASSERT_NE(problem(blob, "probably still in model units"), nullptr) << blob.summary();
+  EXPECT_EQ(problem(blob, "model units")->severity, Severity::may_fail);
+  EXPECT_EQ(problem(blob, "model units")->fix, "solid.size(s, 80)");
+  EXPECT_FALSE(blob.passes());
+  // The warning's brief line keeps to its room, the most serious first with its fix, and says there is more.
+  const std::string line = brief(big, 200);
+  EXPECT_LE(line.size(), 200u) << line;
+  EXPECT_NE(line.find("will fail: it is 10 x 10 x 10 mm, larger than the bed's"), std::string::npos) << line;
+  EXPECT_NE(line.find("and more: solid.check lists them"), std::string::npos) << line;
+  EXPECT_EQ(brief(blob, 2000), blob.summary());
+}
+
+// A solid as large as a box the recipe grew it in (10 units) is probably still in model units; one sized
+// to 80 mm is not, nor one as large as a box of 7.5 units (not a whole number: a size chosen).
+TEST(PrintCheck, TheRecipesUnitBoxIsModelUnits) {
+  PrintReport r = check_print(box_mesh({0, 0, 0}, {10, 10, 10}), PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_TRUE(r.passes());
+  BBox3 unit;
+  unit.add(Vec3{-5, -5, -5});
+  unit.add(Vec3{5, 5, 5});
+  flag_model_box(r, {unit});
+  EXPECT_FALSE(r.passes());
+  EXPECT_TRUE(mentions(r, "the size of a box the recipe grew it in (10 units): probably still in model units"))
+      << r.summary();
+  PrintReport sized = check_print(box_mesh({0, 0, 0}, {80, 80, 10}), PrintRules{}, PointBudget{}, no_progress());
+  flag_model_box(sized, {unit});
+  EXPECT_TRUE(sized.passes()) << sized.summary();
+  BBox3 chosen;
+  chosen.add(Vec3{0, 0, 0});
+  chosen.add(Vec3{7.5, 1, 1});
+  PrintReport other = check_print(box_mesh({0, 0, 0}, {7.5, 7.5, 7.5}), PrintRules{}, PointBudget{}, no_progress());
+  flag_model_box(other, {chosen});
+  EXPECT_TRUE(other.passes()) << other.summary();
+}
+
+// A sealed speck (a closed piece under the nozzle's spot) through a solid's side is no crossing: cosmetic. Two blocks
+// meeting along an edge touch there: a crease, cosmetic. Two blocks passing through each other cross: will fail,
+// suggesting a grid.
+TEST(PrintCheck, SpecksAndCreasesAreNotCrossings) {
+  const Mesh speck = joined(box_mesh({0, 0, 0}, {20, 20, 20}), box_mesh({19.9, 5, 5}, {20.1, 5.2, 5.2}));
+  const PrintReport s = check_print(speck, PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_FALSE(mentions(s, "crosses itself")) << s.summary();
+  EXPECT_FALSE(s.crossing.has_value());
+  EXPECT_EQ(s.contact.specks, 1u);
+  EXPECT_NE(s.summary().find("cosmetic: 1 sealed speck smaller than the nozzle's spot"), std::string::npos)
+      << s.summary();
+
+  const Mesh edge = joined(box_mesh({0, 0, 0}, {10, 10, 10}), box_mesh({10, 10, 0}, {20, 20, 10}));
+  const PrintReport e = check_print(edge, PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_FALSE(e.crossing.has_value()) << e.summary();
+  EXPECT_GT(e.contact.crease_pairs, 0u);
+  EXPECT_NE(e.summary().find("cosmetic: a crease where the surface touches itself near"), std::string::npos)
+      << e.summary();
+  EXPECT_NE(e.summary().find("a slicer fuses it"), std::string::npos) << e.summary();
+
+  const Mesh through = joined(box_mesh({0, 0, 0}, {10, 10, 10}), box_mesh({5, 5, 5}, {15, 15, 15}));
+  const PrintReport c = check_print(through, PrintRules{}, PointBudget{}, no_progress());
+  ASSERT_TRUE(c.crossing.has_value()) << c.summary();
+  EXPECT_GT(c.contact.crossing_length, 10);
+  EXPECT_EQ(c.problems.front().severity, Severity::will_fail);
+  EXPECT_NE(c.problems.front().fix.find("method = \"grid\""), std::string::npos) << c.problems.front().fix;
+}
+
+// Overhang: a mushroom (a stem of radius 5, a cap of radius 15 on it) overhangs by its cap's underside ring;
+// a cube on the bed by nothing; a sphere by its lower part past 45 degrees.
+TEST(PrintCheck, OverhangOfAMushroomACubeAndASphere) {
+  using print_fixtures::polygon_area;
+  using print_fixtures::revolved;
+  const int sides = 64;
+  Mesh marked;
+  const Mesh mushroom = revolved({{0, 0}, {5, 0}, {5, 10}, {15, 10}, {15, 15}, {0, 15}}, sides);
+  const PrintReport m = check_print(mushroom, PrintRules{}, PointBudget{}, no_progress(), &marked);
+  EXPECT_NEAR(m.overhang, polygon_area(15, sides) - polygon_area(5, sides), 1e-6) << m.summary();
+  EXPECT_NEAR(m.overhang_where.z, 10, 1e-9);
+  EXPECT_NE(m.summary().find("overhang 6.3 cm² past 45° (fewer supports: solid.orient)"), std::string::npos)
+      << m.summary();
+  ASSERT_NE(marked.face_fields.find("overhang"), nullptr);
+  ASSERT_NE(marked.point_fields.find("overhang"), nullptr);
+  const auto angles = marked.face_fields.find("overhang")->reals();
+  EXPECT_EQ(std::count_if(angles.begin(), angles.end(), [](double a) { return std::abs(a - 90) < 1e-9; }), 2 * sides);
+  EXPECT_TRUE(m.passes()) << m.summary();  // overhang is no failure: supports print it
+
+  const PrintReport cube = check_print(box_mesh({0, 0, 0}, {20, 20, 20}), PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_EQ(cube.overhang, 0);
+  EXPECT_NE(cube.summary().find("no overhang past 45°"), std::string::npos) << cube.summary();
+
+  // A sphere of radius 10: the zone within 45 degrees of its lowest point, 2 pi R^2 (1 - cos 45°), less the
+  // faces at the pole (on the bed) and the faceting's error.
+  std::vector<std::pair<double, double>> profile;
+  for (int i = 0; i <= 48; ++i) {
+    const double a = 3.14159265358979323846 * i / 48;
+    profile.push_back({10 * std::sin(a), -10 * std::cos(a)});
+  }
+  profile.front().first = profile.back().first = 0;
+  const PrintReport ball = check_print(revolved(profile, 96), PrintRules{}, PointBudget{}, no_progress());
+  const double zone = 2 * 3.14159265358979323846 * 100 * (1 - std::sqrt(0.5));
+  EXPECT_NEAR(ball.overhang, zone, 0.03 * zone) << ball.summary();
+  PrintRules steep;
+  steep.overhang = 60;
+  const PrintReport past60 = check_print(revolved(profile, 96), steep, PointBudget{}, no_progress());
+  EXPECT_LT(past60.overhang, 0.6 * ball.overhang);
+}

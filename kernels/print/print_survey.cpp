@@ -1,0 +1,46 @@
+// The print check's survey besides walls and gaps (print_check.h): where the surface meets itself, told
+// apart by what a slicer makes of it (self_contact.h), and the overhang (overhang.h) with its field.
+#include <algorithm>
+#include <cmath>
+
+#include "kernels/geom/point_text.h"
+#include "kernels/print/overhang.h"
+#include "kernels/print/print_check.h"
+
+namespace selfsim::print {
+
+void survey_contact(const Mesh& m, PrintReport& r, Progress& progress) {
+  r.contact = self_contact(m, r.rules.nozzle, progress);
+  r.crossing = r.contact.crossing;
+}
+
+void add_overhang(const Mesh& m, PrintReport& r, Mesh* marked) {
+  const Overhang o = overhang_of(m, {.angle = r.rules.overhang}, marked != nullptr);
+  r.overhang = o.area;
+  r.overhang_where = o.where;
+  if (marked == nullptr) return;
+  // A point's angle: the steepest of its faces' (a point on a ceiling's rim is on the ceiling).
+  std::vector<double> at_points(m.points.size(), 0);
+  for (std::size_t f = 0; f < m.faces(); ++f)
+    for (std::uint32_t v : m.triangles[f]) at_points[v] = std::max(at_points[v], o.angle[f]);
+  marked->point_fields.set(real_field("overhang", std::move(at_points)));
+  marked->face_fields.set(real_field("overhang", o.angle));
+}
+
+void flag_model_box(PrintReport& r, const std::vector<BBox3>& boxes) {
+  const auto longest = [](Vec3 s) { return std::max({s.x, s.y, s.z}); };
+  const double side = longest(r.box.size());
+  if (side < 5) return;  // said already (under 5 mm)
+  for (const BBox3& b : boxes) {
+    const double unit = longest(b.size());
+    const bool whole = unit >= 1 && unit <= 10 && std::abs(unit - std::round(unit)) <= 1e-9 * unit;
+    if (!whole || std::abs(side - unit) > 1e-3 * unit) continue;
+    add_problem(r, Severity::may_fail,
+                "it is " + mm_text(side) + " across, the size of a box the recipe grew it in (" + short_number(unit) +
+                    " units): probably still in model units (sizes are mm)",
+                "solid.size(s, 80)");
+    return;
+  }
+}
+
+}  // namespace selfsim::print

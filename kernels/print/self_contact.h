@@ -1,0 +1,41 @@
+// Where a solid's surface meets itself, told apart by what a slicer makes of it (issue 40):
+//   - a crossing: triangles pass through each other (each has corners strictly on both sides of the other's
+//     plane) along lines longer, together, than the nozzle's width: the slicer's layers get the inside wrong
+//     there;
+//   - a crease: the surface touches itself along an edge or at a point without passing through (thickened
+//     sheets meeting at a fold, an OpenVDB mesh's coincident points), or passes through over less than the
+//     nozzle's width: a slicer fuses it;
+//   - a sealed speck: a closed piece (face-connected component) smaller than the nozzle's spot, across or in
+//     area, beside a piece that is not: inside or touching another part, or alone, a slicer fuses or drops it.
+// The pairs are those mesh_intersections.h finds, up to `limit` of them (a mesh touching itself everywhere is
+// judged by the first few thousand): O(F).
+#pragma once
+
+#include <cstddef>
+#include <optional>
+
+#include "kernels/base/progress.h"
+#include "kernels/geom/mesh.h"
+#include "kernels/geom/mesh_intersections.h"
+
+namespace selfsim::print {
+
+struct SelfContact {
+  std::optional<TrianglePair> crossing;  // the first pair passing through, when the crossings count
+  double crossing_length = 0;            // mm: the lines along which triangles pass through, summed
+  std::size_t crossing_pairs = 0;
+  std::optional<Vec3> crease;  // where the surface first touches itself (or crosses over less than a nozzle)
+  std::size_t crease_pairs = 0;
+  std::size_t specks = 0;   // sealed pieces smaller than the nozzle's spot
+  Vec3 speck_where;         // the largest speck's centre
+  double speck_across = 0;  // mm: the largest speck's longest side
+  bool capped = false;      // `limit` pairs were found: there may be more
+};
+
+SelfContact self_contact(const Mesh& m, double nozzle, Progress& progress, std::size_t limit = 4096);
+
+// The length (in m's units) of the line along which triangles a and b pass through each other; 0 when they
+// only touch (a corner or an edge on the other's plane, coplanar, or apart).
+double crossing_length(const std::array<Vec3, 3>& a, const std::array<Vec3, 3>& b);
+
+}  // namespace selfsim::print
