@@ -45,15 +45,15 @@ Spot read_spot(Options& o) {
 // m turned by `turn` (none: kept) and put on the bed at the spot, as a new value on the stack.
 void push_on_bed(lua_State* L, const Mesh& m, const Affine3* turn, const Spot& spot) {
   check_run_budget(L, budget_size(m), "the placed copy");
-  Mesh turned = turn ? transformed(m, *turn, RunContext::of(L)) : m;
-  Vec3 shift = print::bed_shift(turned.bbox());
+  Mesh placed = turn ? transformed(m, *turn, RunContext::of(L)) : m;
+  Vec3 shift = print::bed_shift(placed.bbox());
   if (spot.centre)
     shift += {spot.at.x, spot.at.y, 0};
   else
     shift.x = shift.y = 0;
-  Affine3 move;
-  move.t = shift;
-  push_geometry(L, transformed(turned, move, RunContext::of(L)));
+  for (Vec3& p : placed.points) p += shift;  // a move: no field changes
+  if (!placed.finite()) throw Error("option 'at' moves the solid past the largest number");
+  push_geometry(L, std::move(placed));
 }
 
 // solid.place(mesh, { centre = true, at = {x, y} }) -> the mesh with its lowest point at z = 0, centred.
@@ -68,8 +68,14 @@ int solid_place(lua_State* L) {
   });
 }
 
+// Areas as the print check's summary gives overhang: mm² under 1 cm², cm² above.
+std::string overhang_area(double area) { return area < 100 ? area_text(area) : short_number(area / 100, 2) + " cm²"; }
+
+// "overhang 52 mm² past 45° (was 3.1 cm²)", "no overhang past 45° (was none)".
 std::string overhang_text(double area, double angle, double before) {
-  return "overhang " + area_text(area) + " past " + short_number(angle) + "° (was " + area_text(before) + ")";
+  const std::string past =
+      " past " + short_number(angle) + "° (was " + (before > 0 ? overhang_area(before) : "none") + ")";
+  return area > 0 ? "overhang " + overhang_area(area) + past : "no overhang" + past;
 }
 
 // solid.orient(mesh, { face = "largest" } | { least = "overhang", overhang = 45 } | { rotate = 90, axis = {1,0,0} })
@@ -106,16 +112,19 @@ int solid_orient(lua_State* L) {
       // The overhang once turned: measured along the direction the turn takes to +z.
       const Affine3 back = rotation(given.axis / norm(given.axis), -given.degrees);
       along.up = back.linear({0, 0, 1});
-      said = "turned " + short_number(given.degrees) + "° about " + point_text(given.axis) + ", " +
+      said = "turned " + short_number(given.degrees) + "° about " + point_text(given.axis) + ": " +
              overhang_text(print::overhang_of(*m, along).area, opt.overhang, before);
     } else {
       const print::Orientation r = print::best_orientation(*m, opt, RunContext::of(L));
       turn = r.turn;
-      const std::string resting = r.face > 0 ? "a flat face of " + area_text(r.face) : "an edge or a point";
       const std::string overhang = overhang_text(r.overhang, opt.overhang, r.overhang_before);
-      said = opt.least_overhang ? "to the least overhang: " + overhang.substr(9) + ", resting on " + resting
-             : r.face > 0       ? "on its largest flat face (" + area_text(r.face) + "), " + overhang
-                                : "no flat face to lie on, left as it was, " + overhang;
+      if (opt.least_overhang)
+        said = "to the least overhang, resting on " +
+               (r.face > 0 ? "a flat face of " + area_text(r.face) : std::string("an edge or a point")) + ": " +
+               overhang;
+      else
+        said = r.face > 0 ? "on its largest flat face (" + area_text(r.face) + "), " + overhang
+                          : "no flat face to lie on, left as it was: " + overhang;
     }
     push_on_bed(L, *m, &turn, spot);
     if (!RunContext::of(L).config.quiet) std::printf("%ssolid.orient: %s\n", recipe_where(L).c_str(), said.c_str());
