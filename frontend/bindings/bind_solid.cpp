@@ -1,6 +1,7 @@
 // solid.*: printable solids in millimetres (issue 25) — solid.thicken, solid.tube, solid.relief, solid.smooth,
 // solid.size and solid.check. Thin adapters over kernels/print; the print check's reading of the options
 // is shared with save() of a print format (print_options.h).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -109,22 +110,46 @@ int solid_thicken(lua_State* L) {
   });
 }
 
-// The radius at each point of c: `radius`, times the point field `by` (taper absent), or times taper^by.
+// The radius at each point of c: `radius`, times the point field `by` (taper absent), or times taper^by;
+// none below `least` (0: no least).
 template <class C>
-std::vector<double> tube_radii(const C& c, double radius, const std::string& by, double taper) {
-  std::vector<double> r(c.points.size(), radius);
+std::vector<double> tube_radii(const C& c, double radius, const std::string& by, double taper, double least) {
+  std::vector<double> r(c.points.size(), std::max(radius, least));
   if (by.empty()) return r;
   const Field* f = c.point_fields.find(by);
   if (f == nullptr) throw Error("option 'by' names the point field '" + by + "', which the curve does not have");
   if (f->components != 1) throw Error("option 'by' must name a field of one component, '" + by + "' has more");
   for (std::size_t i = 0; i < r.size(); ++i) {
     const double v = f->at(f->uniform ? 0 : i);
-    r[i] = taper > 0 ? radius * std::pow(taper, v) : radius * v;
+    r[i] = std::max(taper > 0 ? radius * std::pow(taper, v) : radius * v, least);
     if (!(r[i] > 0) || !std::isfinite(r[i]))
       throw Error("the radius at point " + std::to_string(i + 1) + " is " + number_text(r[i]) + " (from field '" + by +
                   "' = " + number_text(v) + "): it must be positive");
   }
   return r;
+}
+
+// A grid tube with a radius per point (issue 40): its voxel (given, or a quarter of the thinnest radius within
+// the budget) said unless quiet, and a warning when the thinnest parts are under a voxel across.
+template <class C>
+Mesh grid_tube_by(lua_State* L, const C& c, const std::vector<double>& radii, print::GridTubeOptions opt) {
+  return with_budget(L, [&](const PointBudget& b) {
+    opt.budget = b;
+    const bool given = opt.voxel > 0;
+    opt.voxel = print::grid_tube_voxel(c, radii, opt);
+    const double thinnest = *std::min_element(radii.begin(), radii.end());
+    if (!RunContext::of(L).config.quiet)
+      std::printf("%ssolid.tube: radii %s to %s on a %s grid%s\n", recipe_where(L).c_str(), mm_text(thinnest).c_str(),
+                  mm_text(*std::max_element(radii.begin(), radii.end())).c_str(), mm_text(opt.voxel).c_str(),
+                  given ? "" : " (a quarter of the thinnest radius, or coarser to fit the budget)");
+    if (thinnest < opt.voxel) {
+      const std::string message = recipe_where(L) + "solid.tube: the thinnest radius " + mm_text(thinnest) +
+                                  " is under the voxel " + mm_text(opt.voxel) +
+                                  ": parts that thin are lost or broken; give a smaller 'voxel' or a 'min_radius'";
+      lua_warning(L, message.c_str(), 0);
+    }
+    return print::grid_tube(c, radii, opt, RunContext::of(L));
+  });
 }
 
 int solid_tube(lua_State* L) {
@@ -140,34 +165,37 @@ int solid_tube(lua_State* L) {
     const bool grid = o.enumeration("method", {"rings", "grid"}, 0) == 1;
     print::TubeOptions opt;
     print::GridTubeOptions on_grid{.radius = radius};
-    std::string by;
-    double taper = 0;
     if (grid) {
-      // One radius: the grid's solid is every point within it of the curve.
-      for (const char* ring_only : {"sides", "by", "taper"})
-        if (o.has(ring_only))
-          throw Error("option '" + std::string(ring_only) +
-                      "' is for method = \"rings\"; a tube on the grid has one radius and round joints");
+      if (o.has("sides"))
+        throw Error("option 'sides' is for method = \"rings\"; a tube on the grid is round (its detail is 'voxel')");
       on_grid.voxel = o.number("voxel", 0);
       on_grid.adaptivity = o.number("adaptivity", 0);
     } else {
       opt.sides = static_cast<int>(o.integer("sides", opt.sides, 3, 256));
-      by = o.string("by", "");
-      if (o.has("taper")) {
-        taper = check_between(o.number("taper", 1), 1e-6, 1e6, "option 'taper'");
-        if (by.empty()) throw Error("option 'taper' needs 'by', the point field it is raised to (e.g. by = \"level\")");
-      }
     }
+    const std::string by = o.string("by", "");
+    double taper = 0;
+    if (o.has("taper")) {
+      taper = check_between(o.number("taper", 1), 1e-6, 1e6, "option 'taper'");
+      if (by.empty()) throw Error("option 'taper' needs 'by', the point field it is raised to (e.g. by = \"level\")");
+    }
+    const double least = o.has("min_radius") ? length_option(o, "min_radius", size, "") : 0;
     const PrintCheckOption check = read_print_check(o);
     o.finish();
-    Mesh solid = with_budget(L, [&](const PointBudget& b) {
-      opt.budget = on_grid.budget = b;
-      if (grid)
-        return c2 ? print::grid_tube(*c2, on_grid, RunContext::of(L))
-                  : print::grid_tube(*c3, on_grid, RunContext::of(L));
-      return c2 ? print::tube(*c2, tube_radii(*c2, radius, by, taper), opt, RunContext::of(L))
-                : print::tube(*c3, tube_radii(*c3, radius, by, taper), opt, RunContext::of(L));
-    });
+    Mesh solid;
+    if (grid && (!by.empty() || least > radius)) {
+      solid = c2 ? grid_tube_by(L, *c2, tube_radii(*c2, radius, by, taper, least), on_grid)
+                 : grid_tube_by(L, *c3, tube_radii(*c3, radius, by, taper, least), on_grid);
+    } else {
+      solid = with_budget(L, [&](const PointBudget& b) {
+        opt.budget = on_grid.budget = b;
+        if (grid)
+          return c2 ? print::grid_tube(*c2, on_grid, RunContext::of(L))
+                    : print::grid_tube(*c3, on_grid, RunContext::of(L));
+        return c2 ? print::tube(*c2, tube_radii(*c2, radius, by, taper, least), opt, RunContext::of(L))
+                  : print::tube(*c3, tube_radii(*c3, radius, by, taper, least), opt, RunContext::of(L));
+      });
+    }
     push_geometry(L, std::move(solid));
     warn_unless_printable(L, "solid.tube", test_geometry<Mesh>(L, -1), check);
     return 1;

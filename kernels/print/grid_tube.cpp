@@ -1,5 +1,6 @@
 #include "kernels/print/grid_tube.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -54,6 +55,75 @@ Mesh tube_on_grid(const PolylineT<V>& c, const GridTubeOptions& opt, Progress& p
   return thicken_on_grid(segments_mesh, grid, progress);
 }
 
+// The round cones of c's segments of length > 0, each cut into pieces no longer than twice its larger
+// radius and 16 voxels: a long slanted segment's box would hold many blocks of voxels far from it, and the
+// pieces are the same solid (round_cone.h).
+template <class V>
+std::vector<RoundSegment> cones_of(const PolylineT<V>& c, std::span<const double> radii, double voxel) {
+  if (radii.size() != c.points.size())
+    throw Error("the tube has " + std::to_string(radii.size()) + " radii for " + std::to_string(c.points.size()) +
+                " points");
+  std::vector<RoundSegment> out;
+  std::size_t begin = 0;
+  for (std::size_t end : c.path_ends) {
+    for (std::size_t i = begin; i + 1 < end; ++i) {
+      const Vec3 a = lifted(c.points[i]), b = lifted(c.points[i + 1]);
+      const double l = norm(b - a), ra = radii[i], rb = radii[i + 1];
+      if (!(l > 0)) continue;
+      const double longest = std::max(2 * std::max(ra, rb), 16 * voxel);
+      const auto pieces = static_cast<std::size_t>(std::min(1e6, std::ceil(l / longest)));
+      for (std::size_t k = 0; k < pieces; ++k) {
+        const double t0 = static_cast<double>(k) / static_cast<double>(pieces);
+        const double t1 = static_cast<double>(k + 1) / static_cast<double>(pieces);
+        out.push_back({a + t0 * (b - a), a + t1 * (b - a), ra + t0 * (rb - ra), ra + t1 * (rb - ra)});
+      }
+    }
+    begin = end;
+  }
+  if (out.empty()) throw Error("the curve has no segment of non-zero length to make a tube of");
+  return out;
+}
+
+void check_radii(std::span<const double> radii) {
+  for (std::size_t i = 0; i < radii.size(); ++i)
+    if (!(radii[i] > 0) || !std::isfinite(radii[i]))
+      throw Error("the radius at point " + std::to_string(i + 1) + " is " + number_text(radii[i]) +
+                  ": it must be positive");
+}
+
+template <class V>
+double voxel_for(const PolylineT<V>& c, std::span<const double> radii, const GridTubeOptions& opt) {
+  check_radii(radii);
+  if (radii.empty()) throw Error("the curve has no points to make a tube of");
+  const auto [thinnest, thickest] = std::minmax_element(radii.begin(), radii.end());
+  check_between(opt.adaptivity, 0, 1, "option 'adaptivity'");
+  if (opt.voxel != 0) {
+    if (!(opt.voxel > 0) || !std::isfinite(opt.voxel) || opt.voxel > *thickest)
+      throw Error("option 'voxel' must be a positive length no larger than the largest radius " +
+                  number_text(*thickest) + ", got " + number_text(opt.voxel));
+    return opt.voxel;
+  }
+  // Coarser while over the budget, down to a quarter of the largest radius: the thickest part still round.
+  double voxel = *thinnest / 4;
+  while (voxel * 1.25 <= *thickest / 4 && round_tube_size(cones_of(c, radii, voxel), voxel) > opt.budget.left())
+    voxel *= 1.25;
+  return voxel;
+}
+
+template <class V>
+Mesh tube_on_grid(const PolylineT<V>& c, std::span<const double> radii, const GridTubeOptions& opt,
+                  Progress& progress) {
+  check_radii(radii);
+  if (!radii.empty() && std::all_of(radii.begin(), radii.end(), [&](double r) { return r == radii[0]; })) {
+    GridTubeOptions one = opt;
+    one.radius = radii[0];
+    return tube_on_grid(c, one, progress);  // one radius: capsules, as before
+  }
+  GridTubeOptions cones = opt;
+  cones.voxel = voxel_for(c, radii, opt);
+  return round_tube_on_grid(cones_of(c, radii, cones.voxel), cones, progress);
+}
+
 }  // namespace
 
 void GridTubeOptions::validate() const {
@@ -70,6 +140,20 @@ Mesh grid_tube(const Polyline3& c, const GridTubeOptions& opt, Progress& progres
 }
 Mesh grid_tube(const Polyline& c, const GridTubeOptions& opt, Progress& progress) {
   return tube_on_grid(c, opt, progress);
+}
+
+Mesh grid_tube(const Polyline3& c, std::span<const double> radii, const GridTubeOptions& opt, Progress& progress) {
+  return tube_on_grid(c, radii, opt, progress);
+}
+Mesh grid_tube(const Polyline& c, std::span<const double> radii, const GridTubeOptions& opt, Progress& progress) {
+  return tube_on_grid(c, radii, opt, progress);
+}
+
+double grid_tube_voxel(const Polyline3& c, std::span<const double> radii, const GridTubeOptions& opt) {
+  return voxel_for(c, radii, opt);
+}
+double grid_tube_voxel(const Polyline& c, std::span<const double> radii, const GridTubeOptions& opt) {
+  return voxel_for(c, radii, opt);
 }
 
 }  // namespace selfsim::print

@@ -438,11 +438,12 @@ function Volume:boundary(options) end
 
 ---@class selfsim.TubeOptions
 ---@field radius number the tube's radius in mm
----@field method? "rings"|"grid" rings on rotation-minimising frames, or capsules merged on a grid ("rings")
+---@field method? "rings"|"grid" rings on rotation-minimising frames, or round cones merged on a grid ("rings")
 ---@field sides? integer rings: sides of each ring, 3 to 256 (16)
----@field by? string rings: a point field multiplying the radius
----@field taper? number rings: with `by`, the radius is radius * taper^field
----@field voxel? number grid: the voxel size (a quarter of the radius)
+---@field by? string a point field multiplying the radius ("width": a plant's '!'); on the grid, round cones
+---@field taper? number with `by`, the radius is radius * taper^field
+---@field min_radius? number no radius below this, mm (none)
+---@field voxel? number grid: the voxel size (a quarter of the thinnest radius, coarser to fit the budget)
 ---@field adaptivity? number grid: 0 to 1 (0)
 ---@field check? selfsim.Check (true)
 
@@ -475,15 +476,26 @@ function Volume:boundary(options) end
 ---@field triangles? number the triangle budget (2,000,000)
 ---@field bed? number[] {x, y, z} mm: the printer's bed, checked when given
 ---@field voxel? number mm: the distance grid's voxel
+---@field overhang? number degrees from vertical: faces tilted down past it overhang (45, in [1, 89])
+
+---@class selfsim.PrintProblem
+---@field severity "will fail"|"may fail"|"cosmetic"
+---@field what string what and where
+---@field fix string the change that fixes it, in the recipe's terms ("thicken to 0.8 mm (thickness = 0.8) ...")
 
 ---@class selfsim.PrintReport
 ---@field passes boolean
 ---@field summary string one line
----@field findings string[] one line each
+---@field findings string[] one line each, for those that fail (will fail, may fail): "what: fix"
+---@field problems selfsim.PrintProblem[] every finding, cosmetic ones too, the most serious first
+---@field creases integer pairs of triangles where the surface touches itself (cosmetic)
+---@field specks integer sealed pieces smaller than the nozzle's spot (cosmetic)
+---@field overhang number mm² facing down past the `overhang` angle, off the bed (supports)
+---@field reused boolean this call measured nothing: the solid's earlier check (its warning's, save's) was shared
 ---@field triangles integer
 ---@field size number[] {x, y, z} mm
 ---@field closed boolean a closed 2-manifold facing outwards
----@field crossing boolean whether it crosses itself
+---@field crossing boolean whether it crosses itself (over more than the nozzle's width)
 ---@field thinnest_wall? number mm (nil when not measured)
 ---@field narrowest_gap? number mm (nil when not measured)
 ---@field wall_resolved? boolean false when the thinnest wall is finer than the grid resolves (thinnest_wall is then the bound it is under)
@@ -761,6 +773,24 @@ function solid.check(mesh, options) end
 ---@param options? selfsim.PlaceOptions
 ---@return selfsim.Mesh
 function solid.place(mesh, options) end
+
+---@class selfsim.UnionList
+---@field [integer] selfsim.Mesh a closed solid
+---@field voxel? number the grid's voxel when solids meet, mm (a quarter of the thinnest solid's box side, at most 0.2)
+---@field check? selfsim.Check (true)
+
+---One closed solid of every point of the listed solids: exact (joined as they are) when they do not meet,
+---else on an OpenVDB grid; prints which unless -q. An open mesh is refused (solid.thicken it first).
+---@param solids selfsim.UnionList
+---@return selfsim.Mesh
+function solid.union(solids) end
+
+---The solid less the others: solid.difference(a, b) or solid.difference(a, { b, c, voxel = 0.1 }). A cut
+---wholly inside `a` touching nothing is a sealed cavity (exact); cuts that meet `a` are made on a grid.
+---@param solid selfsim.Mesh
+---@param cuts selfsim.Mesh|selfsim.UnionList
+---@return selfsim.Mesh
+function solid.difference(solid, cuts) end
 
 ---@class selfsim.OrientOptions: selfsim.PlaceOptions
 ---@field face? "largest" lie on its largest flat face (the default)

@@ -17,6 +17,8 @@ const selfsim::OpenVdbTable table{
     selfsim::io::read_vdb_surface,
     selfsim::print::grid_thicken_size,
     selfsim::print::thicken_on_grid,
+    selfsim::print::round_tube_size,
+    selfsim::print::round_tube_on_grid,
 };
 
 }  // namespace

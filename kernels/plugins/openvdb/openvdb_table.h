@@ -9,6 +9,7 @@
 
 #include "kernels/io/vdb/vdb_read.h"
 #include "kernels/print/grid_thicken.h"
+#include "kernels/print/grid_tube.h"
 #include "kernels/region/level_set.h"
 #include "kernels/region/wall_grid.h"
 
@@ -26,6 +27,8 @@ struct OpenVdbTable {
   io::VdbSurface (*read_vdb_surface)(const std::filesystem::path&, const io::VdbReadOptions&);
   double (*grid_thicken_size)(const Mesh&, const print::GridThickenOptions&);
   Mesh (*thicken_on_grid)(const Mesh&, const print::GridThickenOptions&, Progress&);
+  double (*round_tube_size)(const std::vector<print::RoundSegment>&, double);
+  Mesh (*round_tube_on_grid)(const std::vector<print::RoundSegment>&, const print::GridTubeOptions&, Progress&);
 };
 
 inline constexpr const char* openvdb_plugin = "selfsim_openvdb.so";

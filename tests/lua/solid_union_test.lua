@@ -1,0 +1,52 @@
+-- One solid from several (issue 40): solids apart are joined exactly (their triangles summed); a rim on a
+-- base plate, which meet, become one closed solid on a grid; a cut through a plate makes a hole; an open
+-- surface is refused. And a plant's tube on the grid tapers by its `width`: thinner at the tips.
+local function box(x0, y0, z0, x1, y1, z1)
+  return mesh { points = { { x0, y0, z0 }, { x1, y0, z0 }, { x1, y1, z0 }, { x0, y1, z0 },
+                           { x0, y0, z1 }, { x1, y0, z1 }, { x1, y1, z1 }, { x0, y1, z1 } },
+                triangles = { { 1, 3, 2 }, { 1, 4, 3 }, { 5, 6, 7 }, { 5, 7, 8 }, { 1, 2, 6 }, { 1, 6, 5 },
+                              { 2, 3, 7 }, { 2, 7, 6 }, { 3, 4, 8 }, { 3, 8, 7 }, { 4, 1, 5 }, { 4, 5, 8 } } }
+end
+
+-- Apart: exact, the triangles of both.
+local two = solid.union { box(0, 0, 0, 10, 10, 10), box(20, 0, 0, 30, 10, 10) }
+assert(two:faces() == 24, "two boxes apart joined: " .. two:faces() .. " triangles")
+
+-- A rim (a ring tube) on a base plate: they meet, so the grid; one closed solid with the plate's footprint.
+local ring = {}
+for i = 0, 64 do
+  local a = 2 * math.pi * i / 64
+  ring[#ring + 1] = { 12 * math.cos(a), 12 * math.sin(a), 2.5 }
+end
+local rim = solid.tube(polyline(ring), { radius = 1.2, method = "grid", check = false })
+local base = box(-15, -15, 0, 15, 15, 3)
+local coaster = solid.union { base, rim, voxel = 0.25 }
+local r = solid.check(coaster)
+assert(r.closed, "the union is closed: " .. r.summary)
+assert(math.abs(r.size[1] - 30) < 0.5 and math.abs(r.size[3] - 3.7) < 0.3,
+       "the union's size " .. r.size[1] .. " x " .. r.size[2] .. " x " .. r.size[3])
+
+-- A hole through the plate: still closed.
+local holed = solid.difference(base, { box(-2, -2, -1, 2, 2, 4), voxel = 0.25 })
+assert(solid.check(holed).closed, "the holed plate is closed")
+
+-- An open surface is refused, naming it.
+local sheet = mesh { points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, triangles = { { 1, 2, 3 } } }
+local ok, err = pcall(solid.union, { base, sheet })
+assert(not ok and err:find("solid 2 is not closed", 1, true) and err:find("solid.thicken", 1, true), err)
+
+-- A plant whose '!' widths shrink by 0.6 a branching, as a grid tube by width: its thinnest wall is near
+-- the tips' diameter (0.4 mm), well under what one radius at the trunk's (1.5 mm) gives (the check reads
+-- walls up to 1.2 mm).
+local plant = lsystem {
+  axiom = "A(10)",
+  rules = { "A(w) -> !(w) F [ +(30) A(w * 0.6) ] [ -(30) A(w * 0.6) ]" },
+  angle = 30, start_angle = 90,
+}
+local c = solid.size(plant:curve(5), 40) -- its widths scaled with it: 10 becomes about 62
+local tapered = solid.tube(c, { radius = 0.025, by = "width", method = "grid", check = false })
+local uniform = solid.tube(c, { radius = 1.5, method = "grid", check = false })
+local thin = solid.check(tapered).thinnest_wall
+local thick = solid.check(uniform).thinnest_wall
+assert(thick >= 1.2, "one radius of 1.5 mm: walls of " .. thick)
+assert(thin < 0.6, "the tapered plant's thinnest wall is " .. thin)

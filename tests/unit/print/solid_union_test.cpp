@@ -1,0 +1,125 @@
+// One solid from several: solids apart are joined exactly (their triangles, nothing remeshed), one inside
+// another is dropped, a cut inside a solid is a sealed cavity; solids that meet are combined on a grid into
+// one closed solid of the right volume; a cut through a solid makes a hole.
+#include "kernels/print/solid_union.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "kernels/base/error.h"
+#include "kernels/geom/mesh_check.h"
+#include "kernels/geom/mesh_intersections.h"
+#include "kernels/print/grid_tube.h"
+#include "kernels/region/box_mesh.h"
+
+using namespace selfsim;
+using namespace selfsim::print;
+
+namespace {
+
+UnionResult united(const std::vector<Mesh>& parts, UnionOptions opt = {}) {
+  std::vector<const Mesh*> p;
+  for (const Mesh& m : parts) p.push_back(&m);
+  return solid_union(p, opt, no_progress());
+}
+
+UnionResult cut(const Mesh& from, const std::vector<Mesh>& cuts, UnionOptions opt = {}) {
+  std::vector<const Mesh*> p;
+  for (const Mesh& m : cuts) p.push_back(&m);
+  return solid_difference(from, p, opt, no_progress());
+}
+
+void expect_closed(const Mesh& m) {
+  const MeshTopology t = mesh_topology(m);
+  EXPECT_TRUE(t.closed()) << t.first_problem;
+  EXPECT_GT(enclosed_volume(m), 0);
+  EXPECT_FALSE(first_intersection(m, no_progress()));
+}
+
+}  // namespace
+
+TEST(SolidUnion, SolidsApartAreJoinedExactly) {
+  const std::vector<Mesh> boxes{box_mesh({0, 0, 0}, {2, 2, 2}), box_mesh({5, 0, 0}, {6, 1, 1}),
+                                box_mesh({0, 5, 0}, {1, 6, 3})};
+  const UnionResult r = united(boxes);
+  EXPECT_TRUE(r.exact);
+  EXPECT_EQ(r.how, "exact (3 disjoint solids)");
+  EXPECT_EQ(r.solid.triangles.size(), 36u);  // the sum: nothing remeshed
+  expect_closed(r.solid);
+  EXPECT_NEAR(enclosed_volume(r.solid), 8 + 1 + 3, 1e-9);
+  EXPECT_EQ(mesh_topology(r.solid).components, 3u);
+}
+
+TEST(SolidUnion, OneInsideAnotherIsDropped) {
+  Mesh inward = box_mesh({1, 1, 1}, {2, 2, 2});
+  for (Triangle& t : inward.triangles) std::swap(t[1], t[2]);  // either facing is taken
+  const UnionResult r = united({inward, box_mesh({0, 0, 0}, {4, 4, 4})});
+  EXPECT_TRUE(r.exact);
+  EXPECT_EQ(r.how, "exact (1 solid, 1 inside another dropped)");
+  EXPECT_EQ(r.solid.triangles.size(), 12u);
+  EXPECT_NEAR(enclosed_volume(r.solid), 64, 1e-9);
+}
+
+TEST(SolidUnion, ARimAndABaseBecomeOneClosedSolid) {
+  // A plate 30 x 30 x 2 mm and a ring tube (radius 1 mm) lying on it, its axis 1.5 mm up: a quarter of the
+  // ring's section sinks into the plate.
+  const Mesh base = box_mesh({-15, -15, 0}, {15, 15, 2});
+  Polyline3 ring;
+  const int n = 96;
+  const double R = 10, pi = std::numbers::pi;
+  for (int i = 0; i <= n; ++i) ring.points.push_back({R * std::cos(2 * pi * i / n), R * std::sin(2 * pi * i / n), 2});
+  ring.path_ends.push_back(ring.points.size());
+  const Mesh rim = grid_tube(ring, {.radius = 1, .voxel = 0.1}, no_progress());
+  const UnionResult r = united({base, rim});
+  EXPECT_FALSE(r.exact);
+  EXPECT_EQ(r.how, "on a 0.2 mm grid (solid 1 and solid 2 meet)");
+  expect_closed(r.solid);
+  const MeshTopology t = mesh_topology(r.solid);
+  EXPECT_EQ(t.components, 1u);
+  EXPECT_EQ(t.euler(), 2);  // one ball's topology: the ring's hole is filled by the plate
+  // The sum less the overlap: the half of the ring's volume inside the plate (its axis on the plate's top).
+  const double ring_volume = enclosed_volume(rim), want = 30 * 30 * 2 + ring_volume / 2;
+  EXPECT_NEAR(enclosed_volume(r.solid), want, 0.01 * want);
+}
+
+TEST(SolidUnion, ACutThroughMakesAHoleAndOneInsideACavity) {
+  const Mesh plate = box_mesh({0, 0, 0}, {10, 10, 2});
+  const UnionResult hole = cut(plate, {box_mesh({4, 4, -1}, {6, 6, 3})}, {.voxel = 0.1});
+  EXPECT_FALSE(hole.exact);
+  EXPECT_EQ(hole.how, "on a 0.1 mm grid (the solid and cut 1 meet)");
+  expect_closed(hole.solid);
+  EXPECT_EQ(mesh_topology(hole.solid).euler(), 0);  // a hole through: a torus's topology
+  EXPECT_NEAR(enclosed_volume(hole.solid), 200 - 8, 0.01 * 192);
+  // A cut wholly inside, touching nothing: the plate with the cut's triangles turned in.
+  const UnionResult cavity = cut(plate, {box_mesh({4, 4, 0.5}, {6, 6, 1.5})});
+  EXPECT_TRUE(cavity.exact);
+  EXPECT_EQ(cavity.how, "exact (1 sealed cavity)");
+  EXPECT_EQ(cavity.solid.triangles.size(), 24u);
+  EXPECT_NEAR(enclosed_volume(cavity.solid), 200 - 4, 1e-9);
+  expect_closed(cavity.solid);
+  // A cut apart takes nothing.
+  const UnionResult apart = cut(plate, {box_mesh({20, 0, 0}, {21, 1, 1})});
+  EXPECT_TRUE(apart.exact);
+  EXPECT_EQ(apart.solid.triangles.size(), 12u);
+}
+
+TEST(SolidUnion, RefusesOpenSolidsAndEmptyResults) {
+  Mesh open = box_mesh({0, 0, 0}, {1, 1, 1});
+  open.triangles.pop_back();
+  try {
+    united({box_mesh({0, 0, 0}, {1, 1, 1}), open});
+    FAIL() << "an open mesh was taken";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("solid 2 is not closed"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("solid.thicken"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(cut(box_mesh({1, 1, 1}, {2, 2, 2}), {box_mesh({0, 0, 0}, {4, 4, 4})}), Error);
+  EXPECT_THROW(united({}), Error);
+  // Solids that meet, at a grid over the budget: refused before any work.
+  UnionOptions small;
+  small.budget.limit = 1000;
+  EXPECT_THROW(united({box_mesh({0, 0, 0}, {2, 2, 2}), box_mesh({1, 1, 1}, {3, 3, 3})}, small), BudgetError);
+}
