@@ -35,18 +35,18 @@ local sheet = mesh { points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, triangl
 local ok, err = pcall(solid.union, { base, sheet })
 assert(not ok and err:find("solid 2 is not closed", 1, true) and err:find("solid.thicken", 1, true), err)
 
--- A plant whose '!' widths shrink by 0.6 a branching, as a grid tube by width: its thinnest wall is near
--- the tips' diameter (0.4 mm), well under what one radius at the trunk's (1.5 mm) gives (the check reads
--- walls up to 1.2 mm).
+-- A plant whose '!' widths shrink by 0.6 a branching (radius 1.55 mm at the trunk, 0.2 mm at the tips), as a
+-- grid tube by width: the tips, which reach out to the sides, stick out past the curve by their own radius,
+-- not the trunk's; one radius all along sticks out 1.55 mm each side.
 local plant = lsystem {
   axiom = "A(10)",
   rules = { "A(w) -> !(w) F [ +(30) A(w * 0.6) ] [ -(30) A(w * 0.6) ]" },
   angle = 30, start_angle = 90,
 }
-local c = solid.size(plant:curve(5), 40) -- its widths scaled with it: 10 becomes about 62
+local c = solid.size(plant:curve(5), 40) -- 40 mm wide; its widths scaled with it: 10 becomes about 62
 local tapered = solid.tube(c, { radius = 0.025, by = "width", method = "grid", check = false })
-local uniform = solid.tube(c, { radius = 1.5, method = "grid", check = false })
-local thin = solid.check(tapered).thinnest_wall
-local thick = solid.check(uniform).thinnest_wall
-assert(thick >= 1.2, "one radius of 1.5 mm: walls of " .. thick)
-assert(thin < 0.6, "the tapered plant's thinnest wall is " .. thin)
+local uniform = solid.tube(c, { radius = 1.55, method = "grid", check = false })
+local wide = solid.check(tapered, { voxel = 0.2 }).size[1]
+local wide_uniform = solid.check(uniform, { voxel = 0.2 }).size[1]
+assert(wide_uniform > 40 + 2 * 1.5, "one radius: " .. wide_uniform .. " mm wide")
+assert(wide < 40 + 2 * 0.3, "the tapered plant is " .. wide .. " mm wide: its tips are thicker than 0.3 mm")
