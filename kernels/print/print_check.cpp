@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -12,6 +13,7 @@
 #include "kernels/base/count_text.h"
 #include "kernels/base/error.h"
 #include "kernels/geom/point_text.h"
+#include "kernels/geom/triangle_bvh.h"
 #include "kernels/print/print_size.h"
 #include "kernels/print/sharp_edges.h"
 #include "kernels/print/wall_rays.h"
@@ -36,8 +38,11 @@ struct Samples {
   std::vector<double> area;         // mm² of its triangle each point stands for
 };
 
+double squared(Vec3 v) { return dot(v, v); }
+
 Vec3 incentre(Vec3 a, Vec3 b, Vec3 c) {
-  const double la = norm(c - b), lb = norm(a - c), lc = norm(b - a), sum = la + lb + lc;
+  const double la = std::sqrt(squared(c - b)), lb = std::sqrt(squared(a - c)), lc = std::sqrt(squared(b - a));
+  const double sum = la + lb + lc;
   return sum > 0 ? (1 / sum) * (la * a + lb * b + lc * c) : a;
 }
 
@@ -45,9 +50,10 @@ Vec3 incentre(Vec3 a, Vec3 b, Vec3 c) {
 // down to `spacing`, each one's incentre passed to `take` with its share of the area (halves halve it).
 template <class Take>
 std::size_t halves(Vec3 a, Vec3 b, Vec3 c, double share, double spacing, const Take& take) {
-  const double ab = norm(b - a), bc = norm(c - b), ca = norm(a - c);
+  // Squared lengths: the same order and comparisons, without a square root each.
+  const double ab = squared(b - a), bc = squared(c - b), ca = squared(a - c);
   const double longest = std::max({ab, bc, ca});
-  if (!(longest > spacing) || !std::isfinite(longest)) {
+  if (!(longest > spacing * spacing) || !std::isfinite(longest)) {
     take(incentre(a, b, c), share);
     return 1;
   }
@@ -61,9 +67,9 @@ std::size_t halves(Vec3 a, Vec3 b, Vec3 c, double share, double spacing, const T
 // How many halves of abc sampling down to `spacing` makes: exactly, or some number over `limit` once the
 // count passes it (counting no further).
 double count_halves(Vec3 a, Vec3 b, Vec3 c, double spacing, double limit) {
-  const double ab = norm(b - a), bc = norm(c - b), ca = norm(a - c);
+  const double ab = squared(b - a), bc = squared(c - b), ca = squared(a - c);
   const double longest = std::max({ab, bc, ca});
-  if (!(longest > spacing) || !std::isfinite(longest)) return 1;
+  if (!(longest > spacing * spacing) || !std::isfinite(longest)) return 1;
   if (limit < 2) return 2;  // halved: two at least
   if (ab < longest && bc == longest) return count_halves(b, c, a, spacing, limit);
   if (ab < longest) return count_halves(c, a, b, spacing, limit);
@@ -73,14 +79,23 @@ double count_halves(Vec3 a, Vec3 b, Vec3 c, double spacing, double limit) {
   return first + count_halves(m, b, c, spacing, limit - first);
 }
 
-// How many points sampling every triangle down to `spacing` takes (or a number over `limit`).
+// How many points sampling every triangle down to `spacing` takes (or a number over `limit`). In parallel,
+// chunks of triangles adding to one total, all stopping once it passes the limit.
 double sample_count(const Mesh& m, double spacing, double limit) {
-  double n = 0;
-  for (const Triangle& t : m.triangles) {
-    n += count_halves(m.points[t[0]], m.points[t[1]], m.points[t[2]], spacing, limit - n);
-    if (n > limit) break;
-  }
-  return n;
+  std::atomic<double> total{0};
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m.faces(), 8192), [&](const tbb::blocked_range<std::size_t>& r) {
+    double n = 0;
+    for (std::size_t f = r.begin(); f != r.end(); ++f) {
+      if (f % 1024 == 0 && total.load(std::memory_order_relaxed) + n > limit) break;
+      const Triangle& t = m.triangles[f];
+      n += count_halves(m.points[t[0]], m.points[t[1]], m.points[t[2]], spacing, limit - n);
+      if (n > limit) break;
+    }
+    double seen = total.load();
+    while (!total.compare_exchange_weak(seen, seen + n)) {
+    }
+  });
+  return total.load();
 }
 
 // Every triangle's points (the incentres of its halves), before those beside a sharp edge are left out.
@@ -140,22 +155,64 @@ void clear_of_edges(const Mesh& m, Samples& s, double inset) {
   s.area.resize(kept);
 }
 
+// The solid's closed shells (its pieces joined across edges): each face's, and each shell's enclosed volume
+// and box.
+struct Shells {
+  std::vector<std::uint32_t> of_face;
+  std::vector<double> volume;
+  std::vector<BBox3> box;
+};
+
+Shells shells_of(const Mesh& m, Progress& progress) {
+  Shells s;
+  s.of_face = face_components(m, progress);
+  const BBox3 b = m.bbox();
+  const Vec3 o = 0.5 * (b.min + b.max);
+  for (std::size_t f = 0; f < m.faces(); ++f) {
+    const std::uint32_t k = s.of_face[f];
+    if (k >= s.volume.size()) {
+      s.volume.resize(k + 1, 0);
+      s.box.resize(k + 1);
+    }
+    s.volume[k] += volume_term(m, m.triangles[f], o);
+    for (std::uint32_t v : m.triangles[f]) s.box[k].add(m.points[v]);
+  }
+  return s;
+}
+
 // Faces of closed shells that face inwards inside the solid: a sealed cavity's walls (their enclosed volume
 // is negative). The distance grid reads a cavity as empty (winding_sign.h), so a ray from a cavity's wall
 // would read its width as a gap. Those gaps are not measured (the cavity is empty space a printer walls in,
 // not a gap that fuses).
-std::vector<char> cavity_faces(const Mesh& m, Progress& progress) {
-  const std::vector<std::uint32_t> piece = face_components(m, progress);
-  std::vector<double> volume;
-  const BBox3 b = m.bbox();
-  const Vec3 o = 0.5 * (b.min + b.max);
-  for (std::size_t f = 0; f < m.faces(); ++f) {
-    if (piece[f] >= volume.size()) volume.resize(piece[f] + 1, 0);
-    volume[piece[f]] += volume_term(m, m.triangles[f], o);
-  }
+std::vector<char> cavity_faces(const Mesh& m, const Shells& shells) {
   std::vector<char> cavity(m.faces());
-  for (std::size_t f = 0; f < m.faces(); ++f) cavity[f] = volume[piece[f]] < 0;
+  for (std::size_t f = 0; f < m.faces(); ++f) cavity[f] = shells.volume[shells.of_face[f]] < 0;
   return cavity;
+}
+
+// Shells that may lie partly inside another: all when the solid crosses itself, else those whose box
+// meets another solid (not cavity) shell's box. Their points are tested before they are measured
+// (ExactRays::may_be_buried); a solid of one shell that does not cross itself tests none.
+std::vector<char> overlapping_shells(const Shells& shells, bool crosses) {
+  const std::size_t n = shells.volume.size();
+  std::vector<char> out(n, crosses ? 1 : 0);
+  if (crosses || n < 2) return out;
+  // Sorted by the boxes' lowest x, each box is compared with those that start before it ends.
+  std::vector<std::uint32_t> order(n);
+  for (std::uint32_t k = 0; k < n; ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return shells.box[a].min.x < shells.box[b].min.x; });
+  const auto meet = [](const BBox3& a, const BBox3& b) {
+    return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y && a.min.z <= b.max.z &&
+           b.min.z <= a.max.z;
+  };
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n && shells.box[order[j]].min.x <= shells.box[order[i]].max.x; ++j) {
+      const std::uint32_t a = order[i], b = order[j];
+      if (!meet(shells.box[a], shells.box[b])) continue;
+      if (shells.volume[b] > 0) out[a] = 1;
+      if (shells.volume[a] > 0) out[b] = 1;
+    }
+  return out;
 }
 
 // A point's value: the area-weighted mean of its triangles' (for ParaView's point colouring).
@@ -205,12 +262,30 @@ std::vector<double> at_faces(const Mesh& m, const Samples& s, const std::vector<
   return out;
 }
 
-// The walls and gaps, on the distance grid of m (its parts as OpenVDB meshes them into one level set).
-void measure(const Mesh& m, const PointBudget& budget, Progress& progress, PrintReport& r, Mesh* marked) {
-  const double smallest = std::min(r.rules.min_wall, r.rules.min_gap);
-  r.voxel = r.rules.voxel > 0 ? r.rules.voxel : smallest / 3;
-  r.wall_cap = 1.5 * r.rules.min_wall;
-  r.gap_cap = 1.5 * r.rules.min_gap;
+// How many points to measure at (r.spacing apart, set here), with `held` budget points already taken by
+// what measures them. Points every `spacing` on each triangle: the nozzle's width, or a voxel if wider (a thin
+// spot that fits between points is under about the nozzle's spot, no finding), sparser when that would be
+// more points than the budget allows (each point and its rays' readings hold about 80 bytes, five budget
+// points) or 2 million (the triangle budget: the time a slicer's finest mesh takes): the summary then says
+// how sparse. A mesh gets at least a point on every triangle, as many as it already holds.
+double plan_points(const Mesh& m, double held, const PointBudget& budget, PrintReport& r) {
+  r.spacing = std::max(r.voxel, r.rules.nozzle);
+  const double most = std::max(static_cast<double>(m.faces()), std::min(2e6, 0.2 * (budget.left() - held)));
+  double n = sample_count(m, r.spacing, most);
+  if (n > most) {
+    // Halves no longer than s have at most sqrt(3)/4 s² of area each: any finer spacing would surely make
+    // more than `most`. From there a quarter wider at a time.
+    r.spacing = std::max(r.spacing, std::sqrt(r.area / (0.433 * most)));
+    while ((n = sample_count(m, r.spacing, most)) > most) r.spacing *= 1.25;
+  }
+  return n;
+}
+
+// The walls and gaps on the distance grid of m (its parts as OpenVDB meshes them into one level set), at the
+// voxel the rules ask for: walls and gaps read within its interpolation error.
+bool measure_on_grid(const Mesh& m, const PointBudget& budget, Progress& progress, PrintReport& r, Samples& s,
+                     std::vector<double>& wall, std::vector<double>& gap) {
+  r.voxel = r.rules.voxel;
   Volume v;
   v.kind = Volume::Kind::mesh;
   // m itself, not a copy: the grid reads it while it is built and keeps nothing of it (an owner-less
@@ -228,41 +303,78 @@ void measure(const Mesh& m, const PointBudget& budget, Progress& progress, Print
   if (!(across + 64 < 1048576.0)) {
     r.skipped = "walls and gaps not measured: the solid is " + count_text(across) + " voxels of " + mm_text(r.voxel) +
                 " across, more than a distance grid holds (sizes are millimetres)";
-    return;
+    return false;
   }
   const double size = WallGrid::size(v, r.voxel, depth, outside);
   if (size > budget.left()) {
     r.skipped = "walls and gaps not measured: the distance grid at a " + mm_text(r.voxel) + " voxel would take " +
                 count_text(size) + " points' worth of memory, over the limit (a larger voxel: solid.check's " +
                 "'voxel', info --print's --voxel; or a larger --max-points)";
-    return;
+    return false;
   }
-  // Points every `spacing` on each triangle: the nozzle's width, or a voxel if wider (a thin spot that fits
-  // between points is under about the nozzle's spot, no finding), sparser when that would be more points
-  // than the budget allows (each point and its rays' readings hold about 80 bytes, five budget points) or
-  // 2 million (the triangle budget: the time a slicer's finest mesh takes): the summary then says how
-  // sparse. A mesh gets at least a point on every triangle, as many as it already holds.
-  r.spacing = std::max(r.voxel, r.rules.nozzle);
-  const double most = std::max(static_cast<double>(m.faces()), std::min(2e6, 0.2 * (budget.left() - size)));
-  double n = sample_count(m, r.spacing, most);
-  if (n > most) {
-    // Halves no longer than s have at most sqrt(3)/4 s² of area each: any finer spacing would surely make
-    // more than `most`. From there a quarter wider at a time.
-    r.spacing = std::max(r.spacing, std::sqrt(r.area / (0.433 * most)));
-    while ((n = sample_count(m, r.spacing, most)) > most) r.spacing *= 1.25;
-  }
+  const double n = plan_points(m, size, budget, r);
   ProgressStage build(progress, 0.3, 0.7);
   const WallGrid grid(v, r.voxel, depth, budget, build, outside);
   r.error = grid.error();
-  Samples s = samples_of(m, r.inward, r.spacing, n);
+  s = samples_of(m, r.inward, r.spacing, n);
   clear_of_edges(m, s, r.voxel);
-  std::vector<double> wall(s.points.size()), gap(s.points.size());
+  wall.resize(s.points.size());
+  gap.resize(s.points.size());
   ProgressStage rays(progress, 0.7, 1);
   measure_rays(
       s.points, s.normals, [&](std::span<const Vec3> p, std::span<double> out) { grid.clearances(p, out); },
       {.step = r.voxel / 2, .wall_cap = r.wall_cap, .gap_cap = r.gap_cap}, wall, gap, rays);
+  return true;
+}
+
+// The walls and gaps by exact rays against m's triangles (a TriangleBvh): no grid, no interpolation error
+// (r.error stays 0); r.voxel is the rays' rounding width (a ten-billionth of the solid's size: crossings
+// closer than that are one, and none is counted nearer than that to a ray's start), the finest reading they
+// resolve. No point is left out beside a sharp edge: a ray from beside one runs along the face beyond it
+// without crossing it, exactly.
+bool measure_exactly(const Mesh& m, const Shells& shells, const PointBudget& budget, Progress& progress, PrintReport& r,
+                     Samples& s, std::vector<double>& wall, std::vector<double>& gap) {
+  const Vec3 extent = r.box.size();
+  r.voxel = 1e-10 * std::max({extent.x, extent.y, extent.z});
+  const double size = TriangleBvh::size(m.faces());
+  if (size > budget.left()) {
+    r.skipped = "walls and gaps not measured: the triangles' search tree would take " + count_text(size) +
+                " points' worth of memory, over the limit (a larger --max-points)";
+    return false;
+  }
+  const double n = plan_points(m, size, budget, r);
+  ProgressStage build(progress, 0.3, 0.4);
+  const TriangleBvh bvh(m, build);
+  s = samples_of(m, r.inward, r.spacing, n);
+  wall.resize(s.points.size());
+  gap.resize(s.points.size());
+  ExactRays how{.bvh = &bvh, .faces = s.face, .tmin = r.voxel, .orientation = r.inward ? -1.0 : 1.0};
+  const std::vector<char> overlapping = overlapping_shells(shells, r.crossing.has_value());
+  std::vector<char> buried;
+  if (std::find(overlapping.begin(), overlapping.end(), 1) != overlapping.end()) {
+    buried.resize(s.points.size());
+    for (std::size_t i = 0; i < buried.size(); ++i) buried[i] = overlapping[shells.of_face[s.face[i]]];
+    how.may_be_buried = buried;
+    how.far = 2 * norm(extent) + 1;
+  }
+  ProgressStage rays(progress, 0.4, 1);
+  measure_rays_exact(s.points, s.normals, how, {.step = 1, .wall_cap = r.wall_cap, .gap_cap = r.gap_cap}, wall, gap,
+                     rays);
+  return true;
+}
+
+// The walls and gaps: exactly, or on a distance grid when the rules give a voxel.
+void measure(const Mesh& m, const PointBudget& budget, Progress& progress, PrintReport& r, Mesh* marked) {
+  r.wall_cap = 1.5 * r.rules.min_wall;
+  r.gap_cap = 1.5 * r.rules.min_gap;
+  Samples s;
+  std::vector<double> wall, gap;
+  const Shells shells = shells_of(m, progress);
+  const bool measured = r.rules.voxel > 0 ? measure_on_grid(m, budget, progress, r, s, wall, gap)
+                                          : measure_exactly(m, shells, budget, progress, r, s, wall, gap);
+  if (!measured) return;
   if (!r.inward) {
-    const std::vector<char> cavity = cavity_faces(m, progress);
+    const std::vector<char> cavity = cavity_faces(m, shells);
     for (std::size_t i = 0; i < gap.size(); ++i)
       if (cavity[s.face[i]]) gap[i] = r.gap_cap;
   }

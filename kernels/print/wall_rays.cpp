@@ -126,4 +126,126 @@ void measure_rays(std::span<const Vec3> points, std::span<const Vec3> normals, c
   if (progress.cancelled()) throw Cancelled();
 }
 
+namespace {
+
+// The crossings of o + t·d, tmin < t <= tmax, but the point's own triangle's, by distance; facings turned to
+// the solid's outward side.
+void sorted_crossings(const ExactRays& how, Vec3 o, Vec3 d, std::uint32_t own, double tmax,
+                      std::vector<TriangleBvh::Hit>& hits) {
+  hits.clear();
+  how.bvh->crossings(o, d, how.tmin, tmax, hits);
+  std::erase_if(hits, [own](const TriangleBvh::Hit& h) { return h.face == own; });
+  for (TriangleBvh::Hit& h : hits) h.facing *= how.orientation;
+  std::sort(hits.begin(), hits.end(), [](const auto& a, const auto& b) { return a.t < b.t; });
+}
+
+// Both rays of a point at once, one search of the tree along the line through it: the crossings inwards (along
+// -d, up to wall_cap) into `in`, those outwards (along d, up to gap_cap) into `out`, each as sorted_crossings
+// gives them.
+void both_ways(const ExactRays& how, Vec3 o, Vec3 d, std::uint32_t own, const RayLimits& limits,
+               std::vector<TriangleBvh::Hit>& all, std::vector<TriangleBvh::Hit>& in,
+               std::vector<TriangleBvh::Hit>& out) {
+  all.clear();
+  in.clear();
+  out.clear();
+  how.bvh->crossings(o, -1.0 * d, -limits.gap_cap, limits.wall_cap, all);
+  for (const TriangleBvh::Hit& h : all) {
+    if (h.face == own) continue;
+    if (h.t > how.tmin) in.push_back({h.t, h.face, h.facing * how.orientation});
+    if (h.t < -how.tmin) out.push_back({-h.t, h.face, -h.facing * how.orientation});
+  }
+  const auto by_t = [](const auto& a, const auto& b) { return a.t < b.t; };
+  std::sort(in.begin(), in.end(), by_t);
+  std::sort(out.begin(), out.end(), by_t);
+}
+
+// Calls step(t, change, facing) for each place along the sorted hits: change +1 into the solid, -1 out of it,
+// facing the mean cosine of the triangles that made the change; until step returns true.
+template <class Step>
+void places(const std::vector<TriangleBvh::Hit>& hits, double tolerance, const Step& step) {
+  for (std::size_t i = 0; i < hits.size();) {
+    // The crossings at this distance: one place on the surface (an edge or vertex reports each triangle
+    // there). More entering than leaving is one step in, more leaving one step out, as many a graze.
+    std::size_t j = i, in = 0, out = 0;
+    double in_facing = 0, out_facing = 0;
+    for (; j < hits.size() && hits[j].t - hits[i].t <= tolerance; ++j)
+      if (hits[j].facing < 0) {
+        ++in;
+        in_facing += hits[j].facing;
+      } else {
+        ++out;
+        out_facing += hits[j].facing;
+      }
+    const double t = hits[i].t;
+    i = j;
+    if (in == out) continue;
+    if (in > out ? step(t, 1, in_facing / static_cast<double>(in)) : step(t, -1, out_facing / static_cast<double>(out)))
+      return;
+  }
+}
+
+// One exact reading along a ray, from its sorted crossings: where the winding number, from `start`, first
+// reaches 0 (a wall, start 1) or rises above 0 (a gap, start 0); the cap when it does not within the cap, or
+// when the triangles crossed there do not face the ray as `facing` asks.
+double exact_reading(const std::vector<TriangleBvh::Hit>& hits, double tolerance, double cap, int start,
+                     double facing) {
+  int winding = start;
+  double out = cap;
+  places(hits, tolerance, [&](double t, int change, double cosine) {
+    winding += change;
+    if (start == 1 && winding == 0) {  // out of the solid: the far side of the wall, facing along the ray
+      out = cosine >= facing ? t : cap;
+      return true;
+    }
+    if (start == 0 && winding == 1) {  // into the solid: another part, facing back
+      out = -cosine >= facing ? t : cap;
+      return true;
+    }
+    return false;
+  });
+  return out;
+}
+
+// The winding number just outside a face at o (outward d): what the crossings out to `far` leave behind.
+int outside_winding(const ExactRays& how, Vec3 o, Vec3 d, std::uint32_t own, std::vector<TriangleBvh::Hit>& hits) {
+  sorted_crossings(how, o, d, own, how.far, hits);
+  int winding = 0;  // far away: outside; each way out of the solid met going there was a way into it before
+  places(hits, how.tmin, [&](double, int change, double) {
+    winding -= change;
+    return false;
+  });
+  return winding;
+}
+
+}  // namespace
+
+void measure_rays_exact(std::span<const Vec3> points, std::span<const Vec3> normals, const ExactRays& how,
+                        const RayLimits& limits, std::span<double> wall, std::span<double> gap, Progress& progress) {
+  if (how.bvh == nullptr || !(limits.wall_cap > 0) || !(limits.gap_cap > 0) || !(how.tmin >= 0) ||
+      how.faces.size() != points.size() || !(how.may_be_buried.empty() || how.may_be_buried.size() == points.size()))
+    throw Error("internal error: measure_rays_exact needs a tree, positive caps and a face for each point");
+  const std::size_t n = points.size();
+  const std::size_t chunks = (n + chunk - 1) / chunk;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks, 1), [&](const tbb::blocked_range<std::size_t>& r) {
+    std::vector<TriangleBvh::Hit> hits, in, out;
+    for (std::size_t c = r.begin(); c != r.end(); ++c) {
+      if (progress.cancelled()) return;
+      for (std::size_t i = c * chunk; i < std::min(n, (c + 1) * chunk); ++i) {
+        const Vec3 p = points[i], d = normals[i];
+        const std::uint32_t own = how.faces[i];
+        if (d == Vec3{} ||
+            (!how.may_be_buried.empty() && how.may_be_buried[i] && outside_winding(how, p, d, own, hits) > 0)) {
+          wall[i] = limits.wall_cap;
+          gap[i] = limits.gap_cap;
+          continue;
+        }
+        both_ways(how, p, d, own, limits, hits, in, out);
+        wall[i] = exact_reading(in, how.tmin, limits.wall_cap, 1, limits.wall_facing);
+        gap[i] = exact_reading(out, how.tmin, limits.gap_cap, 0, limits.gap_facing);
+      }
+    }
+  });
+  if (progress.cancelled()) throw Cancelled();
+}
+
 }  // namespace selfsim::print

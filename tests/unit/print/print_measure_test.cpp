@@ -1,7 +1,8 @@
 // What the print check measures is what is there: gaps narrower than a few voxels read their width
 // (OpenVDB's own sign fill closed them: two slabs 0.2 mm apart read "under 0.07 mm"), and a coarse CAD
 // file's faces are measured all over, not at one point each (a 20 degree wedge of 8 triangles passed
-// although a strip of it 2.3 mm wide is thinner than 0.8 mm).
+// although a strip of it 2.3 mm wide is thinner than 0.8 mm). Without a voxel the rays are exact (a
+// TriangleBvh): readings are the widths to rounding; with one, the grid's tolerances hold.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <numbers>
 #include <utility>
 
+#include "kernels/geom/triangle_bvh.h"
 #include "kernels/print/print_check.h"
 #include "kernels/region/box_mesh.h"
 #include "kernels/region/volume.h"
@@ -120,25 +122,31 @@ TEST(PrintMeasure, TheVerdictDoesNotDependOnTessellation) {
 }
 
 TEST(PrintMeasure, AWallOrGapTooThinToResolveSaysATrueBound) {
-  // Slabs and gaps of 0.08 to 0.12 mm read "under 0.07 mm": a bound they are not under. Whatever is said
-  // holds: the width measured (within a fifth of a voxel), or a bound at least the width.
-  for (const double width : {0.03, 0.08, 0.10, 0.12, 0.15, 0.2}) {
-    const PrintReport slab =
-        check_print(box_mesh({0, 0, 0}, {10, 10, width}), PrintRules{}, PointBudget{}, no_progress());
-    const PrintReport gap =
-        check_print(joined(box_mesh({0, 0, 0}, {10, 10, 2}), box_mesh({0, 0, 2 + width}, {10, 10, 4})), PrintRules{},
-                    PointBudget{}, no_progress());
-    for (const auto& [r, spot] : {std::pair{&slab, &slab.wall}, std::pair{&gap, &gap.gap}}) {
-      if (r->summary().find("under") != std::string::npos) {
-        EXPECT_TRUE(r->summary().find(r->unresolved()) != std::string::npos) << width << ": " << r->summary();
-        EXPECT_GE(2 * r->voxel, width) << r->summary();
-      } else {
-        EXPECT_NEAR(spot->value, width, r->voxel / 5) << width << ": " << r->summary();
+  // On a grid (a voxel asked for), slabs and gaps of 0.08 to 0.12 mm read "under 0.07 mm": a bound they are
+  // not under. Whatever is said holds: the width measured (within a fifth of a voxel), or a bound at least
+  // the width. By exact rays (no voxel) every width reads itself, to rounding.
+  PrintRules on_grid;
+  on_grid.voxel = 0.4 / 3;
+  for (const double width : {0.03, 0.08, 0.10, 0.12, 0.15, 0.2})
+    for (const PrintRules& rules : {on_grid, PrintRules{}}) {
+      const PrintReport slab = check_print(box_mesh({0, 0, 0}, {10, 10, width}), rules, PointBudget{}, no_progress());
+      const PrintReport gap =
+          check_print(joined(box_mesh({0, 0, 0}, {10, 10, 2}), box_mesh({0, 0, 2 + width}, {10, 10, 4})), rules,
+                      PointBudget{}, no_progress());
+      for (const auto& [r, spot] : {std::pair{&slab, &slab.wall}, std::pair{&gap, &gap.gap}}) {
+        if (rules.voxel == 0) {
+          EXPECT_NEAR(spot->value, width, 1e-9) << width << ": " << r->summary();
+          EXPECT_EQ(r->summary().find("under"), std::string::npos) << r->summary();
+        } else if (r->summary().find("under") != std::string::npos) {
+          EXPECT_TRUE(r->summary().find(r->unresolved()) != std::string::npos) << width << ": " << r->summary();
+          EXPECT_GE(2 * r->voxel, width) << r->summary();
+        } else {
+          EXPECT_NEAR(spot->value, width, r->voxel / 5) << width << ": " << r->summary();
+        }
       }
+      if (width <= 0.12 && rules.voxel > 0) EXPECT_TRUE(mentions(slab, "the thinnest under 0.27 mm")) << slab.summary();
+      if (width <= 0.12 && rules.voxel > 0) EXPECT_TRUE(mentions(gap, "the narrowest under 0.27 mm")) << gap.summary();
     }
-    if (width <= 0.12) EXPECT_TRUE(mentions(slab, "the thinnest under 0.27 mm")) << slab.summary();
-    if (width <= 0.12) EXPECT_TRUE(mentions(gap, "the narrowest under 0.27 mm")) << gap.summary();
-  }
 }
 
 TEST(PrintMeasure, GapsBetweenSlabsReadTheirWidth) {
@@ -159,13 +167,18 @@ TEST(PrintMeasure, GapsBetweenSlabsReadTheirWidth) {
 }
 
 TEST(PrintMeasure, AGapFinerThanTheGridSaysSo) {
-  // 0.03 mm apart: no voxel centre (0.133 mm apart) need fall in the gap, whose reading then says why.
+  // 0.03 mm apart: no voxel centre (0.133 mm apart) need fall in the gap, whose reading on a grid then says
+  // why. Exact rays read it.
   const Mesh slabs = joined(box_mesh({0, 0, 0}, {10, 10, 2}), box_mesh({0, 0, 2.03}, {10, 10, 4.03}));
-  const PrintReport r = check_print(slabs, PrintRules{}, PointBudget{}, no_progress());
+  PrintRules on_grid;
+  on_grid.voxel = 0.4 / 3;
+  const PrintReport r = check_print(slabs, on_grid, PointBudget{}, no_progress());
   EXPECT_TRUE(mentions(r,
                        "the narrowest under 0.27 mm (two of the distance grid's 0.13 mm voxels: finer than it "
                        "resolves)"))
       << r.summary();
+  const PrintReport exact = check_print(slabs, PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_TRUE(mentions(exact, "the narrowest 0.03 mm")) << exact.summary();
 }
 
 TEST(PrintMeasure, AHollowsThinShellIsThin) {
@@ -200,15 +213,23 @@ TEST(PrintMeasure, ACoarseWedgeHasItsThinStrip) {
 }
 
 TEST(PrintMeasure, PointsSpreadWiderWithinTheBudget) {
-  // A 30 mm cube at points a nozzle's width apart takes over 100,000 points; a budget leaving room for the
-  // grid and 10,000 points (five budget points each) spreads them wider, and the summary says so.
+  // A 30 mm cube at points a nozzle's width apart takes over 100,000 points; a budget leaving room for what
+  // measures them (the grid, or the triangles' tree) and 10,000 points (five budget points each) spreads
+  // them wider, and the summary says so.
   const Mesh cube = box_mesh({0, 0, 0}, {30, 30, 30});
   Volume v;
   v.kind = Volume::Kind::mesh;
   v.mesh = std::make_shared<const Mesh>(cube);
   v.bounds = cube.bbox();
+  PointBudget on_grid_budget;
+  on_grid_budget.limit = WallGrid::size(v, 0.4 / 3, 0, 0) + 5 * 10000;
+  PrintRules on_grid;
+  on_grid.voxel = 0.4 / 3;
+  const PrintReport g = check_print(cube, on_grid, on_grid_budget, no_progress());
+  EXPECT_GT(g.spacing, 1.0) << g.summary();
+  EXPECT_NE(g.summary().find("mm (the point budget)"), std::string::npos) << g.summary();
   PointBudget budget;
-  budget.limit = WallGrid::size(v, 0.4 / 3, 0, 0) + 5 * 10000;
+  budget.limit = TriangleBvh::size(cube.faces()) + 5 * 10000;
   const PrintReport r = check_print(cube, PrintRules{}, budget, no_progress());
   EXPECT_TRUE(r.wall.measured);
   EXPECT_GT(r.spacing, 1.0) << r.summary();

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <vector>
 
+#include "kernels/region/box_mesh.h"
+
 using namespace selfsim;
 using namespace selfsim::print;
 
@@ -127,4 +129,105 @@ TEST(WallRays, ANarrowCreasesBottomIsNotAGapButANarrowWedgeIsAThinWall) {
   const auto wedge = [](Vec3 p) { return -std::max(c * p.x - s * p.z, -c * p.x - s * p.z); };
   EXPECT_NEAR(rays({on}, {-1.0 * n}, of(+wedge), {.step = 0.001, .wall_cap = 1, .gap_cap = 1}).wall[0],
               0.05 * std::tan(0.5235987755983), 1e-6);
+}
+
+// Exact rays against the triangles (measure_rays_exact): the same readings, to rounding, without a step.
+namespace {
+
+Mesh joined_boxes(std::initializer_list<std::pair<Vec3, Vec3>> boxes) {
+  Mesh m;
+  for (const auto& [lo, hi] : boxes) {
+    const Mesh b = box_mesh(lo, hi);
+    const auto base = static_cast<std::uint32_t>(m.points.size());
+    m.points.insert(m.points.end(), b.points.begin(), b.points.end());
+    for (const Triangle& t : b.triangles) m.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  }
+  return m;
+}
+
+// The face of m whose plane holds p and whose triangle holds it (the point's own, not counted).
+std::uint32_t face_at(const Mesh& m, Vec3 p) {
+  for (std::uint32_t f = 0; f < m.faces(); ++f) {
+    const Vec3 a = m.points[m.triangles[f][0]], b = m.points[m.triangles[f][1]], c = m.points[m.triangles[f][2]];
+    const Vec3 n = cross(b - a, c - a);
+    if (std::abs(dot(n, p - a)) > 1e-12 * norm(n)) continue;
+    if (dot(cross(b - a, p - a), n) >= 0 && dot(cross(c - b, p - b), n) >= 0 && dot(cross(a - c, p - c), n) >= 0)
+      return f;
+  }
+  return UINT32_MAX;
+}
+
+Measured exact(const Mesh& m, const std::vector<Vec3>& points, const std::vector<Vec3>& normals, RayLimits limits,
+               bool test_burial = false) {
+  const TriangleBvh bvh(m, no_progress());
+  std::vector<std::uint32_t> faces;
+  for (const Vec3& p : points) faces.push_back(face_at(m, p));
+  std::vector<char> maybe(points.size(), test_burial ? 1 : 0);
+  Measured out{std::vector<double>(points.size()), std::vector<double>(points.size())};
+  measure_rays_exact(points, normals, {.bvh = &bvh, .faces = faces, .tmin = 1e-9, .may_be_buried = maybe, .far = 100},
+                     limits, out.wall, out.gap, no_progress());
+  return out;
+}
+
+}  // namespace
+
+TEST(WallRays, ExactRaysReadSlabsAndGapsToRounding) {
+  // Slabs 0.3 and 0.03 thick (a grid's step would read the second as half a step), and a gap of 0.25
+  // between two boxes, each read from points whose rays cross the far side where its two triangles meet
+  // (x = y on box_mesh's diagonals): counted once.
+  for (double h : {0.3, 0.03}) {
+    const Mesh slab = box_mesh({0, 0, 0}, {1, 1, h});
+    const Measured m =
+        exact(slab, {{0.5, 0.5, h}, {0.3, 0.6, h}}, {{0, 0, 1}, {0, 0, 1}}, {.wall_cap = 2, .gap_cap = 1});
+    EXPECT_NEAR(m.wall[0], h, 1e-12);
+    EXPECT_NEAR(m.wall[1], h, 1e-12);
+    EXPECT_EQ(m.gap[0], 1);
+  }
+  const Mesh two = joined_boxes({{{0, 0, 0}, {1, 1, 1}}, {{0, 0, 1.25}, {1, 1, 2}}});
+  const Measured g = exact(two, {{0.5, 0.5, 1}}, {{0, 0, 1}}, {.wall_cap = 0.5, .gap_cap = 1});
+  EXPECT_NEAR(g.gap[0], 0.25, 1e-12);
+  EXPECT_EQ(g.wall[0], 0.5);  // a wall 1 thick reads as the cap
+}
+
+TEST(WallRays, ExactRaysBesideAnEdgeAndThroughOverlaps) {
+  // The unit cube; a point on its top face 1e-6 from an edge: the ray inwards runs beside the side face,
+  // exactly, and reads the cap (no point need be left out beside an edge).
+  const Mesh cube = box_mesh({0, 0, 0}, {1, 1, 1});
+  const Measured m = exact(cube, {{1e-6, 0.5, 1}}, {{0, 0, 1}}, {.wall_cap = 0.8, .gap_cap = 0.4});
+  EXPECT_EQ(m.wall[0], 0.8);
+  EXPECT_EQ(m.gap[0], 0.4);
+  // Two boxes overlapping by half: one solid 1.5 long. From the first box's end (x = 0) inwards the ray
+  // enters the second box at 0.5 and leaves the first at 1: still inside, the wall goes on to 1.5.
+  const Mesh overlap = joined_boxes({{{0, 0, 0}, {1, 1, 1}}, {{0.5, 0, 0}, {1.5, 1, 1}}});
+  const Measured o = exact(overlap, {{0, 0.3, 0.6}}, {{-1, 0, 0}}, {.wall_cap = 2, .gap_cap = 1});
+  EXPECT_NEAR(o.wall[0], 1.5, 1e-12);
+  // The second box's end at x = 0.5 lies inside the first: no surface of the solid. Unless tested, its ray
+  // inwards (+x) leaves the first box at x = 1 and reads a wall of 0.5; tested, it reads both caps.
+  const Measured buried = exact(overlap, {{0.5, 0.3, 0.6}}, {{-1, 0, 0}}, {.wall_cap = 2, .gap_cap = 1});
+  EXPECT_NEAR(buried.wall[0], 0.5, 1e-12);
+  const Measured tested = exact(overlap, {{0.5, 0.3, 0.6}}, {{-1, 0, 0}}, {.wall_cap = 2, .gap_cap = 1}, true);
+  EXPECT_EQ(tested.wall[0], 2);
+  EXPECT_EQ(tested.gap[0], 1);
+  // A point on the surface, tested, is measured as untested.
+  const Measured outer = exact(overlap, {{0, 0.3, 0.6}}, {{-1, 0, 0}}, {.wall_cap = 2, .gap_cap = 1}, true);
+  EXPECT_NEAR(outer.wall[0], 1.5, 1e-12);
+}
+
+TEST(WallRays, ExactRaysKeepTheFacingRules) {
+  // A wedge of 20 degrees (two flanks meeting at an edge along y, the solid between): from a point on a
+  // flank s from the edge the ray inwards leaves through the other flank s tan 20° away, facing it within
+  // 20 degrees: a thin wall. With a facing rule stricter than that (0.99: 8 degrees), the cap.
+  const double half = std::tan(10 * 3.14159265358979 / 180);
+  Mesh w;
+  for (double y : {0.0, 1.0}) {
+    w.points.push_back({0, y, 0});
+    w.points.push_back({3, y, 3 * half});
+    w.points.push_back({3, y, -3 * half});
+  }
+  w.triangles = {{0, 2, 1}, {3, 4, 5}, {0, 1, 4}, {0, 4, 3}, {0, 3, 5}, {0, 5, 2}, {1, 2, 5}, {1, 5, 4}};
+  const Vec3 n = normalized({-half, 0, 1});  // the upper flank's outward normal
+  const Vec3 on{1, 0.5, half};
+  const Measured m = exact(w, {on}, {n}, {.wall_cap = 2, .gap_cap = 1});
+  EXPECT_NEAR(m.wall[0], norm(on - Vec3{0, 0.5, 0}) * std::tan(20 * 3.14159265358979 / 180), 1e-9);
+  EXPECT_EQ(exact(w, {on}, {n}, {.wall_cap = 2, .gap_cap = 1, .wall_facing = 0.99}).wall[0], 2);
 }
