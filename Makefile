@@ -7,8 +7,9 @@ PACKAGES   := cmake g++ make libopenvdb-dev libboost-iostreams-dev liblua5.4-dev
               libglx-mesa0 librsvg2-bin clang-format ghostscript python3-openvdb paraview libjs-three
 # Only `make test` installs these: GNU parallel and a Slurm with munge, which the sweep tests start on
 # localhost in a temporary folder (tests/cli/check_slurm.sh), and headless Chromium with Selenium for the
-# studio's browser test (tests/browser/check_studio.py). selfsim itself never needs them.
-TEST_PACKAGES := parallel slurmctld slurmd slurm-client munge chromium chromium-driver python3-selenium
+# studio's browser test (tests/browser/check_studio.py), and PrusaSlicer, whose command line slices every print
+# example (tests/print/check_slicer.py). selfsim itself never needs them.
+TEST_PACKAGES := parallel slurmctld slurmd slurm-client munge chromium chromium-driver python3-selenium prusa-slicer
 # ParaView's Python modules, unpacked from Debian's python3-paraview (never installed: it conflicts with
 # python3-vtk9, which libvtk9-dev needs) for scripts/pvbatch-selfsim. README: "ParaView and selfsim on one machine".
 PARAVIEW_PYTHON ?= /opt/selfsim/paraview-python
