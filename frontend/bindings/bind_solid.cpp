@@ -133,23 +133,26 @@ std::vector<double> tube_radii(const C& c, double radius, const std::string& by,
 // the budget) said unless quiet, and a warning when the thinnest parts are under a voxel across.
 template <class C>
 Mesh grid_tube_by(lua_State* L, const C& c, const std::vector<double>& radii, print::GridTubeOptions opt) {
-  return with_budget(L, [&](const PointBudget& b) {
+  const bool given = opt.voxel > 0;
+  double voxel = 0;
+  Mesh solid = with_budget(L, [&](const PointBudget& b) {
     opt.budget = b;
-    const bool given = opt.voxel > 0;
-    opt.voxel = print::grid_tube_voxel(c, radii, opt);
-    const double thinnest = *std::min_element(radii.begin(), radii.end());
-    if (!RunContext::of(L).config.quiet)
-      std::printf("%ssolid.tube: radii %s to %s on a %s grid%s\n", recipe_where(L).c_str(), mm_text(thinnest).c_str(),
-                  mm_text(*std::max_element(radii.begin(), radii.end())).c_str(), mm_text(opt.voxel).c_str(),
-                  given ? "" : " (a quarter of the thinnest radius, or coarser to fit the budget)");
-    if (thinnest < opt.voxel) {
-      const std::string message = recipe_where(L) + "solid.tube: the thinnest radius " + mm_text(thinnest) +
-                                  " is under the voxel " + mm_text(opt.voxel) +
-                                  ": parts that thin are lost or broken; give a smaller 'voxel' or a 'min_radius'";
-      lua_warning(L, message.c_str(), 0);
-    }
-    return print::grid_tube(c, radii, opt, RunContext::of(L));
+    print::GridTubeOptions chosen = opt;
+    chosen.voxel = voxel = print::grid_tube_voxel(c, radii, opt);
+    return print::grid_tube(c, radii, chosen, RunContext::of(L));
   });
+  const double thinnest = *std::min_element(radii.begin(), radii.end());
+  if (!RunContext::of(L).config.quiet)
+    std::printf("%ssolid.tube: radii %s to %s on a %s grid%s\n", recipe_where(L).c_str(), mm_text(thinnest).c_str(),
+                mm_text(*std::max_element(radii.begin(), radii.end())).c_str(), mm_text(voxel).c_str(),
+                given ? "" : " (a quarter of the thinnest radius, or coarser to fit the budget)");
+  if (thinnest < voxel) {
+    const std::string message = recipe_where(L) + "solid.tube: the thinnest radius " + mm_text(thinnest) +
+                                " is under the voxel " + mm_text(voxel) +
+                                ": parts that thin are lost or broken; give a smaller 'voxel' or a 'min_radius'";
+    lua_warning(L, message.c_str(), 0);
+  }
+  return solid;
 }
 
 int solid_tube(lua_State* L) {
