@@ -107,9 +107,10 @@ void add_problem(PrintReport& r, Severity severity, std::string what, std::strin
 void survey_contact(const Mesh& m, PrintReport& r, Progress& progress);
 void add_overhang(const Mesh& m, PrintReport& r, Mesh* marked);
 
-// A solid whose longest side equals, to a thousandth, that of a box the recipe grew it in (a region made
-// by volume.*, whose longest side is a whole number of units up to 10): "probably still in model units"
-// (may fail), once. The run records the boxes (print_options.h: note_model_box).
+// A solid whose longest side is that of a box the recipe grew it in (a region made by volume.*, whose
+// longest side is a whole number of units up to 10), to a thousandth below and a fifth above (a surface
+// filling the box, thickened): "probably still in model units" (may fail), once. The run records the boxes
+// (print_options.h: note_model_box).
 void flag_model_box(PrintReport& r, const std::vector<BBox3>& boxes);
 
 // One line for a warning, under about `bytes`: the summary while it fits, else the problems most serious

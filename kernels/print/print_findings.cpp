@@ -17,6 +17,13 @@ namespace {
 // A factor to scale by, rounded up to a tenth: "2.6x".
 std::string times(double k) { return short_number(std::ceil(k * 10 - 1e-9) / 10) + "x"; }
 
+// "<lead>2.6x (solid.size)", or nothing past 10x: a wall or gap of nearly nothing (where parts meet) is
+// not fixed by scaling. "or more" when the reading is only a bound.
+std::string scale_up(double k, bool resolved, const std::string& lead) {
+  if (!(k <= 10)) return "";
+  return lead + times(k) + (resolved ? "" : " or more") + " (solid.size)";
+}
+
 // A tube's radius for walls of `wall`, and a thickness, as a recipe writes them: "0.8".
 std::string length(double v) { return short_number(v); }
 
@@ -32,8 +39,8 @@ void add_walls(PrintReport& r) {
               "walls thinner than " + mm_text(rules.min_wall) + " at " + places + ", the thinnest " + value + " at " +
                   mm_point_text(r.wall.where),
               "thicken to " + mm_text(rules.min_wall) + " (thickness = " + length(rules.min_wall) +
-                  ", a tube's radius = " + length(rules.min_wall / 2) + ") or scale up " + times(rules.min_wall / v) +
-                  (r.resolves(r.wall.value) ? "" : " or more") + " (solid.size)");
+                  ", a tube's radius = " + length(rules.min_wall / 2) + ")" +
+                  scale_up(rules.min_wall / v, r.resolves(r.wall.value), " or scale up "));
 }
 
 void add_gaps(PrintReport& r) {
@@ -44,8 +51,8 @@ void add_gaps(PrintReport& r) {
   add_problem(r, Severity::may_fail,
               "gaps narrower than " + mm_text(rules.min_gap) + " (they fuse) at " + places + ", the narrowest " +
                   value + " at " + mm_point_text(r.gap.where),
-              "scale up " + times(rules.min_gap / v) + (r.resolves(r.gap.value) ? "" : " or more") +
-                  " (solid.size) or thinner walls (thickness, radius)");
+              scale_up(rules.min_gap / v, r.resolves(r.gap.value), "scale up ") +
+                  (rules.min_gap / v > 10 ? "" : " or ") + "thinner walls (thickness, radius)");
 }
 
 void add_contact(PrintReport& r) {

@@ -4,6 +4,8 @@
 //   "sla": resin printers' usual limits, walls of 0.4 mm (supported), gaps of 0.5 mm (narrower ones cure
 //          shut), a 0.15 mm spot.
 // A slicer slows down, and some give up, past a few million triangles: 2 million is the default budget.
+// Overhang (45 degrees from vertical) is the same for both: a resin print also needs supports under faces
+// tilted past about 45 degrees (its layers peel off the vat's film), and the summary only reports the area.
 #pragma once
 
 #include <string>

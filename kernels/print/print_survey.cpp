@@ -34,7 +34,8 @@ void flag_model_box(PrintReport& r, const std::vector<BBox3>& boxes) {
   for (const BBox3& b : boxes) {
     const double unit = longest(b.size());
     const bool whole = unit >= 1 && unit <= 10 && std::abs(unit - std::round(unit)) <= 1e-9 * unit;
-    if (!whole || std::abs(side - unit) > 1e-3 * unit) continue;
+    // As large as the box, or a little larger: a surface filling it thickened, a curve in it as a tube.
+    if (!whole || side < (1 - 1e-3) * unit || side > 1.2 * unit) continue;
     add_problem(r, Severity::may_fail,
                 "it is " + mm_text(side) + " across, the size of a box the recipe grew it in (" + short_number(unit) +
                     " units): probably still in model units (sizes are mm)",

@@ -205,8 +205,8 @@ TEST(PrintCheck, FindingsSaySeverityAndFix) {
   EXPECT_EQ(brief(blob, 2000), blob.summary());
 }
 
-// A solid as large as a box the recipe grew it in (10 units) is probably still in model units; one sized
-// to 80 mm is not, nor one as large as a box of 7.5 units (not a whole number: a size chosen).
+// A solid as large as a box the recipe grew it in (10 units), or a little larger, is probably still in
+// model units; one sized to 80 mm is not, nor one as large as a box of 7.5 units (not a whole number: a size chosen).
 TEST(PrintCheck, TheRecipesUnitBoxIsModelUnits) {
   PrintReport r = check_print(box_mesh({0, 0, 0}, {10, 10, 10}), PrintRules{}, PointBudget{}, no_progress());
   EXPECT_TRUE(r.passes());
@@ -217,6 +217,10 @@ TEST(PrintCheck, TheRecipesUnitBoxIsModelUnits) {
   EXPECT_FALSE(r.passes());
   EXPECT_TRUE(mentions(r, "the size of a box the recipe grew it in (10 units): probably still in model units"))
       << r.summary();
+  // A surface filling the box, thickened by 1 mm: still the box's size, near enough.
+  PrintReport thick = check_print(box_mesh({-0.5, 0, 0}, {10.5, 10, 10}), PrintRules{}, PointBudget{}, no_progress());
+  flag_model_box(thick, {unit});
+  EXPECT_FALSE(thick.passes()) << thick.summary();
   PrintReport sized = check_print(box_mesh({0, 0, 0}, {80, 80, 10}), PrintRules{}, PointBudget{}, no_progress());
   flag_model_box(sized, {unit});
   EXPECT_TRUE(sized.passes()) << sized.summary();
