@@ -147,7 +147,7 @@ std::string overhang_fact(const PrintReport& r) {
   const std::string past = " past " + short_number(r.rules.overhang) + "°";
   if (!(r.overhang > 0)) return "no overhang" + past;
   const std::string area = r.overhang < 100 ? area_text(r.overhang) : short_number(r.overhang / 100, 2) + " cm²";
-  return "overhang " + area + past + " (fewer supports: solid.orient)";
+  return "overhang " + area + past + " (fewer supports: solid.orient(s, { least = \"overhang\" }))";
 }
 
 std::string tagged(const Problem& p) { return std::string(severity_text(p.severity)) + ": " + p.line(); }

@@ -271,7 +271,8 @@ TEST(PrintCheck, OverhangOfAMushroomACubeAndASphere) {
   const PrintReport m = check_print(mushroom, PrintRules{}, PointBudget{}, no_progress(), &marked);
   EXPECT_NEAR(m.overhang, polygon_area(15, sides) - polygon_area(5, sides), 1e-6) << m.summary();
   EXPECT_NEAR(m.overhang_where.z, 10, 1e-9);
-  EXPECT_NE(m.summary().find("overhang 6.3 cm² past 45° (fewer supports: solid.orient)"), std::string::npos)
+  EXPECT_NE(m.summary().find("overhang 6.3 cm² past 45° (fewer supports: solid.orient(s, { least = \"overhang\" }))"),
+            std::string::npos)
       << m.summary();
   ASSERT_NE(marked.face_fields.find("overhang"), nullptr);
   ASSERT_NE(marked.point_fields.find("overhang"), nullptr);
