@@ -168,3 +168,20 @@ TEST(GridTube, ATreeByWidthIsThinnerAtItsTipsThanAtItsTrunk) {
   EXPECT_LT(tip, 0.9);  // 0.74 at x = 29.5 (0.5 from the trunk's end), where one radius would be 1.5
   EXPECT_LT(tip, 0.6 * trunk);
 }
+
+TEST(GridTube, RoundConesStopWhenAskedAndPredictTheirBudget) {
+  struct Stop : Progress {
+    bool cancelled() override { return true; }
+  } stop;
+  Polyline3 c;
+  std::vector<double> radii;
+  for (int i = 0; i < 5000; ++i) {
+    c.points.push_back({0.01 * i, std::sin(0.01 * i), 0});
+    radii.push_back(0.2 + 0.0001 * i);
+  }
+  c.path_ends.push_back(c.points.size());
+  EXPECT_THROW(grid_tube(c, radii, {}, stop), Cancelled);
+  GridTubeOptions small{.voxel = 0.05};
+  small.budget.limit = 1e4;
+  EXPECT_THROW(grid_tube(c, radii, small, no_progress()), BudgetError);
+}

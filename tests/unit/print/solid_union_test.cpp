@@ -123,3 +123,12 @@ TEST(SolidUnion, RefusesOpenSolidsAndEmptyResults) {
   small.budget.limit = 1000;
   EXPECT_THROW(united({box_mesh({0, 0, 0}, {2, 2, 2}), box_mesh({1, 1, 1}, {3, 3, 3})}, small), BudgetError);
 }
+
+TEST(SolidUnion, StopsWhenAsked) {
+  struct Stop : Progress {
+    bool cancelled() override { return true; }
+  } stop;
+  const Mesh a = box_mesh({0, 0, 0}, {2, 2, 2}), b = box_mesh({1, 1, 1}, {3, 3, 3});
+  const std::vector<const Mesh*> both{&a, &b};
+  EXPECT_THROW(solid_union(both, {}, stop), Cancelled);
+}
