@@ -44,6 +44,7 @@ struct PrintReports {
     std::weak_ptr<const Mesh> mesh;
     print::PrintReport report;
     std::shared_ptr<const std::pair<Fields, Fields>> marks;  // point and face fields; null when not kept
+    double bytes = 0;                                        // the marks' memory, held against --max-memory
   };
   std::vector<Entry> entries;
   std::vector<BBox3> model_boxes;  // boxes the recipe grew things in (note_model_box)
@@ -53,9 +54,17 @@ struct PrintReports {
       if (e.report.rules == rules && !e.mesh.expired() && e.mesh.lock() == m) return &e;
     return nullptr;
   }
-  void keep(const Held<Mesh>& m, const print::PrintReport& r, std::shared_ptr<const std::pair<Fields, Fields>> marks) {
-    std::erase_if(entries, [](const Entry& e) { return e.mesh.expired(); });
-    entries.push_back({m, r, std::move(marks)});
+  // Keeps r (and marks, whose `bytes` the caller holds) for m; the dead values' entries go, their marks'
+  // memory released.
+  void keep(lua_State* L, const Held<Mesh>& m, const print::PrintReport& r,
+            std::shared_ptr<const std::pair<Fields, Fields>> marks = nullptr, double bytes = 0) {
+    double released = 0;
+    std::erase_if(entries, [&](const Entry& e) {
+      if (e.mesh.expired()) released += e.bytes;
+      return e.mesh.expired();
+    });
+    if (released > 0) hold_memory(L, -released);
+    entries.push_back({m, r, std::move(marks), bytes});
   }
 };
 
@@ -98,16 +107,29 @@ print::PrintReport check_print_in_run(lua_State* L, const Held<Mesh>& m, const p
   print::PrintReport r =
       with_budget(L, [&](const PointBudget& b) { return print::check_print(*m, rules, b, RunContext::of(L), mark); });
   print::flag_model_box(r, reports.model_boxes);
-  std::shared_ptr<const std::pair<Fields, Fields>> marks;
-  if (mark != nullptr && mark->point_fields.find("wall") != nullptr)
-    marks = std::make_shared<const std::pair<Fields, Fields>>(mark->point_fields, mark->face_fields);
-  reports.keep(m, r, std::move(marks));
+  // The wall and gap fields (the overhang is made again in an instant), held against --max-memory: kept
+  // only when they fit.
+  std::shared_ptr<std::pair<Fields, Fields>> marks;
+  double bytes = 0;
+  if (mark != nullptr && mark->point_fields.find("wall") != nullptr) {
+    marks = mark == &own
+                ? std::make_shared<std::pair<Fields, Fields>>(std::move(own.point_fields), std::move(own.face_fields))
+                : std::make_shared<std::pair<Fields, Fields>>(mark->point_fields, mark->face_fields);
+    marks->first.erase("overhang");
+    marks->second.erase("overhang");
+    bytes = static_cast<double>(marks->first.bytes() + marks->second.bytes());
+    try {
+      hold_memory(L, bytes);
+    } catch (const Error&) {
+      marks = nullptr;
+      bytes = 0;
+    }
+  }
+  reports.keep(L, m, r, std::move(marks), bytes);
   return r;
 }
 
-void keep_print_report(lua_State* L, const Held<Mesh>& m, const print::PrintReport& r) {
-  reports_of(L).keep(m, r, nullptr);
-}
+void keep_print_report(lua_State* L, const Held<Mesh>& m, const print::PrintReport& r) { reports_of(L).keep(L, m, r); }
 
 void warn_unless_printable(lua_State* L, const char* fn, const Held<Mesh>& m, const PrintCheckOption& check) {
   if (!check.on) return;
