@@ -150,7 +150,10 @@ TEST(PrintCheck, ASealedCavityIsNoGap) {
 }
 
 TEST(PrintCheck, ASolidTooWideForAGridIsSaidNotMeasured) {
-  const PrintReport r = check_print(box_mesh({0, 0, 0}, {200000, 10, 10}), PrintRules{}, PointBudget{}, no_progress());
+  // A voxel asked for measures on the distance grid (without, the rays run against the triangles).
+  PrintRules on_grid;
+  on_grid.voxel = 0.1;
+  const PrintReport r = check_print(box_mesh({0, 0, 0}, {200000, 10, 10}), on_grid, PointBudget{}, no_progress());
   EXPECT_TRUE(mentions(r, "walls and gaps not measured: the solid is")) << r.summary();
   EXPECT_FALSE(r.wall.measured);
 }
