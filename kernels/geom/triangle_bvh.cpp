@@ -118,13 +118,34 @@ TriangleBvh::TriangleBvh(const Mesh& m, Progress& progress) {
 }
 
 void TriangleBvh::crossings(Vec3 origin, Vec3 dir, double tmin, double tmax, std::vector<Hit>& hits) const {
-  if (nodes_.empty()) return;
-  // Slabs: the segment (tmin, tmax] meets a box where its three intervals between the box's planes overlap.
+  crossings(std::span<const Vec3>(&origin, 1), dir, tmin, tmax, hits);
+}
+
+bool TriangleBvh::crossings(std::span<const Vec3> origins, Vec3 dir, double tmin, double tmax, std::vector<Hit>& hits,
+                            std::size_t most) const {
+  if (nodes_.empty() || origins.empty()) return true;
+  const std::size_t had = hits.size();
+  std::size_t opened = 0;
+  // The rays as one thick ray: the middle one, with its parameters widened by how far along dir the others
+  // start, and every box widened by how far across it they lie (a box of that half-width holds the ball).
+  Vec3 centre{};
+  for (const Vec3& o : origins) centre += o;
+  centre = (1.0 / static_cast<double>(origins.size())) * centre;
+  double lo_t = tmin, hi_t = tmax, across = 0;
+  for (const Vec3& o : origins) {
+    const Vec3 off = o - centre;
+    const double along = dot(off, dir);
+    lo_t = std::min(lo_t, tmin + along);
+    hi_t = std::max(hi_t, tmax + along);
+    across = std::max(across, norm(off - along * dir));
+  }
+  // Slabs: the segment (lo_t, hi_t] meets a box where its three intervals between the box's planes overlap.
   // An axis the ray does not move along has 1/0 = inf: its interval is everything or (where the origin lies
   // on the box's plane, inf · 0) NaN, which std::max and std::min below pass over (NaN compares false).
   const Vec3 inv{1 / dir.x, 1 / dir.y, 1 / dir.z};
+  const Vec3 widen = Vec3::all(across);
   const auto meets = [&](const Node& n) {
-    const Vec3 a = n.lo - origin, b = n.hi - origin;
+    const Vec3 a = n.lo - widen - centre, b = n.hi + widen - centre;
     const auto slab = [](double lo, double hi, double inv) {
       const double x = lo * inv, y = hi * inv;
       return inv >= 0 ? std::pair{x, y} : std::pair{y, x};
@@ -132,8 +153,8 @@ void TriangleBvh::crossings(Vec3 origin, Vec3 dir, double tmin, double tmax, std
     const auto [x0, x1] = slab(a.x, b.x, inv.x);
     const auto [y0, y1] = slab(a.y, b.y, inv.y);
     const auto [z0, z1] = slab(a.z, b.z, inv.z);
-    const double t0 = std::max(std::max(std::max(tmin, x0), y0), z0);
-    const double t1 = std::min(std::min(std::min(tmax, x1), y1), z1);
+    const double t0 = std::max(std::max(std::max(lo_t, x0), y0), z0);
+    const double t1 = std::min(std::min(std::min(hi_t, x1), y1), z1);
     return t0 <= t1;
   };
   std::uint32_t stack[128];
@@ -142,6 +163,7 @@ void TriangleBvh::crossings(Vec3 origin, Vec3 dir, double tmin, double tmax, std
   while (top > 0) {
     const std::uint32_t i = stack[--top];
     const Node& n = nodes_[i];
+    if (++opened + (hits.size() - had) > most) return false;
     if (!meets(n)) continue;
     if (n.count == 0) {
       stack[top++] = i + n.first;
@@ -149,24 +171,32 @@ void TriangleBvh::crossings(Vec3 origin, Vec3 dir, double tmin, double tmax, std
       continue;
     }
     for (std::uint32_t j = n.first; j < n.first + n.count; ++j) {
-      // Möller and Trumbore: the crossing's barycentric coordinates (u, v) and parameter t by Cramer's rule.
+      // Möller and Trumbore: the crossing's barycentric coordinates (u, v) and parameter t by Cramer's rule;
+      // what depends on the direction alone is shared by the rays.
       const Tri& tri = tris_[j];
       const Vec3 p = cross(dir, tri.ac);
       const double det = dot(tri.ab, p);
-      if (det == 0) continue;  // the ray runs in the triangle's plane
+      if (det == 0) continue;  // the rays run in the triangle's plane
       const double inv_det = 1 / det;
-      const Vec3 s = origin - tri.a;
-      const double u = dot(s, p) * inv_det;
-      if (u < -edge_tolerance || u > 1 + edge_tolerance) continue;
-      const Vec3 q = cross(s, tri.ab);
-      const double v = dot(dir, q) * inv_det;
-      if (v < -edge_tolerance || u + v > 1 + edge_tolerance) continue;
-      const double t = dot(tri.ac, q) * inv_det;
-      if (!(t > tmin && t <= tmax)) continue;
-      const Vec3 normal = cross(tri.ab, tri.ac);
-      hits.push_back({t, tri.face, dot(normal, dir) / std::sqrt(dot(normal, normal))});
+      double facing = 2;  // worked out at the first crossing
+      for (std::size_t k = 0; k < origins.size(); ++k) {
+        const Vec3 s = origins[k] - tri.a;
+        const double u = dot(s, p) * inv_det;
+        if (u < -edge_tolerance || u > 1 + edge_tolerance) continue;
+        const Vec3 q = cross(s, tri.ab);
+        const double v = dot(dir, q) * inv_det;
+        if (v < -edge_tolerance || u + v > 1 + edge_tolerance) continue;
+        const double t = dot(tri.ac, q) * inv_det;
+        if (!(t > tmin && t <= tmax)) continue;
+        if (facing > 1) {
+          const Vec3 normal = cross(tri.ab, tri.ac);
+          facing = dot(normal, dir) / std::sqrt(dot(normal, normal));
+        }
+        hits.push_back({t, tri.face, facing, static_cast<std::uint32_t>(k)});
+      }
     }
   }
+  return true;
 }
 
 }  // namespace selfsim

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "kernels/base/progress.h"
@@ -25,6 +26,7 @@ class TriangleBvh {
     double t;
     std::uint32_t face;
     double facing;
+    std::uint32_t ray = 0;  // which of the rays crossed it (crossings of several rays at once)
   };
 
   // Budget points (16 bytes each) that building and holding the hierarchy of `triangles` takes at most.
@@ -38,6 +40,12 @@ class TriangleBvh {
   // may be negative: a line through origin, both ways), in no particular order. Safe to call from several
   // threads at once.
   void crossings(Vec3 origin, Vec3 dir, double tmin, double tmax, std::vector<Hit>& hits) const;
+  // The same for several rays of one direction (the points of one triangle along its normal), each hit
+  // tagged with its ray's index in `origins`: one search of the tree for them all, as one thick ray. Stops,
+  // returning false, once its work (boxes looked at and crossings found) passes `most`: a caller that needs
+  // only the first few crossings of rays through many triangles asks again over shorter stretches.
+  bool crossings(std::span<const Vec3> origins, Vec3 dir, double tmin, double tmax, std::vector<Hit>& hits,
+                 std::size_t most = SIZE_MAX) const;
 
   std::size_t nodes() const { return nodes_.size(); }
   std::size_t depth() const { return depth_; }

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -14,8 +13,8 @@
 #include "kernels/base/error.h"
 #include "kernels/geom/point_text.h"
 #include "kernels/geom/triangle_bvh.h"
+#include "kernels/print/print_samples.h"
 #include "kernels/print/print_size.h"
-#include "kernels/print/sharp_edges.h"
 #include "kernels/print/wall_rays.h"
 #include "kernels/region/volume.h"
 #include "kernels/region/wall_grid.h"
@@ -23,137 +22,6 @@
 namespace selfsim::print {
 
 namespace {
-
-// Where walls and gaps are measured: from points inside every triangle, along its normal. Not from the
-// mesh's points: a point on a sharp edge (a thickened sheet's rim) has no normal a ray can follow, and one
-// along the average runs so close beside a face that the grid's interpolation error reads it as outside at
-// once. A triangle no longer than `spacing` gives its incentre (its point farthest from its edges); a
-// longer one is halved across its longest edge until the halves are that small, each giving its incentre, so
-// a coarse CAD face (a wedge of 8 triangles) is measured as densely as a finely meshed one: one ray from a
-// long face's middle would miss a thin strip along its edge. Points beside the solid's sharp edges are then
-// left out (clear_of_edges).
-struct Samples {
-  std::vector<Vec3> points, normals;
-  std::vector<std::uint32_t> face;  // the triangle each point is on
-  std::vector<double> area;         // mm² of its triangle each point stands for
-};
-
-double squared(Vec3 v) { return dot(v, v); }
-
-Vec3 incentre(Vec3 a, Vec3 b, Vec3 c) {
-  const double la = std::sqrt(squared(c - b)), lb = std::sqrt(squared(a - c)), lc = std::sqrt(squared(b - a));
-  const double sum = la + lb + lc;
-  return sum > 0 ? (1 / sum) * (la * a + lb * b + lc * c) : a;
-}
-
-// The halves of triangle abc (longest-edge bisection, which keeps their shapes: no slivers from slivers)
-// down to `spacing`, each one's incentre passed to `take` with its share of the area (halves halve it).
-template <class Take>
-std::size_t halves(Vec3 a, Vec3 b, Vec3 c, double share, double spacing, const Take& take) {
-  // Squared lengths: the same order and comparisons, without a square root each.
-  const double ab = squared(b - a), bc = squared(c - b), ca = squared(a - c);
-  const double longest = std::max({ab, bc, ca});
-  if (!(longest > spacing * spacing) || !std::isfinite(longest)) {
-    take(incentre(a, b, c), share);
-    return 1;
-  }
-  // Rotate so that ab is the longest edge, then split it at its midpoint m.
-  if (ab < longest && bc == longest) return halves(b, c, a, share, spacing, take);
-  if (ab < longest) return halves(c, a, b, share, spacing, take);
-  const Vec3 m = 0.5 * (a + b);
-  return halves(a, m, c, 0.5 * share, spacing, take) + halves(m, b, c, 0.5 * share, spacing, take);
-}
-
-// How many halves of abc sampling down to `spacing` makes: exactly, or some number over `limit` once the
-// count passes it (counting no further).
-double count_halves(Vec3 a, Vec3 b, Vec3 c, double spacing, double limit) {
-  const double ab = squared(b - a), bc = squared(c - b), ca = squared(a - c);
-  const double longest = std::max({ab, bc, ca});
-  if (!(longest > spacing * spacing) || !std::isfinite(longest)) return 1;
-  if (limit < 2) return 2;  // halved: two at least
-  if (ab < longest && bc == longest) return count_halves(b, c, a, spacing, limit);
-  if (ab < longest) return count_halves(c, a, b, spacing, limit);
-  const Vec3 m = 0.5 * (a + b);
-  const double first = count_halves(a, m, c, spacing, limit - 1);  // the other half takes one at least
-  if (first > limit - 1) return first + 1;
-  return first + count_halves(m, b, c, spacing, limit - first);
-}
-
-// How many points sampling every triangle down to `spacing` takes (or a number over `limit`). In parallel,
-// chunks of triangles adding to one total, all stopping once it passes the limit.
-double sample_count(const Mesh& m, double spacing, double limit) {
-  std::atomic<double> total{0};
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m.faces(), 8192), [&](const tbb::blocked_range<std::size_t>& r) {
-    double n = 0;
-    for (std::size_t f = r.begin(); f != r.end(); ++f) {
-      if (f % 1024 == 0 && total.load(std::memory_order_relaxed) + n > limit) break;
-      const Triangle& t = m.triangles[f];
-      n += count_halves(m.points[t[0]], m.points[t[1]], m.points[t[2]], spacing, limit - n);
-      if (n > limit) break;
-    }
-    double seen = total.load();
-    while (!total.compare_exchange_weak(seen, seen + n)) {
-    }
-  });
-  return total.load();
-}
-
-// Every triangle's points (the incentres of its halves), before those beside a sharp edge are left out.
-Samples samples_of(const Mesh& m, bool inward, double spacing, double count) {
-  Samples s;
-  const auto n = static_cast<std::size_t>(count);
-  s.points.reserve(n);
-  s.normals.reserve(n);
-  s.face.reserve(n);
-  s.area.reserve(n);
-  const double flip = inward ? -1 : 1;
-  for (std::size_t f = 0; f < m.faces(); ++f) {
-    const Triangle& t = m.triangles[f];
-    const Vec3 n = area_normal(m, t);
-    const double length = norm(n);
-    const Vec3 normal = length > 0 && std::isfinite(length) ? (flip / length) * n : Vec3{};
-    halves(m.points[t[0]], m.points[t[1]], m.points[t[2]], 0.5 * length, spacing, [&](Vec3 p, double area) {
-      s.points.push_back(p);
-      s.normals.push_back(normal);
-      s.face.push_back(static_cast<std::uint32_t>(f));
-      s.area.push_back(area);
-    });
-  }
-  return s;
-}
-
-// Leaves out the points within `inset` (a voxel) of a sharp edge or corner of the solid (sharp_edges.h): a
-// ray from beside one runs along the face beyond it, within the grid's interpolation error of crossing it,
-// and reads a thick body as thin. Measured from the solid's edges, not the triangle's, so the same face as
-// two triangles or as 20,000 slivers keeps the same points. A smooth patch narrower than two insets (a thin
-// slab's side, a tube's facet) keeps its points at least half as far from its edges as its farthest.
-void clear_of_edges(const Mesh& m, Samples& s, double inset) {
-  const SharpEdges edges(m, 2 * inset);
-  std::vector<double> clear(s.points.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, clear.size(), 4096),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t i = r.begin(); i != r.end(); ++i) clear[i] = edges.distance(s.points[i]);
-                    });
-  std::vector<double> farthest(edges.patch_count(), 0);
-  for (std::size_t i = 0; i < clear.size(); ++i) {
-    double& f = farthest[edges.patches()[s.face[i]]];
-    f = std::max(f, clear[i]);
-  }
-  // Kept in place, in order (a triangle's points stay consecutive): no second copy of the points.
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < clear.size(); ++i) {
-    if (clear[i] < std::min(inset, 0.5 * farthest[edges.patches()[s.face[i]]])) continue;
-    s.points[kept] = s.points[i];
-    s.normals[kept] = s.normals[i];
-    s.face[kept] = s.face[i];
-    s.area[kept] = s.area[i];
-    ++kept;
-  }
-  s.points.resize(kept);
-  s.normals.resize(kept);
-  s.face.resize(kept);
-  s.area.resize(kept);
-}
 
 // The solid's closed shells (its pieces joined across edges): each face's, and each shell's enclosed volume
 // and box.
@@ -262,23 +130,17 @@ std::vector<double> at_faces(const Mesh& m, const Samples& s, const std::vector<
   return out;
 }
 
-// How many points to measure at (r.spacing apart, set here), with `held` budget points already taken by
-// what measures them. Points every `spacing` on each triangle: the nozzle's width, or a voxel if wider (a thin
-// spot that fits between points is under about the nozzle's spot, no finding), sparser when that would be
-// more points than the budget allows (each point and its rays' readings hold about 80 bytes, five budget
-// points) or 2 million (the triangle budget: the time a slicer's finest mesh takes): the summary then says
-// how sparse. A mesh gets at least a point on every triangle, as many as it already holds.
-double plan_points(const Mesh& m, double held, const PointBudget& budget, PrintReport& r) {
-  r.spacing = std::max(r.voxel, r.rules.nozzle);
+// How many points to measure at, and where (r.spacing apart, set here), with `held` budget points already
+// taken by what measures them. Points every `spacing` on each triangle: the nozzle's width, or a voxel if
+// wider (a thin spot that fits between points is under about the nozzle's spot, no finding), sparser when
+// that would be more points than the budget allows (each point and its rays' readings hold about 80 bytes,
+// five budget points) or 2 million (the triangle budget: the time a slicer's finest mesh takes): the
+// summary then says how sparse. A mesh gets at least a point on every triangle, as many as it already holds.
+SamplePlan plan_points(const Mesh& m, double held, const PointBudget& budget, Progress& progress, PrintReport& r) {
   const double most = std::max(static_cast<double>(m.faces()), std::min(2e6, 0.2 * (budget.left() - held)));
-  double n = sample_count(m, r.spacing, most);
-  if (n > most) {
-    // Halves no longer than s have at most sqrt(3)/4 s² of area each: any finer spacing would surely make
-    // more than `most`. From there a quarter wider at a time.
-    r.spacing = std::max(r.spacing, std::sqrt(r.area / (0.433 * most)));
-    while ((n = sample_count(m, r.spacing, most)) > most) r.spacing *= 1.25;
-  }
-  return n;
+  SamplePlan plan = plan_samples(m, std::max(r.voxel, r.rules.nozzle), r.area, most, progress);
+  r.spacing = plan.spacing;
+  return plan;
 }
 
 // The walls and gaps on the distance grid of m (its parts as OpenVDB meshes them into one level set), at the
@@ -312,11 +174,11 @@ bool measure_on_grid(const Mesh& m, const PointBudget& budget, Progress& progres
                 "'voxel', info --print's --voxel; or a larger --max-points)";
     return false;
   }
-  const double n = plan_points(m, size, budget, r);
+  const SamplePlan plan = plan_points(m, size, budget, progress, r);
   ProgressStage build(progress, 0.3, 0.7);
   const WallGrid grid(v, r.voxel, depth, budget, build, outside);
   r.error = grid.error();
-  s = samples_of(m, r.inward, r.spacing, n);
+  s = samples_of(m, r.inward, plan);
   clear_of_edges(m, s, r.voxel);
   wall.resize(s.points.size());
   gap.resize(s.points.size());
@@ -342,10 +204,10 @@ bool measure_exactly(const Mesh& m, const Shells& shells, const PointBudget& bud
                 " points' worth of memory, over the limit (a larger --max-points)";
     return false;
   }
-  const double n = plan_points(m, size, budget, r);
+  const SamplePlan plan = plan_points(m, size, budget, progress, r);
   ProgressStage build(progress, 0.3, 0.4);
   const TriangleBvh bvh(m, build);
-  s = samples_of(m, r.inward, r.spacing, n);
+  s = samples_of(m, r.inward, plan);
   wall.resize(s.points.size());
   gap.resize(s.points.size());
   ExactRays how{.bvh = &bvh, .faces = s.face, .tmin = r.voxel, .orientation = r.inward ? -1.0 : 1.0};

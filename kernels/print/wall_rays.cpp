@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "kernels/base/error.h"
@@ -139,17 +140,14 @@ void sorted_crossings(const ExactRays& how, Vec3 o, Vec3 d, std::uint32_t own, d
   std::sort(hits.begin(), hits.end(), [](const auto& a, const auto& b) { return a.t < b.t; });
 }
 
-// Both rays of a point at once, one search of the tree along the line through it: the crossings inwards (along
-// -d, up to wall_cap) into `in`, those outwards (along d, up to gap_cap) into `out`, each as sorted_crossings
-// gives them.
-void both_ways(const ExactRays& how, Vec3 o, Vec3 d, std::uint32_t own, const RayLimits& limits,
-               std::vector<TriangleBvh::Hit>& all, std::vector<TriangleBvh::Hit>& in,
-               std::vector<TriangleBvh::Hit>& out) {
-  all.clear();
+// The crossings of one point's two rays, from those of the line through it (t along -d): inwards (along -d,
+// t > tmin) into `in`, outwards (along d) into `out` with t and facing turned round, each by distance, facings
+// turned to the solid's outward side, the point's own triangle left out.
+void split_ways(const ExactRays& how, std::span<const TriangleBvh::Hit> line, std::uint32_t own,
+                std::vector<TriangleBvh::Hit>& in, std::vector<TriangleBvh::Hit>& out) {
   in.clear();
   out.clear();
-  how.bvh->crossings(o, -1.0 * d, -limits.gap_cap, limits.wall_cap, all);
-  for (const TriangleBvh::Hit& h : all) {
+  for (const TriangleBvh::Hit& h : line) {
     if (h.face == own) continue;
     if (h.t > how.tmin) in.push_back({h.t, h.face, h.facing * how.orientation});
     if (h.t < -how.tmin) out.push_back({-h.t, h.face, -h.facing * how.orientation});
@@ -184,26 +182,45 @@ void places(const std::vector<TriangleBvh::Hit>& hits, double tolerance, const S
   }
 }
 
-// One exact reading along a ray, from its sorted crossings: where the winding number, from `start`, first
-// reaches 0 (a wall, start 1) or rises above 0 (a gap, start 0); the cap when it does not within the cap, or
-// when the triangles crossed there do not face the ray as `facing` asks.
+// One exact reading along a ray, from its sorted crossings, the winding number `winding` before them: where
+// it first reaches 0 (a wall, start 1) or rises above 0 (a gap, start 0), the crossing's distance, or the
+// cap when the triangles crossed there do not face the ray as `facing` asks; nothing when these crossings
+// do not get there (`winding` is then the number after them).
+std::optional<double> scan(const std::vector<TriangleBvh::Hit>& hits, double tolerance, double cap, int start,
+                           double facing, int& winding) {
+  std::optional<double> out;
+  places(hits, tolerance, [&](double t, int change, double cosine) {
+    winding += change;
+    if (start == 1 && winding == 0)  // out of the solid: the far side of the wall, facing along the ray
+      out = cosine >= facing ? t : cap;
+    if (start == 0 && winding == 1)  // into the solid: another part, facing back
+      out = -cosine >= facing ? t : cap;
+    return out.has_value();
+  });
+  return out;
+}
+
 double exact_reading(const std::vector<TriangleBvh::Hit>& hits, double tolerance, double cap, int start,
                      double facing) {
   int winding = start;
-  double out = cap;
-  places(hits, tolerance, [&](double t, int change, double cosine) {
-    winding += change;
-    if (start == 1 && winding == 0) {  // out of the solid: the far side of the wall, facing along the ray
-      out = cosine >= facing ? t : cap;
-      return true;
-    }
-    if (start == 0 && winding == 1) {  // into the solid: another part, facing back
-      out = -cosine >= facing ? t : cap;
-      return true;
-    }
-    return false;
-  });
-  return out;
+  return scan(hits, tolerance, cap, start, facing, winding).value_or(cap);
+}
+
+// The same reading for a ray through many triangles within its cap (a solid in model units, 3 mm across,
+// whose sheets lie hundredths of a millimetre apart): its crossings asked for over stretches growing from a
+// 64th of the cap, four times longer each, until one tells.
+double reading_by_stretches(const ExactRays& how, Vec3 o, Vec3 d, std::uint32_t own, double cap, int start,
+                            double facing, std::vector<TriangleBvh::Hit>& hits) {
+  int winding = start;
+  for (double from = how.tmin, to = cap / 64;; from = to, to = std::min(cap, 4 * to)) {
+    hits.clear();
+    how.bvh->crossings(std::span<const Vec3>(&o, 1), d, from, to, hits);
+    std::erase_if(hits, [own](const TriangleBvh::Hit& h) { return h.face == own; });
+    for (TriangleBvh::Hit& h : hits) h.facing *= how.orientation;
+    std::sort(hits.begin(), hits.end(), [](const auto& a, const auto& b) { return a.t < b.t; });
+    if (const std::optional<double> found = scan(hits, how.tmin, cap, start, facing, winding)) return *found;
+    if (to >= cap) return cap;
+  }
 }
 
 // The winding number just outside a face at o (outward d): what the crossings out to `far` leave behind.
@@ -226,22 +243,51 @@ void measure_rays_exact(std::span<const Vec3> points, std::span<const Vec3> norm
     throw Error("internal error: measure_rays_exact needs a tree, positive caps and a face for each point");
   const std::size_t n = points.size();
   const std::size_t chunks = (n + chunk - 1) / chunk;
+  // The points of one triangle (consecutive, one normal) go through the tree together, up to `packet` at
+  // a time (a coarse face's thousands would make too thick a ray).
+  constexpr std::size_t packet = 16;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks, 1), [&](const tbb::blocked_range<std::size_t>& r) {
     std::vector<TriangleBvh::Hit> hits, in, out;
     for (std::size_t c = r.begin(); c != r.end(); ++c) {
       if (progress.cancelled()) return;
-      for (std::size_t i = c * chunk; i < std::min(n, (c + 1) * chunk); ++i) {
-        const Vec3 p = points[i], d = normals[i];
+      const std::size_t end = std::min(n, (c + 1) * chunk);
+      // After a packet through many sheets the next 15 (neighbours: points come face by face) go straight to
+      // stretches; then one tries whole lines again.
+      int dense = 0;
+      for (std::size_t i = c * chunk; i < end;) {
         const std::uint32_t own = how.faces[i];
-        if (d == Vec3{} ||
-            (!how.may_be_buried.empty() && how.may_be_buried[i] && outside_winding(how, p, d, own, hits) > 0)) {
-          wall[i] = limits.wall_cap;
-          gap[i] = limits.gap_cap;
-          continue;
+        const Vec3 d = normals[i];
+        std::size_t j = i + 1;
+        while (j < end && j - i < packet && how.faces[j] == own && normals[j] == d) ++j;
+        hits.clear();
+        // Past 256 boxes and crossings (a printable solid's rays take about 60 and 10): rays through many
+        // sheets, read by stretches.
+        const bool all = d == Vec3{} || (dense == 0 && how.bvh->crossings(points.subspan(i, j - i), -1.0 * d,
+                                                                          -limits.gap_cap, limits.wall_cap, hits, 256));
+        dense = all ? 0 : dense > 0 ? dense - 1 : 15;
+        std::sort(hits.begin(), hits.end(), [](const auto& a, const auto& b) { return a.ray < b.ray; });
+        auto first = hits.begin();
+        for (std::size_t k = i; k < j; ++k) {
+          auto last = first;
+          while (last != hits.end() && last->ray == k - i) ++last;
+          const std::span<const TriangleBvh::Hit> line(first, last);
+          first = last;
+          if (d == Vec3{} ||
+              (!how.may_be_buried.empty() && how.may_be_buried[k] && outside_winding(how, points[k], d, own, in) > 0)) {
+            wall[k] = limits.wall_cap;
+            gap[k] = limits.gap_cap;
+            continue;
+          }
+          if (!all) {
+            wall[k] = reading_by_stretches(how, points[k], -1.0 * d, own, limits.wall_cap, 1, limits.wall_facing, in);
+            gap[k] = reading_by_stretches(how, points[k], d, own, limits.gap_cap, 0, limits.gap_facing, in);
+            continue;
+          }
+          split_ways(how, line, own, in, out);
+          wall[k] = exact_reading(in, how.tmin, limits.wall_cap, 1, limits.wall_facing);
+          gap[k] = exact_reading(out, how.tmin, limits.gap_cap, 0, limits.gap_facing);
         }
-        both_ways(how, p, d, own, limits, hits, in, out);
-        wall[i] = exact_reading(in, how.tmin, limits.wall_cap, 1, limits.wall_facing);
-        gap[i] = exact_reading(out, how.tmin, limits.gap_cap, 0, limits.gap_facing);
+        i = j;
       }
     }
   });

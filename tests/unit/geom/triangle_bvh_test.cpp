@@ -1,6 +1,6 @@
 // The triangles' tree finds exactly the triangles a ray crosses: the same set as testing every triangle,
-// on random soups and rays; a ray through a shared edge or vertex reports each triangle there; a ray in a
-// triangle's plane or past tmax reports nothing; a stop is honoured.
+// on random soups and rays, one at a time or several of one direction together; a ray through a shared edge or vertex
+// reports each triangle there; a ray in a triangle's plane or past tmax reports nothing; a stop is honoured.
 #include "kernels/geom/triangle_bvh.h"
 
 #include <gtest/gtest.h>
@@ -73,6 +73,23 @@ TEST(TriangleBvh, FindsWhatTestingEveryTriangleFinds) {
     found += hits.size();
   }
   EXPECT_GT(found, 100u);  // the rays did cross things
+  // Rays of one direction through the tree together find what each finds alone.
+  for (int r = 0; r < 100; ++r) {
+    const Vec3 d = normalized(Vec3{u(rng), u(rng), u(rng)});
+    const Vec3 c{5 * u(rng), 5 * u(rng), 5 * u(rng)};
+    std::vector<Vec3> origins;
+    for (int k = 0; k < 1 + r % 16; ++k) origins.push_back(c + (r % 2 == 0 ? 0.3 : 2.0) * Vec3{u(rng), u(rng), u(rng)});
+    std::vector<TriangleBvh::Hit> together;
+    bvh.crossings(origins, d, -1, 2, together);
+    for (std::size_t k = 0; k < origins.size(); ++k) {
+      std::vector<TriangleBvh::Hit> alone, mine;
+      bvh.crossings(origins[k], d, -1, 2, alone);
+      for (const auto& h : together)
+        if (h.ray == k) mine.push_back(h);
+      EXPECT_EQ(faces(mine), faces(alone)) << "packet " << r << ", ray " << k;
+      EXPECT_EQ(faces(mine), brute(soup, origins[k], d, -1, 2)) << "packet " << r << ", ray " << k;
+    }
+  }
 }
 
 TEST(TriangleBvh, EdgesVerticesAndPlanes) {
