@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "frontend/bindings/bindings.h"
+#include "frontend/bindings/print_options.h"
 #include "frontend/lua/lua_support.h"
 #include "frontend/lua/options_reader.h"
 #include "frontend/lua/run_context.h"
@@ -42,6 +43,7 @@ int push_made(lua_State* L, Options& o, Make make) {
   o.finish();
   Volume v = make();
   v.voxel = voxel;
+  note_model_box(L, v.bbox());  // a solid this size later is probably still in the region's units
   push_volume(L, std::move(v));
   return 1;
 }

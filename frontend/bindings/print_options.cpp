@@ -195,6 +195,8 @@ void push_print_report(lua_State* L, const print::PrintReport& r) {
   lua_setfield(L, -2, "specks");
   lua_pushnumber(L, r.overhang);
   lua_setfield(L, -2, "overhang");
+  lua_pushnumber(L, r.first_layer);
+  lua_setfield(L, -2, "first_layer");
   lua_pushboolean(L, r.shared);
   lua_setfield(L, -2, "reused");
   if (r.wall.measured) {

@@ -134,7 +134,8 @@ int print_info_command(const std::string& file, const print::PrintRules& rules, 
     const Mesh m = io::dataset_mesh(d);
     const print::PrintReport r = print::check_print(m, rules, budget, no_progress());
     std::printf("file: %s\n%s\n", shown_text(file, 4096).c_str(), r.summary().c_str());
-    for (const std::string& f : r.findings) std::printf("  - %s\n", f.c_str());
+    for (const print::Problem& p : r.problems)
+      std::printf("  - %s: %s\n", print::severity_text(p.severity), p.line().c_str());
     return r.passes() ? 0 : 1;
   } catch (...) {
     return report_failure("info");

@@ -69,6 +69,7 @@ struct PrintReport {
   std::string skipped;                // why walls and gaps were not measured (empty when they were)
   double overhang = 0;                // mm² facing down past rules.overhang along +z, off the bed (overhang.h)
   Vec3 overhang_where;                // its largest face's centre
+  double first_layer = 0;             // mm² it stands on: its cross-section half a layer up (first_layer.h)
   bool shared = false;                // a kept report handed out again (the bindings set it): nothing measured for it
   std::vector<Problem> problems;      // every finding, cosmetic ones too, the most serious first
   std::vector<std::string> findings;  // the lines of those that fail (will fail, may fail)

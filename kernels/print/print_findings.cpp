@@ -131,6 +131,14 @@ void add_findings(PrintReport& r) {
                   "solid.size(s, { fit = {" + short_number(rules.bed.x) + ", " + short_number(rules.bed.y) + ", " +
                       short_number(rules.bed.z) + "} })");
   }
+  // Standing on a point or a knife edge. PrusaSlicer 2.5 stopped ("no extrusions in the first layer") on
+  // pillars whose first layer was 0.03 to 0.34 mm² (0.4 mm nozzle, 0.2 mm layers; some of 0.22 and 0.28 mm²
+  // sliced): under a disc two nozzle widths across (0.5 mm²) the first layer is too small to count on.
+  if (r.first_layer < 4 * r.nozzle_spot())
+    add_problem(r, Severity::will_fail,
+                "it stands on " + area_text(r.first_layer) +
+                    ", under a disc two nozzles across: a slicer prints little or nothing in its first layer",
+                "lay it on a face, solid.orient(s)");
   const double longest = std::max({size.x, size.y, size.z});
   // Under 5 mm is almost always a solid still in its curve's units (a unit box, a radius of 1), not a print.
   if (longest < 5)

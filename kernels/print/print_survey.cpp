@@ -1,9 +1,11 @@
 // The print check's survey besides walls and gaps (print_check.h): where the surface meets itself, told
-// apart by what a slicer makes of it (self_contact.h), and the overhang (overhang.h) with its field.
+// apart by what a slicer makes of it (self_contact.h), the overhang (overhang.h) with its field, and what it
+// stands on (first_layer.h).
 #include <algorithm>
 #include <cmath>
 
 #include "kernels/geom/point_text.h"
+#include "kernels/print/first_layer.h"
 #include "kernels/print/overhang.h"
 #include "kernels/print/print_check.h"
 
@@ -18,6 +20,8 @@ void add_overhang(const Mesh& m, PrintReport& r, Mesh* marked) {
   const Overhang o = overhang_of(m, {.angle = r.rules.overhang}, marked != nullptr);
   r.overhang = o.area;
   r.overhang_where = o.where;
+  // The first layer is about half the nozzle's width high (0.2 mm for 0.4 mm).
+  r.first_layer = first_layer_area(m, 0.5 * r.rules.nozzle);
   if (marked == nullptr) return;
   // A point's angle: the steepest of its faces' (a point on a ceiling's rim is on the ceiling).
   std::vector<double> at_points(m.points.size(), 0);

@@ -175,6 +175,7 @@ expect 0 "info --print passes" -- "$selfsim" info --print "$tmp/p/tet.3mf"
 contains "$tmp/out" "print check (fdm): passes: closed" "print check passes"
 expect 1 "info --print thin" -- "$selfsim" info --print "$tmp/p/plate.stl" --profile sla
 contains "$tmp/out" "walls thinner than 0.4 mm" "print check thin walls"
+contains "$tmp/out" "  - may fail: walls thinner than 0.4 mm" "info --print lists each problem with its severity"
 expect 2 "info --print open" -- "$selfsim" info --print "$tmp/m/open.vtu"
 contains "$tmp/err" "the mesh is open" "print check open"
 expect 1 "info --print, flags after the file" -- "$selfsim" info "$tmp/p/plate.stl" --print --profile sla

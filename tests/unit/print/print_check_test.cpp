@@ -10,6 +10,7 @@
 #include "kernels/base/error.h"
 #include "kernels/region/box_mesh.h"
 #include "print_fixtures.h"
+#include "tests/unit/print/lathe_fixture.h"
 
 using namespace selfsim;
 using namespace selfsim::print;
@@ -266,15 +267,14 @@ TEST(PrintCheck, SpecksAndCreasesAreNotCrossings) {
 // Overhang: a mushroom (a stem of radius 5, a cap of radius 15 on it) overhangs by its cap's underside ring;
 // a cube on the bed by nothing; a sphere by its lower part past 45 degrees.
 TEST(PrintCheck, OverhangOfAMushroomACubeAndASphere) {
-  using print_fixtures::polygon_area;
-  using print_fixtures::revolved;
-  const int sides = 64;
+  using lathe_fixture::polygon_area;
+  const int sides = 32;
   Mesh marked;
-  const Mesh mushroom = revolved({{0, 0}, {5, 0}, {5, 10}, {15, 10}, {15, 15}, {0, 15}}, sides);
-  const PrintReport m = check_print(mushroom, PrintRules{}, PointBudget{}, no_progress(), &marked);
-  EXPECT_NEAR(m.overhang, polygon_area(15, sides) - polygon_area(5, sides), 1e-6) << m.summary();
+  const PrintReport m =
+      check_print(lathe_fixture::mushroom(5, 15), PrintRules{}, PointBudget{}, no_progress(), &marked);
+  EXPECT_NEAR(m.overhang, polygon_area(sides, 15) - polygon_area(sides, 5), 1e-6) << m.summary();
   EXPECT_NEAR(m.overhang_where.z, 10, 1e-9);
-  EXPECT_NE(m.summary().find("overhang 6.3 cm² past 45° (fewer supports: solid.orient(s, { least = \"overhang\" }))"),
+  EXPECT_NE(m.summary().find("overhang 6.2 cm² past 45° (fewer supports: solid.orient(s, { least = \"overhang\" }))"),
             std::string::npos)
       << m.summary();
   ASSERT_NE(marked.face_fields.find("overhang"), nullptr);
@@ -289,17 +289,40 @@ TEST(PrintCheck, OverhangOfAMushroomACubeAndASphere) {
 
   // A sphere of radius 10: the zone within 45 degrees of its lowest point, 2 pi R^2 (1 - cos 45°), less the
   // faces at the pole (on the bed) and the faceting's error.
-  std::vector<std::pair<double, double>> profile;
-  for (int i = 0; i <= 48; ++i) {
-    const double a = 3.14159265358979323846 * i / 48;
-    profile.push_back({10 * std::sin(a), -10 * std::cos(a)});
-  }
-  profile.front().first = profile.back().first = 0;
-  const PrintReport ball = check_print(revolved(profile, 96), PrintRules{}, PointBudget{}, no_progress());
+  const PrintReport ball = check_print(lathe_fixture::sphere(10), PrintRules{}, PointBudget{}, no_progress());
   const double zone = 2 * 3.14159265358979323846 * 100 * (1 - std::sqrt(0.5));
   EXPECT_NEAR(ball.overhang, zone, 0.03 * zone) << ball.summary();
   PrintRules steep;
   steep.overhang = 60;
-  const PrintReport past60 = check_print(revolved(profile, 96), steep, PointBudget{}, no_progress());
+  const PrintReport past60 = check_print(lathe_fixture::sphere(10), steep, PointBudget{}, no_progress());
   EXPECT_LT(past60.overhang, 0.6 * ball.overhang);
+}
+
+// What a solid stands on: the cube its whole base, the mushroom its stem's section, a ball of radius 10 the
+// disc a tenth of a millimetre up (6.3 mm²); a double cone on its tip a point, which a slicer cannot start
+// from (will fail: lay it on a face).
+TEST(PrintCheck, ASolidOnAPointWillFailItsFirstLayer) {
+  using lathe_fixture::polygon_area;
+  const PrintReport cube = check_print(box_mesh({0, 0, 0}, {20, 20, 20}), PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_NEAR(cube.first_layer, 400, 1e-9);
+  EXPECT_FALSE(mentions(cube, "stands on")) << cube.summary();
+  const PrintReport mushroom = check_print(lathe_fixture::mushroom(5, 15), PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_NEAR(mushroom.first_layer, polygon_area(32, 5), 1e-9);
+  const PrintReport ball = check_print(lathe_fixture::sphere(10), PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_NEAR(ball.first_layer, 3.14159265358979 * 2 * 10 * 0.1, 0.2);
+  EXPECT_FALSE(mentions(ball, "stands on")) << ball.summary();
+  const PrintReport cone =
+      check_print(lathe_fixture::lathe({{5, 5}}, 0, 10, 64), PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_LT(cone.first_layer, 0.04);
+  ASSERT_FALSE(cone.problems.empty());
+  EXPECT_EQ(cone.problems.front().severity, Severity::will_fail);
+  EXPECT_NE(cone.problems.front().line().find("stands on"), std::string::npos) << cone.summary();
+  EXPECT_NE(cone.problems.front().fix.find("solid.orient(s)"), std::string::npos) << cone.summary();
+  // A pillar of radius 0.3 (0.28 mm²) fails; one of 0.5 (0.79 mm²) stands.
+  EXPECT_TRUE(mentions(
+      check_print(lathe_fixture::lathe({{0.3, 0}, {0.3, 5}}, 0, 5, 32), PrintRules{}, PointBudget{}, no_progress()),
+      "stands on"));
+  EXPECT_FALSE(mentions(
+      check_print(lathe_fixture::lathe({{0.5, 0}, {0.5, 5}}, 0, 5, 32), PrintRules{}, PointBudget{}, no_progress()),
+      "stands on"));
 }

@@ -16,6 +16,7 @@
 
 #include "kernels/base/error.h"
 #include "kernels/geom/mesh_check.h"
+#include "tests/unit/print/lathe_fixture.h"
 
 using namespace selfsim;
 using namespace selfsim::print;
@@ -25,7 +26,7 @@ namespace {
 constexpr double pi = std::numbers::pi;
 
 // The area of the regular polygon of `sides` corners on a circle of radius r: the tube's cross-section.
-double polygon_area(int sides, double r) { return sides / 2.0 * std::sin(2 * pi / sides) * r * r; }
+using lathe_fixture::polygon_area;
 
 // The tube around c with radii r, checked for what every tube must be: valid, closed, manifold, outward,
 // and exactly as large as tube_size said.
