@@ -68,14 +68,11 @@ int solid_place(lua_State* L) {
   });
 }
 
-// Areas as the print check's summary gives overhang: mm² under 1 cm², cm² above.
-std::string overhang_area(double area) { return area < 100 ? area_text(area) : short_number(area / 100, 2) + " cm²"; }
-
 // "overhang 52 mm² past 45° (was 3.1 cm²)", "no overhang past 45° (was none)".
 std::string overhang_text(double area, double angle, double before) {
   const std::string past =
-      " past " + short_number(angle) + "° (was " + (before > 0 ? overhang_area(before) : "none") + ")";
-  return area > 0 ? "overhang " + overhang_area(area) + past : "no overhang" + past;
+      " past " + short_number(angle) + "° (was " + (before > 0 ? larger_area_text(before) : "none") + ")";
+  return area > 0 ? "overhang " + larger_area_text(area) + past : "no overhang" + past;
 }
 
 // solid.orient(mesh, { face = "largest" } | { least = "overhang", overhang = 45 } | { rotate = 90, axis = {1,0,0} })

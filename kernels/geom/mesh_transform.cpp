@@ -9,12 +9,11 @@
 
 #include "kernels/base/check.h"
 #include "kernels/base/error.h"
+#include "kernels/geom/length_fields.h"
 
 namespace selfsim {
 
 namespace {
-
-constexpr std::array<const char*, 6> length_fields{"thickness", "radius", "width", "wall", "gap", "clearance"};
 
 bool is_normal_field(const Field& f) {
   if (f.components != 3 || f.scalar() != Scalar::Float64) return false;
@@ -39,22 +38,6 @@ void map_normals(Fields& fields, const Affine3& a) {
       const Vec3 out = length > 0 ? (norm(n) / length) * m : m;
       v[i] = out.x, v[i + 1] = out.y, v[i + 2] = out.z;
     }
-  }
-}
-
-// A uniform factor k scales the length fields; none (k <= 0: the scale differs between axes) drops them.
-void map_lengths(Fields& fields, double k) {
-  if (k == 1) return;
-  for (const char* name : length_fields) {
-    const Field* f = fields.find(name);
-    if (f == nullptr) continue;
-    if (!(k > 0) || f->scalar() != Scalar::Float64) {
-      fields.erase(name);
-      continue;
-    }
-    Field g = *f;
-    for (double& x : std::get<1>(g.data)) x *= k;
-    fields.set(std::move(g));
   }
 }
 
@@ -109,7 +92,7 @@ Mesh transformed(const Mesh& m, const Affine3& a, Progress& progress) {
     for (Triangle& t : out.triangles) std::swap(t[1], t[2]);  // a mirror: keep facing outwards
   for (Fields* fields : {&out.point_fields, &out.face_fields}) {
     map_normals(*fields, a);
-    map_lengths(*fields, uniform_factor(a));
+    scale_length_fields(*fields, uniform_factor(a));
   }
   return out;
 }

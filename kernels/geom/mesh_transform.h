@@ -3,9 +3,9 @@
 // then the translation. What rides along with the points follows them: a mirror (an odd number of negative
 // factors) reverses every triangle so the solid still faces outwards; point and face fields named `normal`
 // or `normals` (3 components, any case: VTK's `Normals`) are directions normal to the surface, mapped by the
-// inverse transpose and kept at their length (unit normals stay unit); the length fields of print_size.h
-// (`thickness`, `radius`, `width`, `wall`, `gap`, `clearance`) scale by a uniform factor and are dropped under
-// a non-uniform one, which no single factor describes.
+// inverse transpose and kept at their length (unit normals stay unit); length fields (length_fields.h:
+// `thickness`, `width` and the others) scale by a uniform factor and are dropped under a
+// non-uniform one, which no single factor describes.
 #pragma once
 
 #include <array>

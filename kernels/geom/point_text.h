@@ -39,6 +39,11 @@ inline std::string area_text(double v) {
   return std::to_string(static_cast<long long>(std::llround(v))) + " mm²";
 }
 
+// An area a print's surface has: "52 mm²" under a square centimetre, "3.1 cm²" from there (overhangs).
+inline std::string larger_area_text(double v) {
+  return std::abs(v) < 100 ? area_text(v) : short_number(v / 100, 2) + " cm²";
+}
+
 // A point in millimetres: "(12.31, 3.4, 8) mm".
 inline std::string mm_point_text(Vec3 p) {
   auto number = [](double v) {

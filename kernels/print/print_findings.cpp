@@ -134,12 +134,13 @@ void add_findings(PrintReport& r) {
   // Standing on a point or a knife edge. PrusaSlicer 2.5 stopped ("no extrusions in the first layer") on
   // pillars whose first layer was 0.03 to 0.34 mm² (0.4 mm nozzle, 0.2 mm layers; some of 0.22 and 0.28 mm²
   // sliced): under a disc two nozzle widths across (0.5 mm²) the first layer is too small to count on.
-  if (r.first_layer < 4 * r.nozzle_spot())
+  // (Not said of a solid under 5 mm: still in model units, its first layer grows with solid.size.)
+  const double longest = std::max({size.x, size.y, size.z});
+  if (r.first_layer < 4 * r.nozzle_spot() && longest >= 5)
     add_problem(r, Severity::will_fail,
                 "it stands on " + area_text(r.first_layer) +
                     ", under a disc two nozzles across: a slicer prints little or nothing in its first layer",
                 "lay it on a face, solid.orient(s)");
-  const double longest = std::max({size.x, size.y, size.z});
   // Under 5 mm is almost always a solid still in its curve's units (a unit box, a radius of 1), not a print.
   if (longest < 5)
     add_problem(r, Severity::may_fail,
@@ -154,7 +155,7 @@ namespace {
 std::string overhang_fact(const PrintReport& r) {
   const std::string past = " past " + short_number(r.rules.overhang) + "°";
   if (!(r.overhang > 0)) return "no overhang" + past;
-  const std::string area = r.overhang < 100 ? area_text(r.overhang) : short_number(r.overhang / 100, 2) + " cm²";
+  const std::string area = larger_area_text(r.overhang);
   return "overhang " + area + past + " (fewer supports: solid.orient(s, { least = \"overhang\" }))";
 }
 

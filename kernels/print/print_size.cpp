@@ -7,29 +7,17 @@
 
 #include "kernels/base/check.h"
 #include "kernels/base/error.h"
+#include "kernels/geom/length_fields.h"
 #include "kernels/geom/point_text.h"
 
 namespace selfsim::print {
 
 namespace {
 
-constexpr std::array<const char*, 6> length_fields{"thickness", "radius", "width", "wall", "gap", "clearance"};
-
-void scale_fields(Fields& fields, double k) {
-  for (const char* name : length_fields) {
-    const Field* f = fields.find(name);
-    if (f == nullptr || f->scalar() != Scalar::Float64) continue;
-    Field g = *f;
-    for (double& x : std::get<1>(g.data)) x *= k;
-    fields.set(std::move(g));
-  }
-}
-
 template <class C>
 C scaled_curve(C c, double k) {
   for (auto& p : c.points) p = k * p;
-  scale_fields(c.point_fields, k);
-  scale_fields(c.cell_fields, k);
+  scale_length_fields(c.point_fields, k);  // cell fields are no lengths (length_fields.h)
   if (!c.finite()) throw Error("scaling by " + number_text(k) + " overflows");
   return c;
 }
@@ -69,8 +57,8 @@ double size_factor(const BBox3& box, const SizeOptions& opt) {
 
 Mesh scaled_by(Mesh m, double k) {
   for (Vec3& p : m.points) p = k * p;
-  scale_fields(m.point_fields, k);
-  scale_fields(m.face_fields, k);
+  scale_length_fields(m.point_fields, k);
+  scale_length_fields(m.face_fields, k);
   if (!m.finite()) throw Error("scaling by " + number_text(k) + " overflows");
   return m;
 }
