@@ -2,7 +2,8 @@
 // cross, exactly (to rounding): the print check's walls and gaps (wall_rays.h). Boxes split at the median of
 // their triangles' centres along their longest side, down to leaves of at most four triangles; nodes and
 // triangles in flat arrays, each node's second child an offset from itself, so subtrees built apart (in
-// parallel) are joined by copying.
+// parallel) are joined by copying. (Tried and left: halving a Morton order of the centres built in half the
+// time and made the print check's rays five times slower; boxes in floats saved nothing.)
 //
 // A ray crossing a shared edge or vertex is reported by every triangle there (the barycentric test admits a
 // rounding's width outside each triangle): a caller counting crossings merges those at the same distance

@@ -92,11 +92,13 @@ SamplePlan plan_samples(const Mesh& m, double finest, double area, double most, 
     const Triangle& t = m.triangles[f];
     return std::array<Vec3, 3>{m.points[t[0]], m.points[t[1]], m.points[t[2]]};
   };
-  // At `finest`, all runs adding to one total and stopping once it passes `most`.
+  // At `finest`, all runs adding to one total and stopping once it passes `most`; not counted where the
+  // area alone says it would (the ladder's first rung is then finer than `finest`).
+  const double bound = std::sqrt(area / (0.433 * most));
   std::vector<double> per_run(runs, 0);
-  std::atomic<double> total{0};
+  std::atomic<double> total{bound > finest ? most + 1 : 0};
   tbb::parallel_for(std::size_t(0), runs, [&](std::size_t run) {
-    if (progress.cancelled()) return;
+    if (progress.cancelled() || total.load() > most) return;
     double n = 0;
     for (std::size_t f = run * sample_run; f < std::min(m.faces(), (run + 1) * sample_run); ++f) {
       if (f % 1024 == 0 && total.load(std::memory_order_relaxed) + n > most) break;
@@ -112,7 +114,7 @@ SamplePlan plan_samples(const Mesh& m, double finest, double area, double most, 
   if (progress.cancelled()) throw Cancelled();
   if (total.load() <= most) return plan_of(finest, per_run);
   // Too many: the ladder from the area's bound up, eight rungs a pass, until one fits.
-  double spacing = std::max(finest, std::sqrt(area / (0.433 * most)));
+  double spacing = std::max(finest, bound);
   for (;;) {
     Ladder spacings, squares;
     for (int k = 0; k < rungs; ++k) {

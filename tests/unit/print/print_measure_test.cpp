@@ -136,7 +136,7 @@ TEST(PrintMeasure, AWallOrGapTooThinToResolveSaysATrueBound) {
       for (const auto& [r, spot] : {std::pair{&slab, &slab.wall}, std::pair{&gap, &gap.gap}}) {
         if (rules.voxel == 0) {
           EXPECT_NEAR(spot->value, width, 1e-9) << width << ": " << r->summary();
-          EXPECT_EQ(r->summary().find("under"), std::string::npos) << r->summary();
+          EXPECT_EQ(r->summary().find("finer than it resolves"), std::string::npos) << r->summary();
         } else if (r->summary().find("under") != std::string::npos) {
           EXPECT_TRUE(r->summary().find(r->unresolved()) != std::string::npos) << width << ": " << r->summary();
           EXPECT_GE(2 * r->voxel, width) << r->summary();
