@@ -272,8 +272,7 @@ void measure_rays_exact(std::span<const Vec3> points, std::span<const Vec3> norm
           while (last != hits.end() && last->ray == k - i) ++last;
           const std::span<const TriangleBvh::Hit> line(first, last);
           first = last;
-          if (d == Vec3{} ||
-              (!how.may_be_buried.empty() && how.may_be_buried[k] && outside_winding(how, points[k], d, own, in) > 0)) {
+          if (d == Vec3{}) {
             wall[k] = limits.wall_cap;
             gap[k] = limits.gap_cap;
             continue;
@@ -281,11 +280,18 @@ void measure_rays_exact(std::span<const Vec3> points, std::span<const Vec3> norm
           if (!all) {
             wall[k] = reading_by_stretches(how, points[k], -1.0 * d, own, limits.wall_cap, 1, limits.wall_facing, in);
             gap[k] = reading_by_stretches(how, points[k], d, own, limits.gap_cap, 0, limits.gap_facing, in);
-            continue;
+          } else {
+            split_ways(how, line, own, in, out);
+            wall[k] = exact_reading(in, how.tmin, limits.wall_cap, 1, limits.wall_facing);
+            gap[k] = exact_reading(out, how.tmin, limits.gap_cap, 0, limits.gap_facing);
           }
-          split_ways(how, line, own, in, out);
-          wall[k] = exact_reading(in, how.tmin, limits.wall_cap, 1, limits.wall_facing);
-          gap[k] = exact_reading(out, how.tmin, limits.gap_cap, 0, limits.gap_facing);
+          // A buried point reads both caps: tested (a ray out of the solid's box) only where it read less.
+          const bool capped = !(wall[k] < limits.wall_cap) && !(gap[k] < limits.gap_cap);
+          if (!capped && !how.may_be_buried.empty() && how.may_be_buried[k] &&
+              outside_winding(how, points[k], d, own, in) > 0) {
+            wall[k] = limits.wall_cap;
+            gap[k] = limits.gap_cap;
+          }
         }
         i = j;
       }

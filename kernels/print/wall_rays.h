@@ -54,9 +54,9 @@ struct ExactRays {
   double tmin = 0;         // mm, a rounding's width: crossings closer together are one, none nearer counts
   double orientation = 1;  // -1 when the triangles' winding faces inwards (the points' normals face out)
   // Per point, whether it may lie inside another part of the solid (a speck through a wall, parts that
-  // cross: the caller knows which shells overlap); empty for none. Such a point is tested by a ray `far`
-  // long (past the solid's box): where the winding number beyond its face is over 0 it is no surface of
-  // the solid and reads as both caps, as the grid's union has no surface there.
+  // cross: the caller knows which shells overlap); empty for none. Such a point, where it reads less than
+  // a cap, is tested by a ray `far` long (past the solid's box): where the winding number beyond its face is
+  // over 0 it is no surface of the solid and reads as both caps, as the grid's union has no surface there.
   std::span<const char> may_be_buried;
   double far = 0;
 };
