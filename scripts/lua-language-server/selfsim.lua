@@ -475,7 +475,7 @@ function Volume:boundary(options) end
 ---@field min_gap? number mm
 ---@field triangles? number the triangle budget (2,000,000)
 ---@field bed? number[] {x, y, z} mm: the printer's bed, checked when given
----@field voxel? number mm: the distance grid's voxel
+---@field voxel? number mm: measure walls and gaps on a distance grid of this voxel (default none: exact rays against the triangles)
 ---@field overhang? number degrees from vertical: faces tilted down past it overhang (45, in [1, 89])
 
 ---@class selfsim.PrintProblem
