@@ -231,3 +231,22 @@ TEST(WallRays, ExactRaysKeepTheFacingRules) {
   EXPECT_NEAR(m.wall[0], norm(on - Vec3{0, 0.5, 0}) * std::tan(20 * 3.14159265358979 / 180), 1e-9);
   EXPECT_EQ(exact(w, {on}, {n}, {.wall_cap = 2, .gap_cap = 1, .wall_facing = 0.99}).wall[0], 2);
 }
+
+TEST(WallRays, ExactRaysStopWhenCancelled) {
+  struct Stopped : Progress {
+    bool cancelled() override { return true; }
+  };
+  const Mesh slab = box_mesh({0, 0, 0}, {1, 1, 0.3});
+  const TriangleBvh bvh(slab, no_progress());
+  const std::vector<Vec3> points(5000, Vec3{0.5, 0.5, 0.3}), normals(5000, Vec3{0, 0, 1});
+  const std::vector<std::uint32_t> faces(5000, face_at(slab, {0.3, 0.6, 0.3}));
+  std::vector<double> wall(5000, -1), gap(5000, -1);
+  Stopped stop;
+  EXPECT_THROW(measure_rays_exact(points, normals, {.bvh = &bvh, .faces = faces, .tmin = 1e-9},
+                                  {.wall_cap = 1, .gap_cap = 1}, wall, gap, stop),
+               Cancelled);
+  // Refused: a face for each point is needed.
+  EXPECT_THROW(measure_rays_exact(points, normals, {.bvh = &bvh, .faces = {}, .tmin = 1e-9},
+                                  {.wall_cap = 1, .gap_cap = 1}, wall, gap, no_progress()),
+               Error);
+}
