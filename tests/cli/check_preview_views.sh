@@ -28,6 +28,14 @@ check "--up z: the tree seen along its axis is not upright" fails pixels upright
 preview "$tree" -o "$tmp/yup" --up y
 check "--up y: the same as the tree's own up" pixels same_views "$tmp/up/lsystem_tree3d.png" "$tmp/yup/lsystem_tree3d.png"
 
+# A print (.3mf) stands on its build plate, +z up: the tree printed as a tube (turned to stand along z) is
+# upright with no --up.
+"$selfsim" run "$src/examples/print_tree.lua" --set level=4 --set size=20 -o "$tmp/print" -q 2>"$tmp/run_err"
+check "print tree runs ($(head -1 "$tmp/run_err"))" test -s "$tmp/print/tree.3mf"
+preview "$tmp/print/tree.3mf" -o "$tmp/print"
+check "tree.3mf: exit 0 ($(head -1 "$tmp/err"))" test "$code" = 0
+check "tree.3mf: upright in the front view" pixels upright "$tmp/print/tree.png"
+
 # The run's ParaView view agrees: upright, when pvbatch is there to render it.
 if command -v pvbatch >/dev/null 2>&1; then
   check "view.py: the tree's up axis" grep -q '"up": 1' "$tmp/tree/view.py"

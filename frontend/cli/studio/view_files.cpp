@@ -94,7 +94,7 @@ void write_view(const std::filesystem::path& root, const std::string& file, cons
       most_segments = std::max(most_segments, io::line_segments(d));
       widen(bounds, d);
       if (&s == &steps.back()) {  // the grown result's up and colours, as the preview takes them
-        up = io::up_axis(d);
+        up = io::up_axis(d, s.string());
         own = io::has_own_colours(d);
       }
       if (steps.size() == 1) only = std::move(d);

@@ -1,9 +1,11 @@
 #include "kernels/io/view/up_axis.h"
 
 #include <cmath>
+#include <filesystem>
 #include <type_traits>
 #include <variant>
 
+#include "kernels/base/lower_case.h"
 #include "kernels/geom/mesh.h"
 
 namespace selfsim::io {
@@ -67,6 +69,11 @@ int up_axis(const Dataset& d) {
       }
   }
   return s.axis();
+}
+
+int up_axis(const Dataset& d, const std::string& file) {
+  const std::string ext = lower_case(std::filesystem::path(file).extension().string());
+  return ext == ".3mf" ? 2 : up_axis(d);
 }
 
 int up_axis(const ValueRef& v) {

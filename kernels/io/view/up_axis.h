@@ -3,7 +3,8 @@
 // field named `level` (the step that made each point or face: a developing surface's stack, a growth) that
 // follows one axis strongly makes that axis up, its positive direction up whichever way the level runs (a
 // surface that develops downwards is drawn hanging, as it is). The previews' front and oblique views (preview_png.h)
-// and the ParaView view stand on it; `selfsim preview --up x|y|z` overrides it.
+// and the ParaView view stand on it; `selfsim preview --up x|y|z` overrides it. A 3MF file (a print) stands
+// on its build plate, +z up.
 #pragma once
 
 #include <string>
@@ -20,6 +21,9 @@ inline constexpr double up_correlation = 0.7;
 // 0 (x), 1 (y) or 2 (z): the axis `level` follows (|correlation| at least up_correlation, the largest of
 // the three), else 1. A point field `level` is used before a cell field.
 int up_axis(const Dataset& d);
+// The same for a dataset read from `file`: a 3MF file's up is +z, whatever it holds (3MF places parts on a
+// build plate at z = 0: a print stands on it as the slicer shows it), else up_axis(d).
+int up_axis(const Dataset& d, const std::string& file);
 // The same for a value about to be saved (the run's ParaView view, paraview_view.h); a 2D curve: 1.
 int up_axis(const ValueRef& v);
 

@@ -334,7 +334,7 @@ PreviewPictures render_preview(std::span<const Dataset> steps, const std::string
   const Dataset& last = steps.back();
   plan.direct = options.field.empty() && has_direct_colours(last);
   if (!plan.direct) plan.colouring = steps_colouring(steps, options.field);  // throws for a field not there
-  plan.up = options.up >= 0 && options.up <= 2 ? options.up : up_axis(last);
+  plan.up = options.up >= 0 && options.up <= 2 ? options.up : up_axis(last, options.name);
   ChildLimits limits;
   limits.what = "the VTK renderer";
   // Each frame of --steps is a render and a PNG of its own (about 0.1 s in Mesa's software renderer): a
