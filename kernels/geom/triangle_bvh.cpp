@@ -20,43 +20,56 @@ constexpr std::size_t parallel_from = 16384;
 constexpr double edge_tolerance = 1e-9;
 
 struct Item {
-  Vec3 lo, hi, centre;
+  Vec3 centre;
   std::uint32_t face;
 };
 
 double axis(Vec3 v, int k) { return k == 0 ? v.x : k == 1 ? v.y : v.z; }
 
 struct Builder {
-  std::vector<Item>& items;
+  const Mesh& m;
+  std::vector<Item>& items;  // 32 bytes each: what the splits move about
+  double pad;                // every box is this much wider each way
   Progress& progress;
   std::atomic<bool> stop{false};
 
-  // Appends the subtree over items [first, last) to `out`; returns its depth.
-  std::size_t build(std::size_t first, std::size_t last, std::vector<TriangleBvh::Node>& out) {
-    TriangleBvh::Node node;
-    node.lo = items[first].lo;
-    node.hi = items[first].hi;
+  struct Built {
+    std::size_t depth;
+    Vec3 lo, hi;  // the subtree's triangles' box (its node's, less the pad)
+  };
+
+  // Appends the subtree over items [first, last) to `out`. Boxes are made from the leaves up: a leaf's from
+  // its triangles' corners (its items are in their last places by then), a node's from its children's.
+  Built build(std::size_t first, std::size_t last, std::vector<TriangleBvh::Node>& out) {
+    const std::size_t n = last - first;
+    const std::size_t me = out.size();
+    out.emplace_back();
+    const auto finish = [&](std::size_t depth, Vec3 lo, Vec3 hi) {
+      out[me].lo = lo - Vec3::all(pad);
+      out[me].hi = hi + Vec3::all(pad);
+      return Built{depth, lo, hi};
+    };
+    if (n <= leaf_size) {
+      Vec3 lo = Vec3::all(HUGE_VAL), hi = Vec3::all(-HUGE_VAL);
+      for (std::size_t i = first; i < last; ++i)
+        for (std::uint32_t v : m.triangles[items[i].face]) {
+          lo = min_each(lo, m.points[v]);
+          hi = max_each(hi, m.points[v]);
+        }
+      out[me].first = static_cast<std::uint32_t>(first);
+      out[me].count = static_cast<std::uint32_t>(n);
+      return finish(1, lo, hi);
+    }
+    if (n >= parallel_from && (stop || progress.cancelled())) {
+      stop = true;
+      return {1, {}, {}};
+    }
+    // The median of the centres along the box of centres' longest side.
     Vec3 clo = items[first].centre, chi = clo;
     for (std::size_t i = first + 1; i < last; ++i) {
-      node.lo = min_each(node.lo, items[i].lo);
-      node.hi = max_each(node.hi, items[i].hi);
       clo = min_each(clo, items[i].centre);
       chi = max_each(chi, items[i].centre);
     }
-    const std::size_t n = last - first;
-    const std::size_t me = out.size();
-    if (n <= leaf_size) {
-      node.first = static_cast<std::uint32_t>(first);
-      node.count = static_cast<std::uint32_t>(n);
-      out.push_back(node);
-      return 1;
-    }
-    out.push_back(node);
-    if (n >= parallel_from && (stop || progress.cancelled())) {
-      stop = true;
-      return 1;
-    }
-    // The median of the centres along the box of centres' longest side.
     const Vec3 extent = chi - clo;
     const int k = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
     const std::size_t mid = first + n / 2;
@@ -64,26 +77,27 @@ struct Builder {
                      items.begin() + static_cast<std::ptrdiff_t>(mid),
                      items.begin() + static_cast<std::ptrdiff_t>(last),
                      [k](const Item& a, const Item& b) { return axis(a.centre, k) < axis(b.centre, k); });
+    Built left{}, right{};
     if (n < parallel_from) {
-      const std::size_t left = build(first, mid, out);
+      left = build(first, mid, out);
       out[me].first = static_cast<std::uint32_t>(out.size() - me);
-      return 1 + std::max(left, build(mid, last, out));
+      right = build(mid, last, out);
+    } else {
+      std::vector<TriangleBvh::Node> a, b;
+      tbb::parallel_invoke([&] { left = build(first, mid, a); }, [&] { right = build(mid, last, b); });
+      out[me].first = static_cast<std::uint32_t>(1 + a.size());
+      out.insert(out.end(), a.begin(), a.end());
+      out.insert(out.end(), b.begin(), b.end());
     }
-    std::vector<TriangleBvh::Node> a, b;
-    std::size_t da = 0, db = 0;
-    tbb::parallel_invoke([&] { da = build(first, mid, a); }, [&] { db = build(mid, last, b); });
-    out[me].first = static_cast<std::uint32_t>(1 + a.size());
-    out.insert(out.end(), a.begin(), a.end());
-    out.insert(out.end(), b.begin(), b.end());
-    return 1 + std::max(da, db);
+    return finish(1 + std::max(left.depth, right.depth), min_each(left.lo, right.lo), max_each(left.hi, right.hi));
   }
 };
 
 }  // namespace
 
 double TriangleBvh::size(std::size_t triangles) {
-  // Per triangle: its item while building (80 bytes), its copy for the rays (80), and up to one node (56),
-  // twice while the halves built apart are joined: 272 bytes, 17 points of 16.
+  // Per triangle: its item while building (32 bytes), its copy for the rays (80), and up to one node (56),
+  // twice while the halves built apart are joined: 224 bytes; 17 points of 16 leave room.
   return 17.0 * static_cast<double>(triangles) + 1024;
 }
 
@@ -91,24 +105,22 @@ TriangleBvh::TriangleBvh(const Mesh& m, Progress& progress) {
   if (m.faces() >= UINT32_MAX / 2) throw Error("internal error: TriangleBvh holds under 2^31 triangles");
   std::vector<Item> items;
   items.reserve(m.faces());
+  Vec3 lo = Vec3::all(HUGE_VAL), hi = Vec3::all(-HUGE_VAL);
   for (std::uint32_t f = 0; f < m.faces(); ++f) {
     const Vec3 a = m.points[m.triangles[f][0]], b = m.points[m.triangles[f][1]], c = m.points[m.triangles[f][2]];
     const Vec3 n = cross(b - a, c - a);
     if (!(dot(n, n) > 0) || !is_finite(n)) continue;  // no area: nothing crosses it
-    items.push_back({min_each(a, min_each(b, c)), max_each(a, max_each(b, c)), (1.0 / 3) * (a + b + c), f});
+    items.push_back({(1.0 / 3) * (a + b + c), f});
+    lo = min_each(lo, min_each(a, min_each(b, c)));
+    hi = max_each(hi, max_each(a, max_each(b, c)));
   }
   if (items.empty()) return;
-  Builder builder{items, progress};
-  nodes_.reserve(items.size());
-  depth_ = builder.build(0, items.size(), nodes_);
-  if (builder.stop || progress.cancelled()) throw Cancelled();
   // Boxes a little wider than their triangles: the slab test's rounding never drops a ray that touches one.
-  const Vec3 whole = nodes_[0].hi - nodes_[0].lo;
-  const double pad = 1e-9 * std::max({whole.x, whole.y, whole.z, 1e-300});
-  for (Node& node : nodes_) {
-    node.lo -= Vec3::all(pad);
-    node.hi += Vec3::all(pad);
-  }
+  const Vec3 whole = hi - lo;
+  Builder builder{m, items, 1e-9 * std::max({whole.x, whole.y, whole.z, 1e-300}), progress};
+  nodes_.reserve(items.size());
+  depth_ = builder.build(0, items.size(), nodes_).depth;
+  if (builder.stop || progress.cancelled()) throw Cancelled();
   tris_.reserve(items.size());
   for (const Item& it : items) {
     const Triangle& t = m.triangles[it.face];
