@@ -68,11 +68,12 @@ usage:
                              .pvd or .vtp.series, its steps and then the last one
   selfsim info --print FILE [--profile fdm|sla] [--voxel MM] [--max-points N]
                              the print check of a closed solid in millimetres (.stl .3mf .obj .ply
-                             .vtp): closed, crossing, thinnest wall, narrowest gap, triangles, size.
-                             --voxel: the distance grid's (default a third of the smaller of the
-                             profile's least wall and gap, at most half of it); --max-points: the
-                             grid's and the points' budget, as for run (a large part needs a larger
-                             voxel or budget). Exit 0 passes, 1 with its findings, 2 error
+                             .vtp): closed, crossing, thinnest wall, narrowest gap, what it stands
+                             on, overhang, triangles, size; each problem with its severity and fix.
+                             --voxel: walls and gaps on a distance grid of this voxel (default none:
+                             exact rays against the triangles; at most half the profile's least wall
+                             and gap); --max-points: the budget, as for run. Exit 0 passes, 1 with
+                             its findings, 2 error
   selfsim preview FILE... [-o DIR] [-q] [--field NAME] [--up x|y|z] [--steps] [--timeout S]
                              [--max-memory SIZE] [--max-points N] [--as NAME FILE]...
                              a PNG picture of each file (.vtp .vtu .svg .stl .obj .ply .3mf, .vdb as

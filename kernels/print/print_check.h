@@ -3,9 +3,11 @@
 //   - whether the mesh is a closed 2-manifold facing outwards (an open surface is refused: thicken it first);
 //   - whether it crosses itself, and where, told from creases and sealed specks a slicer fuses
 //     (self_contact.h);
-//   - the thinnest wall and the narrowest gap between parts, measured on the solid's OpenVDB signed distance
-//     grid (wall_rays.h: from every triangle's incentre, inwards to the far side of the wall
-//     and outwards to the next part), within the grid's interpolation error (WallGrid::error);
+//   - the thinnest wall and the narrowest gap between parts, by rays from points on every triangle, inwards
+//     to the far side of the wall and outwards to the next part (wall_rays.h): exact rays against the
+//     triangles (triangle_bvh.h) by default, or with a voxel on the solid's OpenVDB distance grid, within its
+//     interpolation error (WallGrid::error);
+//   - what it stands on (first_layer.h) and its overhang (overhang.h);
 //   - the triangle count and the bounding box, against the triangle budget and the printer's bed;
 //   - a solid under 5 mm across, which is most often one still in its curve's units.
 // Thin walls or narrow gaps over less area than the nozzle's spot (a disc of its width), and under a tenth
@@ -64,7 +66,8 @@ struct PrintReport {
   SelfContact contact;                   // crossings, creases and specks (self_contact.h)
   Spot wall, gap;
   double wall_cap = 0, gap_cap = 0;   // walls and gaps at least this wide read as this
-  double voxel = 0, error = 0;        // the distance grid's voxel and interpolation error (mm)
+  double voxel = 0, error = 0;        // the distance grid's voxel and interpolation error (mm); exact rays: their
+                                      // rounding width (1e-10 of the size) and 0
   double spacing = 0;                 // mm: triangles are measured at points about this far apart
   std::string skipped;                // why walls and gaps were not measured (empty when they were)
   double overhang = 0;                // mm² facing down past rules.overhang along +z, off the bed (overhang.h)

@@ -24,7 +24,7 @@ struct PrintRules {
   double max_triangles = 2e6;  // more is a finding (decimate)
   double overhang = 45;        // degrees from vertical: faces tilted down past it need support (overhang.h)
   Vec3 bed{};                  // mm: the build volume; zero: not checked
-  double voxel = 0;            // mm: the distance grid's; 0 for a third of the smaller of min_wall and min_gap
+  double voxel = 0;            // mm: walls and gaps on a distance grid of this voxel; 0: exact rays, no grid
 
   // Throws Error naming the option ("option 'min_wall' must be a number in [0.01, 100] (mm), got 0").
   void validate() const;

@@ -187,8 +187,8 @@ expect 2 "info --print curve" -- "$selfsim" info --print "$tmp/p/curve.vtp"
 contains "$tmp/err" "it holds curves (polylines), not a solid's surface: make a solid of it first" "print check curve"
 expect 2 "info --print bad profile" -- "$selfsim" info --print "$tmp/p/tet.3mf" --profile laser
 # A grid over the budget: the check says so and names the flags that measure it, which info --print takes
-# (the 20 mm cube's grid is 1.9 million points at the 0.13 mm voxel, 0.8 million at 0.2 mm).
-expect 1 "info --print over --max-points" -- "$selfsim" info --print "$tmp/p/tet.3mf" --max-points 1e6
+# (the 20 mm cube's grid is 1.5 million points at a 0.15 mm voxel, 0.8 million at 0.2 mm).
+expect 1 "info --print over --max-points" -- "$selfsim" info --print "$tmp/p/tet.3mf" --max-points 1e6 --voxel 0.15
 contains "$tmp/out" "walls and gaps not measured" "info --print over --max-points: not measured"
 contains "$tmp/out" "info --print's --voxel; or a larger --max-points" "info --print over --max-points: the flags"
 expect 0 "info --print --voxel" -- "$selfsim" info --print --voxel 0.2 "$tmp/p/tet.3mf" --max-points 1e6
