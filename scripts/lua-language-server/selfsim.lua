@@ -491,6 +491,7 @@ function Volume:boundary(options) end
 ---@field creases integer pairs of triangles where the surface touches itself (cosmetic)
 ---@field specks integer sealed pieces smaller than the nozzle's spot (cosmetic)
 ---@field overhang number mm² facing down past the `overhang` angle, off the bed (supports)
+---@field first_layer number mm² it stands on: its cross-section half a layer above its lowest point
 ---@field reused boolean this call measured nothing: the solid's earlier check (its warning's, save's) was shared
 ---@field triangles integer
 ---@field size number[] {x, y, z} mm
