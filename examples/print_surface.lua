@@ -8,7 +8,9 @@
 -- thickened (levels 5: gaps at about 2,000 places). OpenVDB's adaptive meshing (`adaptivity` > 0) makes
 -- fewer triangles but can make the solid cross itself at such folds: the check says so.
 --   selfsim run examples/print_surface.lua                               -- passes, about 40 s
---   selfsim run examples/print_surface.lua --set levels=3 --set smooth=1    -- a quick draft
+--   selfsim run examples/print_surface.lua --set levels=3 --set smooth=1    -- a quick draft; it stands on
+--     a point, which the check says will fail (PrusaSlicer stops at its first layer): solid.orient lays it
+--     on a face
 local levels = param("levels", 4)
 local ball = volume.sphere { center = {0,0,0}, radius = 1 }
 local s, grown = exclusion.surface { region = ball, start = { {-.6,-.4,0}, {.6,-.4,0}, {0,.6,0} },
