@@ -3,12 +3,7 @@
 -- moves and mirrors (still facing outwards).
 local near = require("test_helpers").near
 
-local function box(x0, y0, z0, x1, y1, z1)
-  return mesh { points = { { x0, y0, z0 }, { x1, y0, z0 }, { x1, y1, z0 }, { x0, y1, z0 },
-                           { x0, y0, z1 }, { x1, y0, z1 }, { x1, y1, z1 }, { x0, y1, z1 } },
-                triangles = { { 1, 3, 2 }, { 1, 4, 3 }, { 5, 6, 7 }, { 5, 7, 8 }, { 1, 2, 6 }, { 1, 6, 5 },
-                              { 2, 3, 7 }, { 2, 7, 6 }, { 3, 4, 8 }, { 3, 8, 7 }, { 4, 1, 5 }, { 4, 5, 8 } } }
-end
+local box = require("test_helpers").box
 
 -- A solid of revolution: rings {radius, z} around the z axis, closed by fans at `bottom` and `top`.
 local function lathe(rings, bottom, top, sides)

@@ -1,12 +1,7 @@
 -- One solid from several (issue 40): solids apart are joined exactly (their triangles summed); a rim on a
 -- base plate, which meet, become one closed solid on a grid; a cut through a plate makes a hole; an open
 -- surface is refused. And a plant's tube on the grid tapers by its `width`: thinner at the tips.
-local function box(x0, y0, z0, x1, y1, z1)
-  return mesh { points = { { x0, y0, z0 }, { x1, y0, z0 }, { x1, y1, z0 }, { x0, y1, z0 },
-                           { x0, y0, z1 }, { x1, y0, z1 }, { x1, y1, z1 }, { x0, y1, z1 } },
-                triangles = { { 1, 3, 2 }, { 1, 4, 3 }, { 5, 6, 7 }, { 5, 7, 8 }, { 1, 2, 6 }, { 1, 6, 5 },
-                              { 2, 3, 7 }, { 2, 7, 6 }, { 3, 4, 8 }, { 3, 8, 7 }, { 4, 1, 5 }, { 4, 5, 8 } } }
-end
+local box = require("test_helpers").box
 
 -- Apart: exact, the triangles of both.
 local two = solid.union { box(0, 0, 0, 10, 10, 10), box(20, 0, 0, 30, 10, 10) }
