@@ -37,6 +37,13 @@ Vec3 area_normal(const Mesh& m, const Triangle& t) {
   return cross(b - a, c - a);
 }
 
+BBox3 corner_bbox(const Mesh& m) {
+  BBox3 b;
+  for (const Triangle& t : m.triangles)
+    for (std::uint32_t v : t) b.add(m.points[v]);
+  return b;
+}
+
 double surface_area(const Mesh& m) {
   double a = 0;
   for (const Triangle& t : m.triangles) a += 0.5 * norm(area_normal(m, t));

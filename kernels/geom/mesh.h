@@ -39,6 +39,11 @@ struct Mesh {
 // Outward normal of triangle t times twice its area (zero for a degenerate triangle).
 Vec3 area_normal(const Mesh& m, const Triangle& t);
 
+// The box over the points the triangles use: what the solid occupies. Points no triangle uses (left by a
+// filter, or a stray point in a loaded file) do not count, unlike Mesh::bbox(). Empty for a mesh without
+// triangles.
+BBox3 corner_bbox(const Mesh& m);
+
 // The sum of the triangles' areas.
 double surface_area(const Mesh& m);
 
