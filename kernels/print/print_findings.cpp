@@ -24,7 +24,7 @@ std::string scale_up(double k, bool resolved, const std::string& lead) {
   return lead + times(k) + (resolved ? "" : " or more") + " (solid.size)";
 }
 
-// A tube's radius for walls of `wall`, and a thickness, as a recipe writes them: "0.8".
+// A thickness as a recipe writes it: "0.8".
 std::string length(double v) { return short_number(v); }
 
 void add_walls(PrintReport& r) {
@@ -38,8 +38,7 @@ void add_walls(PrintReport& r) {
   add_problem(r, v < rules.nozzle ? Severity::will_fail : Severity::may_fail,
               "walls thinner than " + mm_text(rules.min_wall) + " at " + places + ", the thinnest " + value + " at " +
                   mm_point_text(r.wall.where),
-              "thicken to " + mm_text(rules.min_wall) + " (thickness = " + length(rules.min_wall) +
-                  ", a tube's radius = " + length(rules.min_wall / 2) + ")" +
+              "thicken to " + mm_text(rules.min_wall) + " (thickness = " + length(rules.min_wall) + ")" +
                   scale_up(rules.min_wall / v, r.resolves(r.wall.value), " or scale up "));
 }
 
@@ -136,7 +135,8 @@ void add_findings(PrintReport& r) {
   // sliced): under a disc two nozzle widths across (0.5 mm²) the first layer is too small to count on.
   // (Not said of a solid under 5 mm: still in model units, its first layer grows with solid.size.)
   const double longest = std::max({size.x, size.y, size.z});
-  if (r.first_layer < 4 * r.nozzle_spot() && longest >= 5)
+  // Resin prints stand on supports (sla): only a printer that lays the first layer on its bed needs one.
+  if (r.first_layer < 4 * r.nozzle_spot() && longest >= 5 && r.rules.profile != "sla")
     add_problem(r, Severity::will_fail,
                 "it stands on " + area_text(r.first_layer) +
                     ", under a disc two nozzles across: a slicer prints little or nothing in its first layer",
@@ -151,12 +151,14 @@ void add_findings(PrintReport& r) {
 
 namespace {
 
-// "overhang 320 mm² past 45° (fewer supports: solid.orient)", or "no overhang past 45°".
+// "overhang 3.2 cm² past 45°", or "no overhang past 45°"; over a twentieth of the surface it names the call
+// that turns the solid to need fewer supports (under it, turning gains little and the advice is noise).
 std::string overhang_fact(const PrintReport& r) {
   const std::string past = " past " + short_number(r.rules.overhang) + "°";
   if (!(r.overhang > 0)) return "no overhang" + past;
-  const std::string area = larger_area_text(r.overhang);
-  return "overhang " + area + past + " (fewer supports: solid.orient(s, { least = \"overhang\" }))";
+  const std::string fact = "overhang " + larger_area_text(r.overhang) + past;
+  if (r.overhang < 0.05 * r.area) return fact;
+  return fact + " (fewer supports: solid.orient(s, { least = \"overhang\" }))";
 }
 
 std::string tagged(const Problem& p) { return std::string(severity_text(p.severity)) + ": " + p.line(); }
