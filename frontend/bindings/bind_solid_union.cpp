@@ -55,12 +55,6 @@ Listed read_list(lua_State* L, int index, const std::string& what, const std::st
   return out;
 }
 
-double held_size(const Listed& l) {
-  double points = 0;
-  for (const Mesh* m : l.solids) points += budget_size(*m);
-  return points;
-}
-
 void finish(lua_State* L, const char* fn, print::UnionResult r, const PrintCheckOption& check) {
   if (!RunContext::of(L).config.quiet) std::printf("%s%s: %s\n", recipe_where(L).c_str(), fn, r.how.c_str());
   push_geometry(L, std::move(r.solid));
@@ -75,8 +69,8 @@ int solid_union(lua_State* L) {
     Listed l = read_list(L, 1, "solid", call);
     if (l.solids.size() < 2)
       throw Error("takes at least two solids, " + call + ", got " + std::to_string(l.solids.size()));
-    // The joined copy, and the work copies turned outwards: the grid predicts its own (volume_boundary).
-    check_run_budget(L, 2 * held_size(l), "the union's copies of its solids");
+    // The work copies turned outwards, a pair's test or the result: the grid predicts its own (volume_boundary).
+    check_run_budget(L, print::union_work_size(l.solids), "the union's copies of its solids");
     print::UnionResult r = with_budget(L, [&](const PointBudget& b) {
       l.opt.budget = b;
       return print::solid_union(l.solids, l.opt, RunContext::of(L));
@@ -102,7 +96,9 @@ int solid_difference(lua_State* L) {
       cuts = read_list(L, 2, "cut", call);
       if (cuts.solids.empty()) throw Error("argument 2 lists no solid to cut away, " + call);
     }
-    check_run_budget(L, 2 * (held_size(cuts) + budget_size(*from)), "the difference's copies of its solids");
+    std::vector<const Mesh*> all{from.get()};
+    all.insert(all.end(), cuts.solids.begin(), cuts.solids.end());
+    check_run_budget(L, print::union_work_size(all), "the difference's copies of its solids");
     print::UnionResult r = with_budget(L, [&](const PointBudget& b) {
       cuts.opt.budget = b;
       return print::solid_difference(*from, cuts.solids, cuts.opt, RunContext::of(L));

@@ -10,11 +10,13 @@
 #pragma once
 
 #include <span>
+#include <string>
 #include <vector>
 
 #include "kernels/base/budget.h"
 #include "kernels/base/progress.h"
 #include "kernels/geom/mesh.h"
+#include "kernels/geom/point_text.h"
 #include "kernels/geom/polyline.h"
 #include "kernels/print/round_cone.h"
 
@@ -43,12 +45,17 @@ Mesh grid_tube(const Polyline& c, std::span<const double> radii, const GridTubeO
 
 // The voxel such a tube is built at: opt.voxel when given (positive, at most the largest radius), else a
 // quarter of the thinnest radius, coarsened by steps of 1.25 while the tube would not fit the budget (down
-// to a quarter of the largest radius; past it the build is refused).
+// to a quarter of the largest radius; past it the build is refused). Its round cones are counted before any
+// is made: a voxel at which their list alone would not fit is passed over without making it.
 double grid_tube_voxel(const Polyline3& c, std::span<const double> radii, const GridTubeOptions& opt);
 double grid_tube_voxel(const Polyline& c, std::span<const double> radii, const GridTubeOptions& opt);
 
-// The OpenVDB plugin's part (round_tube.cpp). Budget points the union of round cones takes at `voxel`: the
-// narrow band's voxels and nodes, the lists of cones near each block of voxels, and the meshed surface.
+// A voxel in a message: "0.13 mm", and below a hundredth of a millimetre two significant digits ("0.0012 mm").
+inline std::string voxel_text(double voxel) { return voxel >= 0.01 ? mm_text(voxel) : short_number(voxel, 2) + " mm"; }
+
+// The OpenVDB plugin's part (round_tube.cpp). Budget points the union of round cones takes at `voxel`:
+// `segments` (the caller's) and the plugin's copy of them, the narrow band's voxels and nodes, the list of
+// (block, cone) pairs, and the meshed surface.
 double round_tube_size(const std::vector<RoundSegment>& segments, double voxel);
 // The union's closed surface at opt.voxel (> 0). Throws BudgetError over the budget, Error when the mesher
 // does not close it, Cancelled on a stop.

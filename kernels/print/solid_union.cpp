@@ -89,32 +89,47 @@ std::string grid_reason(Lie lie, const std::string& first, const std::string& se
   return "";
 }
 
-UnionResult on_grid(Volume::Kind kind, const std::vector<Mesh>& parts, const UnionOptions& opt, const std::string& why,
+// Budget points a mesh holds (16 bytes each): its points and triangles, as the run counts a mesh value.
+double mesh_points(const Mesh& m) { return static_cast<double>(m.points.size() + m.triangles.size()); }
+
+// The parts (moved in, not copied again) on a grid. The grid's prediction is checked against the budget
+// less the parts, which are held while it is built.
+UnionResult on_grid(Volume::Kind kind, std::vector<Mesh> parts, const UnionOptions& opt, const std::string& why,
                     Progress& progress) {
   std::vector<const Mesh*> p;
   for (const Mesh& m : parts) p.push_back(&m);
   const double voxel = opt.voxel > 0 ? opt.voxel : union_voxel(p);
+  PointBudget budget = opt.budget;
   std::vector<std::shared_ptr<const Volume>> volumes;
-  for (const Mesh& m : parts) {
+  for (Mesh& m : parts) {
+    budget.held += mesh_points(m);
     // The solid as it is (Volume::closed_mesh would refuse one touching itself, which a level set takes).
     Volume v;
     v.kind = Volume::Kind::mesh;
-    Mesh bare = m;
-    bare.point_fields = bare.face_fields = {};
-    v.mesh = std::make_shared<const Mesh>(std::move(bare));
+    m.point_fields = m.face_fields = {};
+    v.mesh = std::make_shared<const Mesh>(std::move(m));
     v.bounds = v.mesh->bbox();
     v.held_bytes = static_cast<double>(sizeof(Volume) + v.mesh->bytes());
     volumes.push_back(std::make_shared<const Volume>(std::move(v)));
   }
   const Volume all = Volume::combine(kind, std::move(volumes));
   UnionResult r;
-  r.solid = volume_boundary(all, voxel, opt.budget, progress);
+  r.solid = volume_boundary(all, voxel, budget, progress);
   r.voxel = voxel;
   r.how = "on a " + mm_text(voxel) + " grid (" + why + ")";
   return r;
 }
 
 }  // namespace
+
+double union_work_size(std::span<const Mesh* const> solids) {
+  double points = 0, triangles = 0;
+  for (const Mesh* m : solids) {
+    points += mesh_points(*m);
+    triangles += static_cast<double>(m->triangles.size());
+  }
+  return 2 * points + triangles * 150 / 16;
+}
 
 double union_voxel(std::span<const Mesh* const> solids) {
   double thinnest = 0.8;  // 4 x 0.2 mm
@@ -136,7 +151,7 @@ UnionResult solid_union(std::span<const Mesh* const> solids, const UnionOptions&
       if (!kept[j]) continue;
       const Lie lie = how_they_lie(parts[i], parts[j], progress);
       const std::string why = grid_reason(lie, "solid " + std::to_string(i + 1), "solid " + std::to_string(j + 1));
-      if (!why.empty()) return on_grid(Volume::Kind::unite, parts, opt, why, progress);
+      if (!why.empty()) return on_grid(Volume::Kind::unite, std::move(parts), opt, why, progress);
       if (lie == Lie::first_inside) kept[i] = false;
       if (lie == Lie::second_inside) kept[j] = false;
     }
@@ -163,7 +178,7 @@ UnionResult solid_difference(const Mesh& from, std::span<const Mesh* const> cuts
   for (std::size_t i = 1; i < parts.size(); ++i) {
     const Lie lie = how_they_lie(parts[0], parts[i], progress);
     const std::string why = grid_reason(lie, "the solid", "cut " + std::to_string(i));
-    if (!why.empty()) return on_grid(Volume::Kind::subtract, parts, opt, why, progress);
+    if (!why.empty()) return on_grid(Volume::Kind::subtract, std::move(parts), opt, why, progress);
     if (lie == Lie::first_inside)
       throw Error("the solid cut from lies wholly inside cut " + std::to_string(i) + ": nothing is left");
     if (lie == Lie::second_inside) cavities.push_back(i);
@@ -177,7 +192,7 @@ UnionResult solid_difference(const Mesh& from, std::span<const Mesh* const> cuts
       if (!kept[i] || !kept[j]) continue;
       const Lie lie = how_they_lie(parts[i], parts[j], progress);
       const std::string why = grid_reason(lie, "cut " + std::to_string(i), "cut " + std::to_string(j));
-      if (!why.empty()) return on_grid(Volume::Kind::subtract, parts, opt, why, progress);
+      if (!why.empty()) return on_grid(Volume::Kind::subtract, std::move(parts), opt, why, progress);
       if (lie == Lie::first_inside) kept[i] = false;
       if (lie == Lie::second_inside) kept[j] = false;
     }

@@ -33,6 +33,13 @@ struct UnionResult {
 // nozzle: finer than a print resolves is not needed).
 double union_voxel(std::span<const Mesh* const> solids);
 
+// Budget points (16 bytes) solid_union or solid_difference of `solids` (all of them, the solid cut from among
+// them) holds besides its grid, whose own prediction volume_boundary checks against the budget less these:
+// a copy of every solid turned outwards, and beside it either the exact result or, while two solids are
+// tested for meeting, their joined copy and first_intersection's index (at most about 150 bytes a triangle,
+// mesh_intersections.h). Bounded by every solid's size rather than the largest two's.
+double union_work_size(std::span<const Mesh* const> solids);
+
 // The union of `solids` (at least one; each closed, of either facing). Throws Error naming the first solid
 // that is not closed ("solid 2 is not closed: ..."), BudgetError for a grid over the budget (predicted
 // before any work), Error when the grid's surface is empty or not closed, Cancelled on a stop.

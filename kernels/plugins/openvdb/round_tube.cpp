@@ -5,7 +5,9 @@
 // written here, block by block: each cone is listed with the 8³-voxel blocks (OpenVDB's leaves) its band
 // reaches, a block wholly inside one cone is dropped (its inside is signed by the flood fill from the band
 // around it), and each listed block's voxels take the least distance of its cones. Memory is the band's, not
-// the solid's inside: a trunk's thick core costs nothing.
+// the solid's inside: a trunk's thick core costs nothing. The (block, cone) pairs are one flat list, sorted
+// by block, 16 bytes a pair, reserved at the count of blocks the cones' boxes reach (what the size predicts):
+// hash maps of lists cost about 100 bytes a block.
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/SignedFloodFill.h>
 
@@ -13,9 +15,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
-#include <unordered_map>
-#include <unordered_set>
 
 #include "kernels/base/budget.h"
 #include "kernels/base/check.h"
@@ -52,10 +53,22 @@ RoundSegment local(const RoundSegment& c, const vdb::Frame& f) {
   return {v(c.a), v(c.b), c.ra / f.voxel, c.rb / f.voxel};
 }
 
+// The reach of a cone's band beyond its axis, in voxels.
+double reach_of(const RoundSegment& c) { return std::max(c.ra, c.rb) + band + 1; }
+
+// How many blocks blocks_near visits (c in the frame's voxels).
+double blocks_count(const RoundSegment& c) {
+  const double r = reach_of(c);
+  double n = 1;
+  for (const auto& [a, b] : {std::pair{c.a.x, c.b.x}, std::pair{c.a.y, c.b.y}, std::pair{c.a.z, c.b.z}})
+    n *= std::floor((std::max(a, b) + r) / block) - std::floor((std::min(a, b) - r) / block) + 1;
+  return n;
+}
+
 // The blocks (by their lowest voxel / 8) a cone's box and band reach.
 template <class Visit>
 void blocks_near(const RoundSegment& c, Visit&& visit) {
-  const double r = std::max(c.ra, c.rb) + band + 1;
+  const double r = reach_of(c);
   std::array<std::int64_t, 3> lo, hi;
   const std::array<double, 6> ends{std::min(c.a.x, c.b.x), std::min(c.a.y, c.b.y), std::min(c.a.z, c.b.z),
                                    std::max(c.a.x, c.b.x), std::max(c.a.y, c.b.y), std::max(c.a.z, c.b.z)};
@@ -80,6 +93,14 @@ std::array<std::int64_t, 3> block_of(std::uint64_t key) {
           static_cast<std::int64_t>(key & mask) - off};
 }
 
+// A block and one cone whose band reaches it, or `inside` for a block wholly inside some cone.
+struct Pair {
+  std::uint64_t key;
+  std::uint32_t cone;
+  bool operator<(const Pair& o) const { return key != o.key ? key < o.key : cone < o.cone; }
+};
+constexpr std::uint32_t inside = std::numeric_limits<std::uint32_t>::max();
+
 double lateral_area(const RoundSegment& c) {
   const double l = norm(c.b - c.a), r = std::max(c.ra, c.rb);
   return std::numbers::pi * (c.ra + c.rb) * std::hypot(l, c.ra - c.rb) + 4 * std::numbers::pi * r * r;
@@ -97,24 +118,21 @@ double round_tube_size(const std::vector<RoundSegment>& segments, double voxel) 
     area += lateral_area(c);
     corners.push_back(c.a);
     corners.push_back(c.b);
-    const RoundSegment l = local(c, f);
-    const double r = std::max(l.ra, l.rb) + band + 1;
-    double n = 1;
-    for (const auto& [a, b] : {std::pair{l.a.x, l.b.x}, std::pair{l.a.y, l.b.y}, std::pair{l.a.z, l.b.z}})
-      n *= std::floor((std::max(a, b) + r) / block) - std::floor((std::min(a, b) - r) / block) + 1;
-    pairs += n;
+    pairs += blocks_count(local(c, f));
   }
-  // The band's leaves, whole blocks 8 voxels across (and inner nodes), a list entry of 4 bytes per (block,
-  // cone) pair and the key of each block listed, and the meshed surface (its points and twice as many
-  // triangles at the voxel's spacing).
-  return vdb::tree_size(corners, area, f, 2 * block) + pairs / 4 + pairs / 2 + 3 * area / (voxel * voxel);
+  // The cones twice (the caller's and the frame's copy), the band's leaves, whole blocks 8 voxels across (and
+  // inner nodes), the list of (block, cone) pairs, and the meshed surface (its points and twice as many
+  // triangles at the voxel's spacing). Budget points are 16 bytes.
+  const double cones = 2 * static_cast<double>(segments.size() * sizeof(RoundSegment)) / 16;
+  const double list = pairs * static_cast<double>(sizeof(Pair)) / 16;
+  return cones + vdb::tree_size(corners, area, f, 2 * block) + list + 3 * area / (voxel * voxel);
 }
 
 Mesh round_tube_on_grid(const std::vector<RoundSegment>& segments, const GridTubeOptions& opt, Progress& progress) {
   if (segments.empty()) throw Error("the curve has no segment of non-zero length to make a tube of");
   const double voxel = opt.voxel;
   check_budget(round_tube_size(segments, voxel), opt.budget,
-               "a tube on a grid at voxel size " + number_text(voxel) + " (set a larger 'voxel')");
+               "a tube on a grid at voxel size " + voxel_text(voxel) + " (set a larger 'voxel')");
   progress.start("a tube on a grid");
   vdb::initialise_openvdb();
   const vdb::Frame f = frame_around(segments, voxel);
@@ -122,30 +140,35 @@ Mesh round_tube_on_grid(const std::vector<RoundSegment>& segments, const GridTub
   cones.reserve(segments.size());
   for (const RoundSegment& c : segments) cones.push_back(local(c, f));
 
-  // Each block with the cones whose band reaches it; blocks wholly inside a cone apart.
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> near;
-  std::unordered_set<std::uint64_t> inside;
+  // Each block with the cones whose band reaches it, or marked wholly inside one; sorted by block.
+  double most = 0;
+  for (const RoundSegment& c : cones) most += blocks_count(c);
+  std::vector<Pair> pairs;
+  pairs.reserve(static_cast<std::size_t>(most));
   for (std::size_t n = 0; n < cones.size(); ++n) {
     if ((n & 1023) == 1023 && progress.cancelled()) throw Cancelled();
     blocks_near(cones[n], [&](std::int64_t i, std::int64_t j, std::int64_t k) {
       const Vec3 centre{block * i + 3.5, block * j + 3.5, block * k + 3.5};
       const double d = round_cone_distance(cones[n], centre);
-      const std::uint64_t key = key_of(i, j, k);
       if (d + block_reach < -band)
-        inside.insert(key);
+        pairs.push_back({key_of(i, j, k), inside});
       else if (d - block_reach < band)
-        near[key].push_back(static_cast<std::uint32_t>(n));
+        pairs.push_back({key_of(i, j, k), static_cast<std::uint32_t>(n)});
     });
   }
+  if (progress.cancelled()) throw Cancelled();
+  std::sort(pairs.begin(), pairs.end());  // `inside` last in each block's run
 
   vdb::Grid::Ptr g = vdb::Grid::create(band);
   g->setGridClass(openvdb::GRID_LEVEL_SET);
   auto access = g->getAccessor();
   std::size_t done = 0;
   std::array<float, block * block * block> values;
-  for (const auto& [key, list] : near) {
+  for (std::size_t first = 0, last = 0; first < pairs.size(); first = last) {
     if ((++done & 255) == 0 && progress.cancelled()) throw Cancelled();
-    if (inside.count(key)) continue;
+    const std::uint64_t key = pairs[first].key;
+    while (last < pairs.size() && pairs[last].key == key) ++last;
+    if (pairs[last - 1].cone == inside) continue;
     const auto [bi, bj, bk] = block_of(key);
     bool any = false;
     std::size_t v = 0;
@@ -155,7 +178,7 @@ Mesh round_tube_on_grid(const std::vector<RoundSegment>& segments, const GridTub
           const Vec3 p{static_cast<double>(block * bi + i), static_cast<double>(block * bj + j),
                        static_cast<double>(block * bk + k)};
           double d = band;
-          for (const std::uint32_t c : list) d = std::min(d, round_cone_distance(cones[c], p));
+          for (std::size_t c = first; c < last; ++c) d = std::min(d, round_cone_distance(cones[pairs[c].cone], p));
           values[v] = static_cast<float>(std::max(d, -static_cast<double>(band)));
           any = any || std::abs(values[v]) < band;
         }

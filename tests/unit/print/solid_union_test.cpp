@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <vector>
 
@@ -14,6 +15,8 @@
 #include "kernels/geom/mesh_intersections.h"
 #include "kernels/print/grid_tube.h"
 #include "kernels/region/box_mesh.h"
+#include "kernels/region/level_set.h"
+#include "kernels/region/volume.h"
 
 using namespace selfsim;
 using namespace selfsim::print;
@@ -131,4 +134,28 @@ TEST(SolidUnion, StopsWhenAsked) {
   const Mesh a = box_mesh({0, 0, 0}, {2, 2, 2}), b = box_mesh({1, 1, 1}, {3, 3, 3});
   const std::vector<const Mesh*> both{&a, &b};
   EXPECT_THROW(solid_union(both, {}, stop), Cancelled);
+}
+
+TEST(SolidUnion, TheGridsBudgetCountsTheCopiesHeldWhileItIsBuilt) {
+  // Two capsules that cross: the grid. Its prediction alone fits the budget, but the solids' work copies turned
+  // outwards are held while it is built: with them it does not, and it is refused before any work.
+  const std::vector<Mesh> parts{grid_tube(Polyline3::single({{0, 0, 0}, {10, 0, 0}}), {.radius = 1}, no_progress()),
+                                grid_tube(Polyline3::single({{5, -5, 0}, {5, 5, 0}}), {.radius = 1}, no_progress())};
+  const double voxel = 0.25;
+  std::vector<std::shared_ptr<const Volume>> volumes;
+  double held = 0;
+  for (const Mesh& m : parts) {
+    volumes.push_back(std::make_shared<const Volume>(Volume::closed_mesh(m, no_progress())));
+    held += static_cast<double>(m.points.size() + m.triangles.size());
+  }
+  const double grid = boundary_size(Volume::combine(Volume::Kind::unite, volumes), voxel);
+  UnionOptions opt{.voxel = voxel};
+  opt.budget.limit = grid + held / 2;
+  EXPECT_THROW(united(parts, opt), BudgetError);
+  opt.budget.limit = grid + held + 1;
+  EXPECT_FALSE(united(parts, opt).exact);
+  // The binding's prediction of the copies: each solid twice and the intersection search's 150 bytes a triangle.
+  const std::vector<Mesh> boxes{box_mesh({0, 0, 0}, {1, 1, 1}), box_mesh({2, 0, 0}, {3, 1, 1})};
+  const std::vector<const Mesh*> p{&boxes[0], &boxes[1]};
+  EXPECT_DOUBLE_EQ(union_work_size(p), 2 * 2 * (8 + 12) + 24 * 150.0 / 16);
 }
