@@ -83,18 +83,24 @@ std::vector<char> overlapping_shells(const Shells& shells, bool crosses) {
   return out;
 }
 
-// A point's value: the area-weighted mean of its triangles' (for ParaView's point colouring).
-std::vector<double> at_points(const Mesh& m, const std::vector<double>& per_face) {
-  std::vector<double> sum(m.points.size(), 0), weight(m.points.size(), 0);
+// A point's values: the area-weighted means of its triangles' (for ParaView's point colouring), of the walls
+// and the gaps in one pass (each face's area worked out once).
+std::array<std::vector<double>, 2> at_points(const Mesh& m, const std::vector<double>& wall,
+                                             const std::vector<double>& gap) {
+  std::vector<double> w(m.points.size(), 0), g(m.points.size(), 0), weight(m.points.size(), 0);
   for (std::size_t f = 0; f < m.faces(); ++f) {
     const double area = norm(area_normal(m, m.triangles[f]));
     for (std::uint32_t v : m.triangles[f]) {
-      sum[v] += area * per_face[f];
+      w[v] += area * wall[f];
+      g[v] += area * gap[f];
       weight[v] += area;
     }
   }
-  for (std::size_t i = 0; i < sum.size(); ++i) sum[i] = weight[i] > 0 ? sum[i] / weight[i] : 0;
-  return sum;
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    w[i] = weight[i] > 0 ? w[i] / weight[i] : 0;
+    g[i] = weight[i] > 0 ? g[i] / weight[i] : 0;
+  }
+  return {std::move(w), std::move(g)};
 }
 
 // The smallest value under `threshold`, where, and how many triangles (and how much of their area) are
@@ -245,8 +251,9 @@ void measure(const Mesh& m, const PointBudget& budget, Progress& progress, Print
   if (marked == nullptr) return;
   std::vector<double> face_wall = at_faces(m, s, wall, r.wall_cap), face_gap = at_faces(m, s, gap, r.gap_cap);
   *marked = m;
-  marked->point_fields.set(real_field("wall", at_points(m, face_wall)));
-  marked->point_fields.set(real_field("gap", at_points(m, face_gap)));
+  auto [point_wall, point_gap] = at_points(m, face_wall, face_gap);
+  marked->point_fields.set(real_field("wall", std::move(point_wall)));
+  marked->point_fields.set(real_field("gap", std::move(point_gap)));
   marked->face_fields.set(real_field("wall", std::move(face_wall)));
   marked->face_fields.set(real_field("gap", std::move(face_gap)));
 }

@@ -32,7 +32,8 @@ inline constexpr std::size_t sample_run = 4096;
 // Points `finest` apart, or, where that makes more than `most`, the finest spacing that does not among
 // sqrt(area / (0.433 most)) and that times 1.25, 1.25², ... (halves no longer than s have at most
 // sqrt(3)/4 s² of area each: any finer spacing would surely make more). Counted in parallel, a ladder of
-// spacings in one pass. Cancelled when progress says stop.
+// spacings in one pass, past the rungs a lower bound rules out. `most` at least the triangles (each gives
+// a point at least). Cancelled when progress says stop.
 SamplePlan plan_samples(const Mesh& m, double finest, double area, double most, Progress& progress);
 
 // The points of the plan (normals flipped for a mesh facing inwards), in parallel.
