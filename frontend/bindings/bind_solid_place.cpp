@@ -46,7 +46,9 @@ Spot read_spot(Options& o) {
 void push_on_bed(lua_State* L, const Mesh& m, const Affine3* turn, const Spot& spot) {
   check_run_budget(L, budget_size(m), "the placed copy");
   Mesh placed = turn ? transformed(m, *turn, RunContext::of(L)) : m;
-  Vec3 shift = print::bed_shift(placed.bbox());
+  // The box over the triangles' corners: a point no triangle uses does not hold the solid up.
+  const BBox3 box = corner_bbox(placed);
+  Vec3 shift = box.empty() ? Vec3{} : print::bed_shift(box);
   if (spot.centre)
     shift += {spot.at.x, spot.at.y, 0};
   else
@@ -75,7 +77,30 @@ std::string overhang_text(double area, double angle, double before) {
   return area > 0 ? "overhang " + larger_area_text(area) + past : "no overhang" + past;
 }
 
-// solid.orient(mesh, { face = "largest" } | { least = "overhang", overhang = 45 } | { rotate = 90, axis = {1,0,0} })
+// "standing on 4.2 mm²", with a warning when that is under the first layer's least.
+std::string standing_text(const print::Orientation& r, const print::OrientOptions& opt) {
+  const std::string on = "standing on " + area_text(r.first_layer);
+  if (r.first_layer >= opt.least_first_layer()) return on;
+  return on + " (under the " + area_text(opt.least_first_layer()) + " a first layer needs)";
+}
+
+// The line solid.orient prints: the pose taken, what it stands on, its overhang.
+std::string orient_text(const print::Orientation& r, const print::OrientOptions& opt, const MeshTransform* given) {
+  const std::string overhang = overhang_text(r.overhang, opt.overhang, r.overhang_before);
+  if (given)
+    return "turned " + short_number(given->degrees) + "° about " + point_text(given->axis) + ", " +
+           standing_text(r, opt) + ": " + overhang;
+  if (opt.least_overhang)
+    return std::string(r.kept ? "least overhang as it was" : "to the least overhang") + ", " + standing_text(r, opt) +
+           ": " + overhang;
+  if (r.kept && !(r.face >= opt.least_first_layer()))
+    return "no flat face of at least " + area_text(opt.least_first_layer()) + ": left as it was, " +
+           standing_text(r, opt) + ": " + overhang;
+  return "on its largest flat face (" + area_text(r.face) + "), " + overhang;
+}
+
+// solid.orient(mesh, { face = "largest" } | { least = "overhang", overhang = 45 } | { rotate = 90, axis = {1,0,0} },
+// nozzle = 0.4)
 int solid_orient(lua_State* L) {
   return call_kernel(L, "solid.orient", [&] {
     const std::string call = "solid.orient(mesh, { face = \"largest\" })";
@@ -96,35 +121,17 @@ int solid_orient(lua_State* L) {
     if (o.has("axis") && !o.has("rotate")) throw Error("option 'axis' is what 'rotate' turns about: give rotate too");
     opt.overhang =
         check_between(o.number("overhang", opt.overhang), 1, 89, "option 'overhang' (degrees from vertical)");
+    opt.nozzle = check_between(o.number("nozzle", opt.nozzle), 0.01, 100, "option 'nozzle' (mm)");
     const Spot spot = read_spot(o);
     o.finish();
     given.validate();
 
-    std::string said;
-    Affine3 turn;
-    if (o.has("rotate")) {
-      turn = given.map();
-      print::OverhangOptions along{.angle = opt.overhang};
-      const double before = print::overhang_of(*m, along).area;
-      // The overhang once turned: measured along the direction the turn takes to +z.
-      const Affine3 back = rotation(given.axis / norm(given.axis), -given.degrees);
-      along.up = back.linear({0, 0, 1});
-      said = "turned " + short_number(given.degrees) + "° about " + point_text(given.axis) + ": " +
-             overhang_text(print::overhang_of(*m, along).area, opt.overhang, before);
-    } else {
-      const print::Orientation r = print::best_orientation(*m, opt, RunContext::of(L));
-      turn = r.turn;
-      const std::string overhang = overhang_text(r.overhang, opt.overhang, r.overhang_before);
-      if (opt.least_overhang)
-        said = "to the least overhang, resting on " +
-               (r.face > 0 ? "a flat face of " + area_text(r.face) : std::string("an edge or a point")) + ": " +
-               overhang;
-      else
-        said = r.face > 0 ? "on its largest flat face (" + area_text(r.face) + "), " + overhang
-                          : "no flat face to lie on, left as it was: " + overhang;
-    }
-    push_on_bed(L, *m, &turn, spot);
-    if (!RunContext::of(L).config.quiet) std::printf("%ssolid.orient: %s\n", recipe_where(L).c_str(), said.c_str());
+    const print::Orientation r = o.has("rotate") ? print::orientation_by(*m, given.map(), opt)
+                                                 : print::best_orientation(*m, opt, RunContext::of(L));
+    push_on_bed(L, *m, &r.turn, spot);
+    if (!RunContext::of(L).config.quiet)
+      std::printf("%ssolid.orient: %s\n", recipe_where(L).c_str(),
+                  orient_text(r, opt, o.has("rotate") ? &given : nullptr).c_str());
     return 1;
   });
 }

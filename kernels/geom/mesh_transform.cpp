@@ -53,6 +53,26 @@ double uniform_factor(const Affine3& a) {
   return k;
 }
 
+// Whether a keeps every face's tilt from the horizontal: a similarity that keeps +z up (rows' z column
+// (0, 0, k), k > 0): a turn about z, a uniform scale, a mirror across a vertical plane.
+bool keeps_up(const Affine3& a) {
+  const double k = uniform_factor(a);
+  if (!(k > 0)) return false;
+  const double tolerance = 1e-12 * k;
+  return std::abs(a.rows[0].z) <= tolerance && std::abs(a.rows[1].z) <= tolerance &&
+         std::abs(a.rows[2].z - k) <= tolerance;
+}
+
+// Drops fields named `overhang` (any case): the print check's degrees below horizontal, measured against
+// the old +z, wrong once the solid tilts.
+void drop_overhang_fields(Fields& fields) {
+  std::erase_if(fields.list, [](const Field& f) {
+    std::string n = f.name;
+    std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return n == "overhang";
+  });
+}
+
 }  // namespace
 
 void MeshTransform::validate() const {
@@ -93,6 +113,7 @@ Mesh transformed(const Mesh& m, const Affine3& a, Progress& progress) {
   for (Fields* fields : {&out.point_fields, &out.face_fields}) {
     map_normals(*fields, a);
     scale_length_fields(*fields, uniform_factor(a));
+    if (!keeps_up(a)) drop_overhang_fields(*fields);
   }
   return out;
 }

@@ -5,7 +5,9 @@
 // or `normals` (3 components, any case: VTK's `Normals`) are directions normal to the surface, mapped by the
 // inverse transpose and kept at their length (unit normals stay unit); length fields (length_fields.h:
 // `thickness`, `width` and the others) scale by a uniform factor and are dropped under a
-// non-uniform one, which no single factor describes.
+// non-uniform one, which no single factor describes; fields named `overhang` (any case: the print check's
+// degrees below horizontal, relative to +z) are kept only by a map that keeps every face's tilt (a turn about
+// z, a uniform scale, a mirror across a vertical plane, any translation) and dropped under any other.
 #pragma once
 
 #include <array>

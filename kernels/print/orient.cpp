@@ -7,6 +7,8 @@
 #include <numeric>
 #include <vector>
 
+#include "kernels/print/first_layer.h"
+#include "kernels/print/footing.h"
 #include "kernels/print/overhang.h"
 
 namespace selfsim::print {
@@ -16,7 +18,8 @@ namespace {
 constexpr int cells_per_side = 64;  // of the cube map: about 1.4 degrees a cell at its centre
 constexpr int face_searches = 48;   // cells looked at for a flat face, at most
 constexpr int sample_directions = 1000;
-constexpr int measured = 8;         // candidates measured exactly for the least overhang
+constexpr int measured = 8;         // candidates measured exactly for the least overhang, by estimate
+constexpr int measured_faces = 8;   // and by flat face
 constexpr double flat_degrees = 2;  // a face this near the plane's normal lies in it
 constexpr double degree = std::numbers::pi / 180;
 
@@ -39,11 +42,13 @@ FaceNormals face_normals(const Mesh& m) {
 
 // Faces this close to the bounding plane lie in it: a hundredth of a millimetre (below any layer), or less
 // on a small solid (one still in model units).
-double flat_tolerance(const Mesh& m) { return std::min(0.01, 1e-4 * norm(m.bbox().size())); }
+double flat_tolerance(const Mesh& m) { return std::min(0.01, 1e-4 * norm(corner_bbox(m).size())); }
 
+// The lowest of the triangles' corners along `up` (a point no triangle uses holds nothing up).
 double lowest_along(const Mesh& m, Vec3 up) {
   double lowest = std::numeric_limits<double>::infinity();
-  for (const Vec3& p : m.points) lowest = std::min(lowest, dot(p, up));
+  for (const Triangle& t : m.triangles)
+    for (std::uint32_t v : t) lowest = std::min(lowest, dot(m.points[v], up));
   return lowest;
 }
 
@@ -102,6 +107,8 @@ struct Candidate {
   double estimate = 0;  // the overhang from the cells
   double overhang = 0;  // measured
   double height = 0;
+  double first_layer = 0;  // measured
+  bool steady = false;     // its centre of mass over its footprint (footing.h)
 };
 
 // Flat faces the solid can rest on, looked for under the cells of most area.
@@ -136,12 +143,12 @@ double estimate_overhang(const std::vector<Cell>& cells, Vec3 up, double past) {
   return area;
 }
 
-// Whether a is the better pose: by `first` (larger is better when `larger`), then the flat face, the
-// height, and the turn from the pose it came in.
+// Whether a is the better pose: by overhang (when `by_overhang`; within `equal_overhang` counts as equal),
+// then the first layer (by overhang) or the flat face, the height, and the turn from the pose it came in.
 bool better_pose(const Candidate& a, const Candidate& b, bool by_overhang, double equal_overhang) {
   if (by_overhang && std::abs(a.overhang - b.overhang) > equal_overhang) return a.overhang < b.overhang;
-  const double face_tolerance = 1e-6 * std::max(a.face, b.face);
-  if (std::abs(a.face - b.face) > face_tolerance) return a.face > b.face;
+  const double a_base = by_overhang ? a.first_layer : a.face, b_base = by_overhang ? b.first_layer : b.face;
+  if (std::abs(a_base - b_base) > 1e-6 * std::max(a_base, b_base)) return a_base > b_base;
   const double height_tolerance = 1e-9 * std::max(a.height, b.height);
   if (by_overhang && std::abs(a.height - b.height) > height_tolerance) return a.height < b.height;
   return a.up.z > b.up.z + 1e-12;
@@ -149,7 +156,41 @@ bool better_pose(const Candidate& a, const Candidate& b, bool by_overhang, doubl
 
 double height_along(const Mesh& m, Vec3 up) { return -lowest_along(m, -up) - lowest_along(m, up); }
 
+// First layers of m in several poses, and whether each stands by itself: one copy of the triangles, the
+// points turned for each.
+class FirstLayers {
+ public:
+  FirstLayers(const Mesh& m, double layer) : m_(m), layer_(layer), centre_(mass_centre(m)) {
+    turned_.triangles = m.triangles;
+    turned_.points.resize(m.points.size());
+  }
+  // The first layer along `up`; `steady`: the centre over the footprint (the corners within a layer of the
+  // bed, give or take a layer).
+  double along(Vec3 up, bool* steady = nullptr) {
+    const Affine3 turn = turn_up(up);
+    for (std::size_t i = 0; i < m_.points.size(); ++i) turned_.points[i] = turn.linear(m_.points[i]);
+    if (steady) *steady = centre_over_footprint(turned_, turn.linear(centre_), layer_, layer_);
+    return first_layer_area(turned_, layer_);
+  }
+
+ private:
+  const Mesh& m_;
+  double layer_;
+  Vec3 centre_;
+  Mesh turned_;
+};
+
+// Measures c exactly: overhang, flat face, height and first layer along c.up.
+void measure(const Mesh& m, const FaceNormals& f, const OrientOptions& opt, FirstLayers& layers, Candidate& c) {
+  c.overhang = overhang_of(m, {.angle = opt.overhang, .up = c.up}).area;
+  c.face = resting_on(m, f, c.up, flat_tolerance(m)).area;
+  c.height = height_along(m, c.up);
+  c.first_layer = layers.along(c.up, &c.steady);
+}
+
 }  // namespace
+
+double OrientOptions::least_first_layer() const { return std::numbers::pi * nozzle * nozzle; }
 
 Affine3 turn_up(Vec3 up) {
   const Vec3 axis = cross(up, Vec3{0, 0, 1});
@@ -170,23 +211,29 @@ Orientation best_orientation(const Mesh& m, const OrientOptions& opt, Progress& 
   const std::vector<Cell> cells = normal_cells(f);
   ProgressStage faces(progress, 0, 0.5);
   std::vector<Candidate> candidates = resting_faces(m, f, cells, faces);
-  OverhangOptions along{.angle = opt.overhang};
-  Orientation out;
-  out.overhang_before = overhang_of(m, along).area;
   for (Candidate& c : candidates) c.height = height_along(m, c.up);
+  const double least = opt.least_first_layer();
+  FirstLayers layers(m, 0.5 * opt.nozzle);
 
-  Candidate best{{0, 0, 1},
-                 resting_on(m, f, {0, 0, 1}, flat_tolerance(m)).area,
-                 0,
-                 out.overhang_before,
-                 height_along(m, {0, 0, 1})};
+  Candidate as_it_came{{0, 0, 1}};
+  measure(m, f, opt, layers, as_it_came);
+  Candidate best = as_it_came;
   if (!opt.least_overhang) {
+    // The largest flat face of at least the first layer's threshold; none: the pose as it came.
     for (const Candidate& c : candidates)
-      if (better_pose(c, best, false, 0)) best = c;
+      if (c.face >= least && better_pose(c, best, false, 0)) best = c;
+    best.first_layer = layers.along(best.up);
   } else {
-    // Every direction estimated from the cells; the best few measured.
+    // Every direction estimated from the cells; the best few, the largest faces and the pose as it came
+    // measured.
     const double past = std::sin(opt.overhang * degree);
     for (Candidate& c : candidates) c.estimate = estimate_overhang(cells, c.up, past) - c.face;
+    std::vector<Candidate> by_face;
+    for (const Candidate& c : candidates)
+      if (c.face >= least) by_face.push_back(c);
+    std::stable_sort(by_face.begin(), by_face.end(),
+                     [](const Candidate& a, const Candidate& b) { return a.face > b.face; });
+    by_face.resize(std::min<std::size_t>(by_face.size(), measured_faces));
     std::vector<Candidate> samples;
     for (Vec3 axis : {Vec3{0, 0, 1}, Vec3{0, 0, -1}, Vec3{1, 0, 0}, Vec3{-1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, -1, 0}})
       samples.push_back({axis});
@@ -201,24 +248,51 @@ Orientation best_orientation(const Mesh& m, const OrientOptions& opt, Progress& 
       return a.estimate < b.estimate || (a.estimate == b.estimate && a.face > b.face);
     });
     candidates.resize(std::min<std::size_t>(candidates.size(), measured));
+    candidates.insert(candidates.end(), by_face.begin(), by_face.end());
     const double equal = 1e-3 * std::accumulate(f.area.begin(), f.area.end(), 0.0);
     for (std::size_t k = 0; k < candidates.size(); ++k) {
-      progress.step(0.5 + 0.5 * static_cast<double>(k) / measured);
-      Candidate& c = candidates[k];
-      along.up = c.up;
-      c.overhang = overhang_of(m, along).area;
-      c.face = resting_on(m, f, c.up, flat_tolerance(m)).area;
-      c.height = height_along(m, c.up);
+      progress.step(0.5 + 0.5 * static_cast<double>(k) / static_cast<double>(candidates.size()));
+      measure(m, f, opt, layers, candidates[k]);
     }
-    best = candidates.front();
-    for (const Candidate& c : candidates)
-      if (better_pose(c, best, true, equal)) best = c;
+    // Of the poses that stand on enough, by themselves if any does, the least overhang; if none stands on
+    // enough, the one that stands on most.
+    const auto rank = [&](const Candidate& c) { return c.first_layer >= least ? (c.steady ? 2 : 1) : 0; };
+    for (const Candidate& c : candidates) {
+      if (rank(c) != rank(best)) {
+        if (rank(c) > rank(best)) best = c;
+      } else if (rank(c) > 0 ? better_pose(c, best, true, equal) : c.first_layer > best.first_layer) {
+        best = c;
+      }
+    }
   }
+  Orientation out;
   out.up = best.up;
   out.turn = turn_up(best.up);
   out.face = best.face;
-  along.up = best.up;
-  out.overhang = opt.least_overhang ? best.overhang : overhang_of(m, along).area;
+  out.overhang = best.overhang;
+  out.overhang_before = as_it_came.overhang;
+  out.first_layer = best.first_layer;
+  out.kept = best.up.z == 1;
+  if (!opt.least_overhang && !out.kept) out.overhang = overhang_of(m, {.angle = opt.overhang, .up = best.up}).area;
+  return out;
+}
+
+Orientation orientation_by(const Mesh& m, const Affine3& turn, const OrientOptions& opt) {
+  // The direction the rotation takes to +z: its inverse (its transpose) applied to +z, its last row.
+  const Vec3 up = normalized(turn.rows[2]);
+  const FaceNormals f = face_normals(m);
+  FirstLayers layers(m, 0.5 * opt.nozzle);
+  Candidate c{up};
+  measure(m, f, opt, layers, c);
+  Orientation out;
+  out.up = up;
+  out.turn = turn;
+  out.turn.t = {};
+  out.face = c.face;
+  out.overhang = c.overhang;
+  out.overhang_before = overhang_of(m, {.angle = opt.overhang}).area;
+  out.first_layer = c.first_layer;
+  out.kept = up.z == 1;
   return out;
 }
 

@@ -11,7 +11,9 @@ Overhang overhang_of(const Mesh& m, const OverhangOptions& opt, bool per_face) {
   Overhang out;
   if (per_face) out.angle.assign(m.faces(), 0);
   double lowest = std::numeric_limits<double>::infinity();
-  for (const Vec3& p : m.points) lowest = std::min(lowest, dot(p, opt.up));
+  // The bed: the lowest of the triangles' corners (a point no triangle uses holds nothing up).
+  for (const Triangle& t : m.triangles)
+    for (std::uint32_t v : t) lowest = std::min(lowest, dot(m.points[v], opt.up));
   // sin of the overhang angle: a unit normal whose downward part is past it overhangs.
   const double past = std::sin(opt.angle / degrees);
   double largest = 0;

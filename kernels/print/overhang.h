@@ -2,8 +2,9 @@
 // support. A face's overhang angle is how far its outward normal tilts from horizontal towards straight
 // down: 0 for a vertical wall (and for any face looking up), 90 for a flat ceiling. FDM printers bridge
 // up to about 45 degrees (print_rules.h: `overhang`); past it a slicer adds supports. Faces that lie on the
-// bed (every corner within `on_bed` of the lowest point along `up`) rest on it and overhang nothing, so a
-// cube has no overhang and a mushroom's cap has its whole underside.
+// bed (every corner within `on_bed` of the lowest corner along `up`) rest on it and overhang nothing, so a
+// cube has no overhang and a mushroom's cap has its whole underside. Only the triangles' corners count:
+// a point no triangle uses (a stray point in a loaded file) does not lift the bed below the solid.
 #pragma once
 
 #include <vector>

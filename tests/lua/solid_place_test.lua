@@ -89,3 +89,37 @@ assert(solid.check(mushroom, { voxel = 0.2 }).overhang > 250, "upright, its cap'
 local x, y, z = size(solid.orient(b, { rotate = 90, axis = { 1, 0, 0 } }))
 assert(near(x, 40, 1e-9) and near(y, 10, 1e-9) and near(z, 20, 1e-9), "turned onto its side")
 save(solid.place(tilted), "tilted_on_bed.stl")
+
+-- A point no triangle uses does not hold a solid up: the cube still lands on z = 0 and nothing overhangs.
+local stray = mesh { points = { { 0, 0, 0 }, { 20, 0, 0 }, { 20, 20, 0 }, { 0, 20, 0 },
+                                { 0, 0, 10 }, { 20, 0, 10 }, { 20, 20, 10 }, { 0, 20, 10 }, { 5, 5, -3 } },
+                     triangles = { { 1, 3, 2 }, { 1, 4, 3 }, { 5, 6, 7 }, { 5, 7, 8 }, { 1, 2, 6 }, { 1, 6, 5 },
+                                   { 2, 3, 7 }, { 2, 7, 6 }, { 3, 4, 8 }, { 3, 8, 7 }, { 4, 1, 5 }, { 4, 5, 8 } } }
+local on_bed = solid.place(stray:transform { translate = { 0, 0, 7 } })
+assert(near(on_bed:bbox().max[3], 10, 1e-9), "the cube's top at 10, its bottom on the bed: " .. on_bed:bbox().max[3])
+assert(solid.check(on_bed, { voxel = 0.2 }).overhang == 0, "its bottom rests on the bed")
+assert(near(solid.orient(stray):bbox().max[3], 10, 1e-9), "orient keeps it on its bottom face")
+
+-- A coaster (a disc 3 mm thick with a 0.1 mm lip round its middle) stays flat by either goal: on the lip's
+-- rim less would overhang, but it would stand on a sliver with its centre far from it.
+local coaster = lathe({ { 20, 0 }, { 20, 1.5 }, { 25, 1.5 }, { 25, 1.6 }, { 20, 1.6 }, { 20, 3 } }, 0, 3, 128)
+for _, how in ipairs { { face = "largest" }, { least = "overhang" } } do
+  local _, _, z = size(solid.orient(coaster:transform { rotate = 20, axis = { 1, 0, 0 } }, how))
+  assert(near(z, 3, 1e-6), "the coaster lies flat: " .. z)
+end
+
+-- A faceted ball of radius 5 has no facet as large as a first layer (0.16 mm² against 0.5): kept as it was;
+-- a 0.1 mm nozzle starts on one.
+local rings = {}
+for i = 1, 47 do
+  local a = -math.pi / 2 + math.pi * i / 48
+  rings[#rings + 1] = { 5 * math.cos(a), 5 * math.sin(a) }
+end
+local ball = lathe(rings, -5, 5, 64)
+local kept = solid.orient(ball)
+local _, _, kept_z = size(kept)
+assert(near(kept:bbox().min[3], 0, 1e-9) and near(kept_z, 10, 1e-9), "upright: " .. kept_z)
+local pole = kept:bbox()
+assert(near(pole.max[1] + pole.min[1], 0, 1e-9), "centred")
+local _, _, fine_z = size(solid.orient(ball, { nozzle = 0.1 }))
+assert(fine_z < 10 - 1e-6, "on a facet with a fine nozzle, the poles no longer upright: " .. fine_z)

@@ -99,3 +99,35 @@ TEST(MeshTransform, RefusesZeroAndNonFinite) {
   // A finite scale that overflows the coordinates.
   EXPECT_THROW(transformed(lathe_fixture::box(10, 10), MeshTransform{.scale = Vec3::all(1e308)}.map()), Error);
 }
+
+TEST(MeshTransform, OverhangFieldsGoWhenTheSolidTilts) {
+  // The print check's `overhang` (degrees below horizontal) holds while +z stays up and faces keep their tilt.
+  Mesh m = lathe_fixture::box(10, 10);
+  m.face_fields.set(real_field("overhang", std::vector<double>(m.faces(), 0)));
+  m.point_fields.set(real_field("Overhang", std::vector<double>(m.points.size(), 0)));
+  m.face_fields.set(int_field("level", std::vector<std::int32_t>(m.faces(), 3)));
+  const auto keeps = [&](const MeshTransform& t) {
+    const Mesh out = transformed(m, t.map());
+    EXPECT_NE(out.face_fields.find("level"), nullptr);  // other fields stay
+    const bool face = out.face_fields.find("overhang") != nullptr, point = out.point_fields.find("Overhang") != nullptr;
+    EXPECT_EQ(face, point);
+    return face;
+  };
+  EXPECT_FALSE(keeps({.degrees = 30, .axis = {1, 0, 0}}));  // the bug: a tilted solid kept the old angles
+  EXPECT_FALSE(keeps({.scale = {1, 1, -1}}));               // upside down
+  EXPECT_FALSE(keeps({.scale = {1, 1, 2}}));                // steeper walls
+  EXPECT_TRUE(keeps({.degrees = 75, .axis = {0, 0, 1}, .translate = {3, 4, 5}}));
+  EXPECT_TRUE(keeps({.scale = {2.5, 2.5, 2.5}}));
+  EXPECT_TRUE(keeps({.scale = {-1, 1, 1}}));  // a mirror across a vertical plane
+}
+
+TEST(MeshTransform, CornerBoxLeavesOutPointsNoTriangleUses) {
+  Mesh m = lathe_fixture::box(20, 10);
+  m.points.push_back({5, 5, -3});
+  EXPECT_EQ(m.bbox().min.z, -3);
+  const BBox3 b = corner_bbox(m);
+  EXPECT_NEAR(b.min.z, 0, 1e-12);
+  EXPECT_NEAR(b.max.z, 10, 1e-12);
+  EXPECT_NEAR(b.size().x, 20, 1e-9);
+  EXPECT_TRUE(corner_bbox(Mesh{}).empty());
+}

@@ -128,3 +128,75 @@ TEST(Orient, BedShiftPutsTheLowestPointOnZeroCentred) {
   EXPECT_EQ(s.y, -3);
   EXPECT_EQ(s.z, -3);
 }
+
+namespace {
+
+// A coaster: a disc of radius 20, 3 mm thick, with a lip of radius 25, 0.1 mm thick, round its middle. Flat,
+// the lip's underside overhangs (about 7 cm²); stood on the lip's rim, far less overhangs, but it would
+// stand on a sliver of 0.1 mm² with its centre high above it.
+Mesh coaster() { return lathe({{20, 0}, {20, 1.5}, {25, 1.5}, {25, 1.6}, {20, 1.6}, {20, 3}}, 0, 3, 128); }
+
+// A faceted sphere of radius 5: its largest facets are 0.16 mm², under a 0.4 mm nozzle's first layer.
+Mesh small_sphere() { return sphere(5); }
+
+Mesh with_stray_point(Mesh m, Vec3 p) {
+  m.points.push_back(p);
+  return m;
+}
+
+}  // namespace
+
+TEST(Orient, ACoasterStaysFlatForTheLeastOverhang) {
+  // By overhang alone, standing on the lip's rim wins (what solid.orient did before it measured first layers).
+  ASSERT_LT(overhang_of(coaster(), {.up = {1, 0, 0}}).area, 0.5 * overhang(coaster()));
+  const Mesh c = transformed(coaster(), MeshTransform{.degrees = 20, .axis = {1, 0, 0}}.map());
+  for (bool least : {false, true}) {
+    const Orientation o = best_orientation(c, {.least_overhang = least});
+    const Mesh t = turned(c, o);
+    EXPECT_NEAR(t.bbox().size().z, 3, 1e-6) << least;  // flat, not on the lip's rim
+    EXPECT_NEAR(o.first_layer, polygon_area(128, 20), 1e-3) << least;
+    EXPECT_GE(o.first_layer, OrientOptions{}.least_first_layer());
+  }
+}
+
+TEST(Orient, TheLeastOverhangIsNeverWorseThanThePoseAsItCame) {
+  const Mesh c = coaster();
+  const Orientation o = best_orientation(c, {.least_overhang = true});
+  EXPECT_LE(o.overhang, o.overhang_before + 1e-3 * surface_area(c));
+  EXPECT_GE(o.first_layer, OrientOptions{}.least_first_layer());
+}
+
+TEST(Orient, NoFlatFaceAsLargeAsAFirstLayerKeepsThePose) {
+  const Mesh s = transformed(small_sphere(), MeshTransform{.degrees = 30, .axis = {1, 2, 0}}.map());
+  const Orientation o = best_orientation(s, {});
+  EXPECT_TRUE(o.kept);
+  EXPECT_EQ(o.up.z, 1);
+  EXPECT_LT(o.face, OrientOptions{}.least_first_layer());
+  // A finer nozzle starts on a facet.
+  const Orientation fine = best_orientation(s, {.nozzle = 0.1});
+  EXPECT_FALSE(fine.kept);
+  EXPECT_GT(fine.face, 0.1);
+}
+
+TEST(Orient, PointsNoTriangleUsesDoNotDecideTheLowest) {
+  // A 20 mm cube on its bottom face, and a point 3 mm below it that no triangle uses.
+  const Mesh cube = with_stray_point(box(20, 10), {5, 5, -3});
+  const Orientation o = best_orientation(cube, {});
+  EXPECT_TRUE(o.kept);
+  EXPECT_NEAR(o.face, 400, 1e-9);
+  EXPECT_EQ(o.overhang_before, 0);
+  EXPECT_NEAR(resting_area(cube, {0, 0, 1}), 400, 1e-9);
+}
+
+TEST(Orient, AGivenTurnIsMeasuredLikeAPose) {
+  const Mesh m = mushroom(3, 10);
+  const Affine3 flip = MeshTransform{.degrees = 180, .axis = {1, 0, 0}}.map();
+  const Orientation o = orientation_by(m, flip, {});
+  EXPECT_NEAR(o.up.z, -1, 1e-12);
+  EXPECT_EQ(o.overhang, 0);
+  EXPECT_NEAR(o.overhang_before, polygon_area(32, 10) - polygon_area(32, 3), 1e-9);
+  EXPECT_NEAR(o.face, polygon_area(32, 10), 1e-9);
+  EXPECT_NEAR(o.first_layer, polygon_area(32, 10), 1e-6);
+  EXPECT_FALSE(o.kept);
+  EXPECT_NEAR(orientation_by(m, Affine3{}, {}).first_layer, polygon_area(32, 3), 1e-6);
+}

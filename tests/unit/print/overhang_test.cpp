@@ -76,11 +76,20 @@ TEST(Overhang, ATiltedBoxHasItsBottomFace) {
 }
 
 TEST(Overhang, AFaceOnTheBedIsLeftOut) {
-  // A single downward triangle is on the bed when it is the lowest thing; raised by a peg it overhangs.
+  // A single downward triangle is on the bed when it is the lowest thing; with another part's triangle below
+  // it overhangs.
   Mesh m;
   m.points = {{0, 0, 0}, {0, 10, 0}, {10, 0, 0}};
   m.triangles = {{0, 1, 2}};
   EXPECT_EQ(overhang(m), 0);
-  m.points.push_back({0, 0, -1});  // a point below it (another part's)
+  m.points.insert(m.points.end(), {{20, 0, -1}, {20, 1, -1}, {21, 0, -1}});  // another part's triangle, below
+  m.triangles.push_back({3, 4, 5});
   EXPECT_NEAR(overhang(m), 50, 1e-12);
+}
+
+TEST(Overhang, APointNoTriangleUsesDoesNotLiftTheBed) {
+  // A cube on the bed and a stray point 3 mm below it: the cube's bottom still rests.
+  Mesh cube = box(20, 10);
+  cube.points.push_back({5, 5, -3});
+  EXPECT_EQ(overhang(cube), 0);
 }
