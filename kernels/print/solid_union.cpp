@@ -1,6 +1,8 @@
 #include "kernels/print/solid_union.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -64,13 +66,38 @@ Mesh joined(const std::vector<const Mesh*>& parts) {
 // other, or apart.
 enum class Lie { meet, first_touches_itself, second_touches_itself, first_inside, second_inside, apart };
 
+// The triangles of m whose boxes reach `box`, added to `into` with the points they use.
+void add_near(const Mesh& m, const BBox3& box, Mesh& into) {
+  std::vector<std::uint32_t> index(m.points.size(), std::numeric_limits<std::uint32_t>::max());
+  for (const Triangle& t : m.triangles) {
+    BBox3 tb;
+    for (int k = 0; k < 3; ++k) tb.add(m.points[t[k]]);
+    if (!boxes_meet(tb, box)) continue;
+    Triangle copy;
+    for (int k = 0; k < 3; ++k) {
+      if (index[t[k]] == std::numeric_limits<std::uint32_t>::max()) {
+        index[t[k]] = static_cast<std::uint32_t>(into.points.size());
+        into.points.push_back(m.points[t[k]]);
+      }
+      copy[k] = index[t[k]];
+    }
+    into.triangles.push_back(copy);
+  }
+}
+
 Lie how_they_lie(const Mesh& a, const Mesh& b, Progress& progress) {
-  if (!boxes_meet(a.bbox(), b.bbox())) return Lie::apart;
-  Mesh both = a;
-  both.point_fields = both.face_fields = {};
-  const auto base = static_cast<std::uint32_t>(a.points.size());
-  both.points.insert(both.points.end(), b.points.begin(), b.points.end());
-  for (const Triangle& t : b.triangles) both.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  const BBox3 ba = a.bbox(), bb = b.bbox();
+  if (!boxes_meet(ba, bb)) return Lie::apart;
+  // Only triangles that reach the boxes' overlap (grown by first_intersection's tolerance) can meet the other
+  // solid: those of each, in one mesh, a's first. A solid touching itself elsewhere tells nothing here.
+  BBox3 all = ba;
+  all.add(bb);
+  const double d = 1e-9 * norm(all.size());
+  const BBox3 overlap{max_each(ba.min, bb.min) - Vec3::all(d), min_each(ba.max, bb.max) + Vec3::all(d)};
+  Mesh both;
+  add_near(a, overlap, both);
+  const auto base = static_cast<std::uint32_t>(both.triangles.size());  // triangles, as the pair counts them
+  add_near(b, overlap, both);
   if (const auto pair = first_intersection(both, progress)) {
     if (pair->second < base) return Lie::first_touches_itself;
     return pair->first >= base ? Lie::second_touches_itself : Lie::meet;

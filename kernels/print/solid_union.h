@@ -1,11 +1,12 @@
 // One solid from several (issue 40): the union of closed solids, and one solid with others cut away.
 //
-// Exact where the meshes allow it: solids whose triangles do not meet are joined as they are (triangles,
-// points and the fields all of them have), a solid wholly inside another is dropped from a union, and a cut
-// wholly inside the solid it is taken from (touching nothing) becomes a sealed cavity, its triangles turned
-// inwards. Otherwise on an OpenVDB grid: each solid's level set, combined (csgUnion, csgDifference) and
-// meshed back, as a volume's boundary is (level_set.h: the lattice moved when the mesher makes a degenerate
-// surface, the result closed and not crossing itself), at a stated voxel.
+// Exact where the meshes allow it: solids whose triangles do not meet (tested pair by pair, on the triangles
+// that reach where the two boxes overlap) are joined as they are (triangles, points and the fields all of
+// them have), a solid wholly inside another is dropped from a union, and a cut wholly inside the solid it is
+// taken from (touching nothing) becomes a sealed cavity, its triangles turned inwards. Otherwise on an OpenVDB grid:
+// each solid's level set, combined (csgUnion, csgDifference) and meshed back, as a volume's boundary is (level_set.h:
+// the lattice moved when the mesher makes a degenerate surface, the result closed and not crossing itself), at a stated
+// voxel.
 #pragma once
 
 #include <span>
@@ -36,8 +37,8 @@ double union_voxel(std::span<const Mesh* const> solids);
 // Budget points (16 bytes) solid_union or solid_difference of `solids` (all of them, the solid cut from among
 // them) holds besides its grid, whose own prediction volume_boundary checks against the budget less these:
 // a copy of every solid turned outwards, and beside it either the exact result or, while two solids are
-// tested for meeting, their joined copy and first_intersection's index (at most about 150 bytes a triangle,
-// mesh_intersections.h). Bounded by every solid's size rather than the largest two's.
+// tested for meeting, a copy of their triangles near where their boxes overlap and first_intersection's
+// index (at most about 150 bytes a triangle, mesh_intersections.h). Bounded by every solid's whole size.
 double union_work_size(std::span<const Mesh* const> solids);
 
 // The union of `solids` (at least one; each closed, of either facing). Throws Error naming the first solid

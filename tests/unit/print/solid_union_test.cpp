@@ -159,3 +159,21 @@ TEST(SolidUnion, TheGridsBudgetCountsTheCopiesHeldWhileItIsBuilt) {
   const std::vector<const Mesh*> p{&boxes[0], &boxes[1]};
   EXPECT_DOUBLE_EQ(union_work_size(p), 2 * 2 * (8 + 12) + 24 * 150.0 / 16);
 }
+
+TEST(SolidUnion, SaysWhichSolidsMeet) {
+  // A capsule whose end sinks into a box, the capsule first. The crossing found is a capsule triangle
+  // numbered past the capsule's count of points: when the pair's triangle numbers were compared with that
+  // count, it read "solid 2 touches itself".
+  const Mesh capsule = grid_tube(Polyline3::single({{-5, 0, 0}, {5, 0, 0}}), {.radius = 1}, no_progress());
+  const Mesh box = box_mesh({3, -3, -3}, {8, 3, 3});
+  Mesh both = capsule;
+  const auto base = static_cast<std::uint32_t>(capsule.points.size());
+  both.points.insert(both.points.end(), box.points.begin(), box.points.end());
+  for (const Triangle& t : box.triangles) both.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  const auto pair = first_intersection(both, no_progress());
+  ASSERT_TRUE(pair);
+  ASSERT_GE(pair->first, base);  // the case above
+  ASSERT_LT(pair->first, capsule.triangles.size());
+  EXPECT_EQ(united({capsule, box}, {.voxel = 0.25}).how, "on a 0.25 mm grid (solid 1 and solid 2 meet)");
+  EXPECT_EQ(united({box, capsule}, {.voxel = 0.25}).how, "on a 0.25 mm grid (solid 1 and solid 2 meet)");
+}
