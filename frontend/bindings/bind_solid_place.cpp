@@ -77,11 +77,12 @@ std::string overhang_text(double area, double angle, double before) {
   return area > 0 ? "overhang " + larger_area_text(area) + past : "no overhang" + past;
 }
 
-// "standing on 4.2 mm²", with a warning when that is under the first layer's least.
+// "standing on 4.2 mm²", with a warning when that is under the first layer's least or its centre is off it.
 std::string standing_text(const print::Orientation& r, const print::OrientOptions& opt) {
   const std::string on = "standing on " + area_text(r.first_layer);
-  if (r.first_layer >= opt.least_first_layer()) return on;
-  return on + " (under the " + area_text(opt.least_first_layer()) + " a first layer needs)";
+  if (r.first_layer < opt.least_first_layer())
+    return on + " (under the " + area_text(opt.least_first_layer()) + " a first layer needs)";
+  return r.steady ? on : on + " (its centre of mass off it: a brim helps it stay)";
 }
 
 // The line solid.orient prints: the pose taken, what it stands on, its overhang.

@@ -222,7 +222,7 @@ Orientation best_orientation(const Mesh& m, const OrientOptions& opt, Progress& 
     // The largest flat face of at least the first layer's threshold; none: the pose as it came.
     for (const Candidate& c : candidates)
       if (c.face >= least && better_pose(c, best, false, 0)) best = c;
-    best.first_layer = layers.along(best.up);
+    best.first_layer = layers.along(best.up, &best.steady);
   } else {
     // Every direction estimated from the cells; the best few, the largest faces and the pose as it came
     // measured.
@@ -272,6 +272,7 @@ Orientation best_orientation(const Mesh& m, const OrientOptions& opt, Progress& 
   out.overhang = best.overhang;
   out.overhang_before = as_it_came.overhang;
   out.first_layer = best.first_layer;
+  out.steady = best.steady;
   out.kept = best.up.z == 1;
   if (!opt.least_overhang && !out.kept) out.overhang = overhang_of(m, {.angle = opt.overhang, .up = best.up}).area;
   return out;
@@ -292,6 +293,7 @@ Orientation orientation_by(const Mesh& m, const Affine3& turn, const OrientOptio
   out.overhang = c.overhang;
   out.overhang_before = overhang_of(m, {.angle = opt.overhang}).area;
   out.first_layer = c.first_layer;
+  out.steady = c.steady;
   out.kept = up.z == 1;
   return out;
 }

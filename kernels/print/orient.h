@@ -49,6 +49,7 @@ struct Orientation {
   double overhang = 0;         // mm² past the angle, so turned
   double overhang_before = 0;  // mm² past the angle, as it came
   double first_layer = 0;      // mm² it stands on, so turned (first_layer.h)
+  bool steady = false;         // its centre of mass over its footprint (footing.h)
   bool kept = false;           // the pose as it came (no turn)
 };
 

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "kernels/geom/mesh_transform.h"
+#include "kernels/print/footing.h"
 #include "kernels/print/overhang.h"
 #include "tests/unit/print/lathe_fixture.h"
 
@@ -199,4 +200,21 @@ TEST(Orient, AGivenTurnIsMeasuredLikeAPose) {
   EXPECT_NEAR(o.first_layer, polygon_area(32, 10), 1e-6);
   EXPECT_FALSE(o.kept);
   EXPECT_NEAR(orientation_by(m, Affine3{}, {}).first_layer, polygon_area(32, 3), 1e-6);
+}
+
+TEST(Orient, ASolidStandsWhenItsCentreIsOverItsFootprint) {
+  const Mesh b = box(20, 10);
+  const Vec3 c = mass_centre(b);
+  EXPECT_NEAR(c.x, 0, 1e-9);
+  EXPECT_NEAR(c.y, 0, 1e-9);
+  EXPECT_NEAR(c.z, 5, 1e-9);
+  EXPECT_TRUE(centre_over_footprint(b, c, 0.2, 0.2));
+  // Tilted 30 degrees it rests on one bottom edge, its centre 5 mm beside it: it would fall back.
+  const Affine3 tilt = MeshTransform{.degrees = 30, .axis = {1, 0, 0}}.map();
+  const Mesh t = transformed(b, tilt);
+  EXPECT_FALSE(centre_over_footprint(t, tilt(c), 0.2, 0.2));
+  // A mushroom upright stands on its stem: its centre is on the axis.
+  const Mesh m = mushroom(3, 10);
+  EXPECT_TRUE(centre_over_footprint(m, mass_centre(m), 0.2, 0.2));
+  EXPECT_GT(mass_centre(m).z, 10);  // most of its volume is the cap
 }
