@@ -799,9 +799,11 @@ function solid.difference(solid, cuts) end
 ---@field rotate? number or turn by these degrees about `axis`, as Mesh:transform
 ---@field axis? number[] {x, y, z} ({0, 0, 1})
 ---@field overhang? number degrees from vertical past which a face overhangs, 1 to 89 (45)
+---@field nozzle? number mm (0.4): a pose must stand on a first layer of pi nozzle² (a flat face that large)
 
----The mesh turned to lie on its largest flat face, to the least overhang, or by a given rotation, then
----placed on the bed (solid.place); prints what it did and the overhang before and after.
+---The mesh turned to lie on its largest flat face (at least a first layer's: otherwise kept), to the least
+---overhang among poses that stand, or by a given rotation, then placed on the bed (solid.place); prints
+---what it did, what it stands on and the overhang before and after.
 ---@param mesh selfsim.Mesh
 ---@param options? selfsim.OrientOptions
 ---@return selfsim.Mesh
