@@ -156,27 +156,34 @@ bool better_pose(const Candidate& a, const Candidate& b, bool by_overhang, doubl
 
 double height_along(const Mesh& m, Vec3 up) { return -lowest_along(m, -up) - lowest_along(m, up); }
 
-// First layers of m in several poses, and whether each stands by itself: one copy of the triangles, the
-// points turned for each.
+// First layers of m in several poses, and whether each stands by itself: one copy of the triangles over the
+// points they use (a point no triangle uses would lower the first layer's plane), turned for each pose.
 class FirstLayers {
  public:
-  FirstLayers(const Mesh& m, double layer) : m_(m), layer_(layer), centre_(mass_centre(m)) {
+  FirstLayers(const Mesh& m, double layer) : layer_(layer), centre_(mass_centre(m)) {
+    std::vector<std::uint32_t> index(m.points.size(), unused);
     turned_.triangles = m.triangles;
-    turned_.points.resize(m.points.size());
+    for (Triangle& t : turned_.triangles)
+      for (std::uint32_t& v : t) {
+        if (index[v] == unused) index[v] = static_cast<std::uint32_t>(used_.size()), used_.push_back(m.points[v]);
+        v = index[v];
+      }
+    turned_.points.resize(used_.size());
   }
   // The first layer along `up`; `steady`: the centre over the footprint (the corners within a layer of the
   // bed, give or take a layer).
   double along(Vec3 up, bool* steady = nullptr) {
     const Affine3 turn = turn_up(up);
-    for (std::size_t i = 0; i < m_.points.size(); ++i) turned_.points[i] = turn.linear(m_.points[i]);
+    for (std::size_t i = 0; i < used_.size(); ++i) turned_.points[i] = turn.linear(used_[i]);
     if (steady) *steady = centre_over_footprint(turned_, turn.linear(centre_), layer_, layer_);
     return first_layer_area(turned_, layer_);
   }
 
  private:
-  const Mesh& m_;
+  static constexpr std::uint32_t unused = 0xffffffff;
   double layer_;
   Vec3 centre_;
+  std::vector<Vec3> used_;  // the points the triangles use, in the order they first use them
   Mesh turned_;
 };
 

@@ -187,6 +187,8 @@ TEST(Orient, PointsNoTriangleUsesDoNotDecideTheLowest) {
   EXPECT_NEAR(o.face, 400, 1e-9);
   EXPECT_EQ(o.overhang_before, 0);
   EXPECT_NEAR(resting_area(cube, {0, 0, 1}), 400, 1e-9);
+  EXPECT_NEAR(o.first_layer, 400, 1e-9);  // measured half a layer above the cube's bottom, not the point
+  EXPECT_NEAR(best_orientation(cube, {.least_overhang = true}).first_layer, 400, 1e-9);
 }
 
 TEST(Orient, AGivenTurnIsMeasuredLikeAPose) {
