@@ -15,6 +15,7 @@
 #include "kernels/geom/triangle_bvh.h"
 #include "kernels/print/print_samples.h"
 #include "kernels/print/print_size.h"
+#include "kernels/print/thin_patches.h"
 #include "kernels/print/wall_rays.h"
 #include "kernels/region/volume.h"
 #include "kernels/region/wall_grid.h"
@@ -103,23 +104,28 @@ std::array<std::vector<double>, 2> at_points(const Mesh& m, const std::vector<do
   return {std::move(w), std::move(g)};
 }
 
-// The smallest value under `threshold`, where, and how many triangles (and how much of their area) are
-// under it.
-Spot spot_of(const Samples& s, const std::vector<double>& values, double threshold) {
+// The smallest value under `threshold`, where, how many triangles (and how much of their area) are under it,
+// and the places they make (thin_patches.h): the speck rule judges each place by its own area.
+Spot spot_of(const Mesh& m, const Samples& s, const std::vector<double>& values, double threshold) {
   Spot spot;
   spot.measured = true;
   spot.value = std::numeric_limits<double>::infinity();
-  std::size_t last = std::numeric_limits<std::size_t>::max();  // the last triangle counted under
+  std::vector<char> flagged(m.faces(), 0);
   for (std::size_t i = 0; i < values.size(); ++i) {
     if (values[i] < threshold) {
       spot.area_under += s.area[i];
-      if (s.face[i] != last) ++spot.under;  // a triangle's points are consecutive
-      last = s.face[i];
+      spot.under += !flagged[s.face[i]];
+      flagged[s.face[i]] = 1;
     }
     if (values[i] < spot.value) {
       spot.value = values[i];
       spot.where = s.points[i];
     }
+  }
+  if (spot.under > 0) {
+    const Patches p = thin_patches(m, flagged);
+    spot.places = p.count;
+    spot.largest_place = p.largest;
   }
   return spot;
 }
@@ -246,8 +252,8 @@ void measure(const Mesh& m, const PointBudget& budget, Progress& progress, Print
     for (std::size_t i = 0; i < gap.size(); ++i)
       if (cavity[s.face[i]]) gap[i] = r.gap_cap;
   }
-  r.wall = spot_of(s, wall, r.rules.min_wall);
-  r.gap = spot_of(s, gap, r.rules.min_gap);
+  r.wall = spot_of(m, s, wall, r.rules.min_wall);
+  r.gap = spot_of(m, s, gap, r.rules.min_gap);
   if (marked == nullptr) return;
   std::vector<double> face_wall = at_faces(m, s, wall, r.wall_cap), face_gap = at_faces(m, s, gap, r.gap_cap);
   *marked = m;

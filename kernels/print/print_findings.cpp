@@ -32,7 +32,7 @@ void add_walls(PrintReport& r) {
   // A crossing within the rays' first half step is below what the grid resolves: said as "under" its bound.
   const double v = r.resolves(r.wall.value) ? r.wall.value : r.unresolved_bound();
   const std::string value = r.resolves(r.wall.value) ? mm_text(v) : r.unresolved();
-  const std::string places = count_text(double(r.wall.under)) + (r.wall.under == 1 ? " place" : " places");
+  const std::string places = count_text(double(r.wall.places)) + (r.wall.places == 1 ? " place" : " places");
   // Thinner than the nozzle draws nothing there: a printer cannot make it. Between the nozzle and two
   // perimeters it prints, weakly or with gaps.
   add_problem(r, v < rules.nozzle ? Severity::will_fail : Severity::may_fail,
@@ -46,7 +46,7 @@ void add_gaps(PrintReport& r) {
   const PrintRules& rules = r.rules;
   const double v = r.resolves(r.gap.value) ? r.gap.value : r.unresolved_bound();
   const std::string value = r.resolves(r.gap.value) ? mm_text(v) : r.unresolved();
-  const std::string places = count_text(double(r.gap.under)) + (r.gap.under == 1 ? " place" : " places");
+  const std::string places = count_text(double(r.gap.places)) + (r.gap.places == 1 ? " place" : " places");
   add_problem(r, Severity::may_fail,
               "gaps narrower than " + mm_text(rules.min_gap) + " (they fuse) at " + places + ", the narrowest " +
                   value + " at " + mm_point_text(r.gap.where),
@@ -169,7 +169,9 @@ std::string PrintReport::summary() const {
   const auto at_least = [&](const Spot& s, double cap) {
     // Under the threshold over less than the nozzle's spot: no finding, and said so.
     const std::string speck =
-        this->speck(s) ? " on a " + area_text(s.area_under) + " speck, smaller than the nozzle's spot" : "";
+        !this->speck(s) ? ""
+        : s.places == 1 ? " on a " + area_text(s.largest_place) + " speck, smaller than the nozzle's spot"
+                        : " on " + count_text(double(s.places)) + " specks, each smaller than the nozzle's spot";
     if (!resolves(s.value)) return unresolved() + speck;
     return (s.value >= cap ? ">= " : "") + mm_text(std::min(s.value, cap)) + speck;
   };

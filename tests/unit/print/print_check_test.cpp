@@ -58,9 +58,19 @@ TEST(PrintCheck, TwoBlocksCloseTogetherHaveANarrowGap) {
   const Mesh tall = joined(box_mesh({0, 0, -45}, {10, 10, 5}), box_mesh({0, 0, 5.2}, {10, 10, 55}));
   const PrintReport speck = check_print(tall, wide, PointBudget{}, no_progress());
   EXPECT_FALSE(mentions(speck, "gaps narrower")) << speck.summary();
-  EXPECT_NE(speck.summary().find("mm² speck, smaller than the nozzle's spot"), std::string::npos) << speck.summary();
-  // Both facing sides.
+  // Both facing sides: two places (they share no corner), each judged by its own area.
+  EXPECT_NE(speck.summary().find("gaps 0.2 mm on 2 specks, each smaller than the nozzle's spot"), std::string::npos)
+      << speck.summary();
   EXPECT_NEAR(speck.gap.area_under, 200, 1e-6);
+  EXPECT_EQ(speck.gap.places, 2u);
+  EXPECT_NEAR(speck.gap.largest_place, 100, 1e-6);
+  // Judged together, 200 mm² would be a finding at a 15 mm nozzle (177 mm²); place by place it is not.
+  wide.nozzle = 15;
+  const PrintReport places = check_print(tall, wide, PointBudget{}, no_progress());
+  EXPECT_FALSE(mentions(places, "gaps narrower")) << places.summary();
+  wide.nozzle = 11;  // 95 mm²: each 100 mm² side is a place of its own that counts
+  EXPECT_TRUE(mentions(check_print(tall, wide, PointBudget{}, no_progress()),
+                       "gaps narrower than 0.4 mm (they fuse) at 2 places"));
   // The same blocks 1 mm apart pass.
   const Mesh apart = joined(box_mesh({0, 0, 0}, {10, 10, 5}), box_mesh({0, 0, 6}, {10, 10, 11}));
   EXPECT_TRUE(check_print(apart, PrintRules{}, PointBudget{}, no_progress()).passes());
