@@ -2,14 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace selfsim::print {
 
 double first_layer_area(const Mesh& m, double layer) {
-  double lowest = std::numeric_limits<double>::infinity();
-  for (const Vec3& p : m.points) lowest = std::min(lowest, p.z);
-  const double z = lowest + 0.5 * layer;
+  // The lowest point a triangle uses: a point no triangle uses is nothing to stand on.
+  const double z = corner_bbox(m).min.z + 0.5 * layer;
   double twice_area = 0;
   for (const Triangle& t : m.triangles) {
     // The cut: the points where the plane crosses the triangle's edges (a corner exactly on it counts as

@@ -276,7 +276,7 @@ PrintReport check_print(const Mesh& m, const PrintRules& rules, const PointBudge
   r.rules = rules;
   r.triangles = m.faces();
   r.area = surface_area(m);
-  r.box = m.bbox();
+  r.box = corner_bbox(m);  // the solid's size: the points its triangles use
   r.topology = mesh_topology(m, progress);
   if (r.topology.boundary_edges > 0)
     throw Error("the mesh is open (" + first_open_edge(m) +

@@ -321,6 +321,13 @@ TEST(PrintCheck, ASolidOnAPointWillFailItsFirstLayer) {
   const PrintReport cube = check_print(box_mesh({0, 0, 0}, {20, 20, 20}), PrintRules{}, PointBudget{}, no_progress());
   EXPECT_NEAR(cube.first_layer, 400, 1e-9);
   EXPECT_FALSE(mentions(cube, "stands on")) << cube.summary();
+  // A point no triangle uses (OBJ files have them) is neither what it stands on nor part of its size.
+  Mesh stray = box_mesh({0, 0, 0}, {20, 20, 20});
+  stray.points.push_back({0, 0, -3});
+  const PrintReport unused = check_print(stray, PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_NEAR(unused.first_layer, 400, 1e-9);
+  EXPECT_NEAR(unused.box.size().z, 20, 1e-12);
+  EXPECT_TRUE(unused.passes()) << unused.summary();
   const PrintReport mushroom = check_print(lathe_fixture::mushroom(5, 15), PrintRules{}, PointBudget{}, no_progress());
   EXPECT_NEAR(mushroom.first_layer, polygon_area(32, 5), 1e-9);
   const PrintReport ball = check_print(lathe_fixture::sphere(10), PrintRules{}, PointBudget{}, no_progress());
