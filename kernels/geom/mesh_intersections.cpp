@@ -15,69 +15,14 @@
 
 #include "kernels/base/error.h"
 #include "kernels/base/huge_pages.h"
+#include "kernels/geom/candidate_grid.h"
 #include "kernels/geom/triangle_contact.h"
 
 namespace selfsim {
 
+using namespace candidate_grid;
+
 namespace {
-
-// ---- The grid: candidate pairs are triangles whose boxes (grown by eps) share a cell.
-//
-// Boxes are floats in units of the mesh's diagonal from its low corner (24 bytes a triangle instead of 48),
-// widened by 2^-23 so that rounding only ever grows them. Every (cell, triangle) insertion is one 64-bit
-// record, the cell's Morton code above the triangle's index, radix-sorted by cell: cells then come in an
-// order that sweeps space, so neighbouring cells find their triangles still in cache (a hash table of cells
-// visits them in random order and misses the cache on most triangles it gathers). The sort is stable and
-// the records start in triangle order, so each cell's run lists its triangles in increasing index.
-
-struct Box {
-  std::array<float, 3> lo, hi;
-};
-
-using Cell = std::array<std::uint32_t, 3>;
-
-// The low 21 bits of x moved to every third bit (bit k to bit 3k), in five shifts of halving width.
-std::uint64_t spread(std::uint64_t x) {
-  x &= 0x1fffff;
-  x = (x | x << 32) & 0x001f00000000ffffull;
-  x = (x | x << 16) & 0x001f0000ff0000ffull;
-  x = (x | x << 8) & 0x100f00f00f00f00full;
-  x = (x | x << 4) & 0x10c30c30c30c30c3ull;
-  x = (x | x << 2) & 0x1249249249249249ull;
-  return x;
-}
-// The inverse: every third bit of x, from bit 0, packed together.
-std::uint32_t compact(std::uint64_t x) {
-  x &= 0x1249249249249249ull;
-  x = (x | x >> 2) & 0x10c30c30c30c30c3ull;
-  x = (x | x >> 4) & 0x100f00f00f00f00full;
-  x = (x | x >> 8) & 0x001f0000ff0000ffull;
-  x = (x | x >> 16) & 0x001f00000000ffffull;
-  x = (x | x >> 32) & 0x1fffffull;
-  return static_cast<std::uint32_t>(x);
-}
-
-int bit_width(std::uint64_t x) { return x == 0 ? 0 : 64 - __builtin_clzll(x); }
-
-struct Grid {
-  std::array<float, 3> per_unit{1, 1, 1};  // cells per unit of the diagonal, on each axis
-  std::array<std::uint32_t, 3> last{};     // the highest cell index on each axis
-  int id_bits = 1;                         // the records' low bits hold the triangle index
-
-  std::uint32_t cell(float u, int axis) const {
-    // Boxes start a little below 0: truncation toward zero takes those to cell 0, as floor would.
-    return std::min(static_cast<std::uint32_t>(std::max(static_cast<std::int32_t>(u * per_unit[axis]), 0)), last[axis]);
-  }
-  Cell low(const Box& b) const { return {cell(b.lo[0], 0), cell(b.lo[1], 1), cell(b.lo[2], 2)}; }
-  Cell high(const Box& b) const { return {cell(b.hi[0], 0), cell(b.hi[1], 1), cell(b.hi[2], 2)}; }
-  static std::uint64_t cells(const Cell& lo, const Cell& hi) {
-    return std::uint64_t{hi[0] - lo[0] + 1} * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1);
-  }
-  std::uint64_t cells(const Box& b) const { return cells(low(b), high(b)); }
-  static std::uint64_t key(const Cell& c) { return spread(c[0]) | spread(c[1]) << 1 | spread(c[2]) << 2; }
-  static Cell cell_of(std::uint64_t key) { return {compact(key), compact(key >> 1), compact(key >> 2)}; }
-  int key_bits() const { return 3 * bit_width(std::max({last[0], last[1], last[2]})); }
-};
 
 // Insertions (triangle, cell) g would make. A sum of whole numbers: the same whatever the threads.
 double insertions(const std::vector<Box>& boxes, const Grid& g) {
@@ -185,39 +130,6 @@ std::vector<std::uint64_t> sorted_records(const std::vector<Box>& boxes, const G
   return records;
 }
 
-bool overlap(const Box& a, const Box& b) {
-  return (a.lo[0] <= b.hi[0]) & (b.lo[0] <= a.hi[0]) & (a.lo[1] <= b.hi[1]) & (b.lo[1] <= a.hi[1]) &
-         (a.lo[2] <= b.hi[2]) & (b.lo[2] <= a.hi[2]);
-}
-
-void check_input(const Mesh& m) {
-  for (std::size_t i = 0; i < m.points.size(); ++i)
-    if (!is_finite(m.points[i])) throw Error("point " + std::to_string(i + 1) + " has non-finite coordinates");
-  if (m.triangles.size() > std::numeric_limits<std::uint32_t>::max())
-    throw Error("a mesh has at most 4294967295 triangles, got " + std::to_string(m.triangles.size()));
-  for (std::size_t f = 0; f < m.triangles.size(); ++f)
-    for (std::uint32_t v : m.triangles[f])
-      if (v >= m.points.size())
-        throw Error("triangle " + std::to_string(f + 1) + " uses point " + std::to_string(std::size_t{v} + 1) +
-                    ", but there are " + std::to_string(m.points.size()) + " points");
-}
-
-// The mesh's corners moved and scaled so that its box starts at the origin and has diagonal 1: every test
-// then works at one scale (a gap of eps = 1e-9 means the same in millimetres and in light years, and no
-// square of a coordinate overflows or underflows).
-struct Corners {
-  const Mesh& m;
-  Vec3 origin;
-  double size;   // the diagonal, or 1 for a mesh of one point
-  double scale;  // 1 / size
-
-  Vec3 at(std::uint32_t p) const { return (m.points[p] - origin) * scale; }
-  std::array<Vec3, 3> operator()(std::uint32_t i) const {
-    const Triangle& t = m.triangles[i];
-    return {at(t[0]), at(t[1]), at(t[2])};
-  }
-};
-
 // The least pair (first << 32 | second) of triangles that meet, or none.
 constexpr std::uint64_t none = std::numeric_limits<std::uint64_t>::max();
 
@@ -285,43 +197,50 @@ std::uint64_t least_pair(const Corners& corners, const std::vector<Box>& boxes, 
   return best.load();
 }
 
-// The candidate pairs' grid over m's triangles, scaled to a unit diagonal: what both searches share.
-struct Candidates {
-  Corners corners;
-  std::vector<Box> boxes;
-  Grid grid;
-  std::vector<std::uint64_t> records;
-  static constexpr double eps = 1e-9;  // of the diagonal, which is 1 now
+}  // namespace
 
-  Candidates(const Mesh& m, const BBox3& bounds, double size, Progress& progress)
-      : corners{m, bounds.min, size, 1 / size} {
-    const std::size_t f = m.triangles.size();
-    // Grown by eps, then by 2^-23 so that rounding to float only ever grows them.
-    constexpr double margin = 0x1p-23;
-    size_large(boxes, f, progress);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, f, 1 << 14), [&](const tbb::blocked_range<std::size_t>& r) {
-      for (std::size_t i = r.begin(); i < r.end(); ++i) {
-        const auto c = corners(static_cast<std::uint32_t>(i));
-        const Vec3 lo = min_each(min_each(c[0], c[1]), c[2]) - Vec3::all(eps + margin);
-        const Vec3 hi = max_each(max_each(c[0], c[1]), c[2]) + Vec3::all(eps + margin);
-        boxes[i] = {{float(lo.x), float(lo.y), float(lo.z)}, {float(hi.x), float(hi.y), float(hi.z)}};
-      }
-    });
-    if (progress.cancelled()) throw Cancelled();
-    const Vec3 reach = bounds.size() / corners.size + Vec3::all(eps + 2 * margin);
-    grid = choose_grid(boxes, {float(reach.x), float(reach.y), float(reach.z)});
-    progress.fraction(0.05);
-    records = sorted_records(boxes, grid, progress);
-    progress.fraction(0.2);
-  }
+namespace candidate_grid {
 
-  // Where triangles i and j meet, in m's coordinates.
-  TrianglePair pair(std::uint32_t i, std::uint32_t j) const {
-    const Vec3 where = *triangles_meet(corners.m.triangles[i], corners.m.triangles[j], ContactTriangle(corners(i)),
-                                       ContactTriangle(corners(j)), eps);
-    return TrianglePair{i, j, corners.origin + where * corners.size};
-  }
-};
+Candidates::Candidates(const Mesh& m, const BBox3& bounds, double size, Progress& progress)
+    : corners{m, bounds.min, size, 1 / size} {
+  const std::size_t f = m.triangles.size();
+  // Grown by eps, then by 2^-23 so that rounding to float only ever grows them.
+  constexpr double margin = 0x1p-23;
+  size_large(boxes, f, progress);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, f, 1 << 14), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t i = r.begin(); i < r.end(); ++i) {
+      const auto c = corners(static_cast<std::uint32_t>(i));
+      const Vec3 lo = min_each(min_each(c[0], c[1]), c[2]) - Vec3::all(eps + margin);
+      const Vec3 hi = max_each(max_each(c[0], c[1]), c[2]) + Vec3::all(eps + margin);
+      boxes[i] = {{float(lo.x), float(lo.y), float(lo.z)}, {float(hi.x), float(hi.y), float(hi.z)}};
+    }
+  });
+  if (progress.cancelled()) throw Cancelled();
+  const Vec3 reach = bounds.size() / corners.size + Vec3::all(eps + 2 * margin);
+  grid = choose_grid(boxes, {float(reach.x), float(reach.y), float(reach.z)});
+  progress.fraction(0.05);
+  records = sorted_records(boxes, grid, progress);
+  progress.fraction(0.2);
+}
+
+// Where triangles i and j meet, in m's coordinates.
+TrianglePair Candidates::pair(std::uint32_t i, std::uint32_t j) const {
+  const Vec3 where = *triangles_meet(corners.m.triangles[i], corners.m.triangles[j], ContactTriangle(corners(i)),
+                                     ContactTriangle(corners(j)), eps);
+  return TrianglePair{i, j, corners.origin + where * corners.size};
+}
+
+void check_input(const Mesh& m) {
+  for (std::size_t i = 0; i < m.points.size(); ++i)
+    if (!is_finite(m.points[i])) throw Error("point " + std::to_string(i + 1) + " has non-finite coordinates");
+  if (m.triangles.size() > std::numeric_limits<std::uint32_t>::max())
+    throw Error("a mesh has at most 4294967295 triangles, got " + std::to_string(m.triangles.size()));
+  for (std::size_t f = 0; f < m.triangles.size(); ++f)
+    for (std::uint32_t v : m.triangles[f])
+      if (v >= m.points.size())
+        throw Error("triangle " + std::to_string(f + 1) + " uses point " + std::to_string(std::size_t{v} + 1) +
+                    ", but there are " + std::to_string(m.points.size()) + " points");
+}
 
 // The mesh's box and its diagonal (1 for a mesh of one point).
 double diagonal_of(const Mesh& m, BBox3& bounds) {
@@ -331,68 +250,7 @@ double diagonal_of(const Mesh& m, BBox3& bounds) {
   return diagonal > 0 ? diagonal : 1;
 }
 
-// Every pair that meets, in the chunks of whole batches until `limit` are found (then the batch's pairs
-// past it are dropped): which pairs does not depend on the threads, as the batches are fixed.
-std::vector<TrianglePair> gather_pairs(const Candidates& c, std::size_t limit, Progress& progress) {
-  const Grid& grid = c.grid;
-  const std::vector<std::uint64_t>& records = c.records;
-  const std::size_t total = records.size(), chunk = 1 << 13, chunks = (total + chunk - 1) / chunk;
-  const std::uint64_t id_mask = (std::uint64_t{1} << grid.id_bits) - 1;
-  auto cell_start = [&](std::size_t k) {
-    while (k > 0 && k < total && (records[k] >> grid.id_bits) == (records[k - 1] >> grid.id_bits)) ++k;
-    return std::min(k, total);
-  };
-  std::vector<std::vector<std::uint64_t>> found(chunks);
-  std::vector<std::uint64_t> pairs;
-  const std::size_t batch = std::max<std::size_t>(chunks / 32, 16);
-  for (std::size_t begin = 0; begin < chunks && pairs.size() < limit; begin += batch) {
-    const std::size_t end = std::min(chunks, begin + batch);
-    tbb::parallel_for(begin, end, [&](std::size_t k0) {
-      struct Entry {
-        std::uint32_t id;
-        unsigned starts;  // bit a: the box starts in this cell on axis a
-        ContactTriangle tri;
-      };
-      std::vector<Entry> in;
-      std::vector<std::uint64_t>& out = found[k0];
-      const std::size_t to = cell_start((k0 + 1) * chunk);
-      for (std::size_t k = cell_start(k0 * chunk); k < to && out.size() < limit;) {
-        const std::uint64_t key = records[k] >> grid.id_bits;
-        const Cell here = Grid::cell_of(key);
-        in.clear();
-        for (; k < to && (records[k] >> grid.id_bits) == key; ++k) {
-          const auto j = static_cast<std::uint32_t>(records[k] & id_mask);
-          const Cell low = grid.low(c.boxes[j]);
-          in.push_back(
-              {j, unsigned(low[0] == here[0]) | unsigned(low[1] == here[1]) << 1 | unsigned(low[2] == here[2]) << 2,
-               ContactTriangle(c.corners(j))});
-        }
-        for (std::size_t x = 0; x + 1 < in.size(); ++x)
-          for (std::size_t y = x + 1; y < in.size(); ++y) {
-            const Entry& p = in[x];
-            const Entry& q = in[y];
-            // Once a pair: in the cell at the low corner of the boxes' overlap.
-            if ((p.starts | q.starts) != 7 || !overlap(c.boxes[p.id], c.boxes[q.id])) continue;
-            if (triangles_meet(c.corners.m.triangles[p.id], c.corners.m.triangles[q.id], p.tri, q.tri, Candidates::eps))
-              out.push_back(std::uint64_t{p.id} << 32 | q.id);
-          }
-      }
-    });
-    for (std::size_t k = begin; k < end; ++k) {
-      pairs.insert(pairs.end(), found[k].begin(), found[k].end());
-      std::vector<std::uint64_t>().swap(found[k]);
-    }
-    progress.step(0.2 + 0.8 * double(end) / double(chunks));
-  }
-  std::sort(pairs.begin(), pairs.end());
-  if (pairs.size() > limit) pairs.resize(limit);
-  std::vector<TrianglePair> out;
-  out.reserve(pairs.size());
-  for (std::uint64_t p : pairs) out.push_back(c.pair(std::uint32_t(p >> 32), std::uint32_t(p)));
-  return out;
-}
-
-}  // namespace
+}  // namespace candidate_grid
 
 std::optional<TrianglePair> first_intersection(const Mesh& m, Progress& progress) {
   progress.start("intersections");
@@ -404,16 +262,6 @@ std::optional<TrianglePair> first_intersection(const Mesh& m, Progress& progress
   const std::uint64_t pair = least_pair(c.corners, c.boxes, c.grid, c.records, Candidates::eps, progress);
   if (pair == none) return std::nullopt;
   return c.pair(static_cast<std::uint32_t>(pair >> 32), static_cast<std::uint32_t>(pair));
-}
-
-std::vector<TrianglePair> intersecting_pairs(const Mesh& m, std::size_t limit, Progress& progress) {
-  progress.start("intersections");
-  check_input(m);
-  if (m.triangles.size() < 2 || limit == 0) return {};
-  BBox3 bounds;
-  const double size = diagonal_of(m, bounds);
-  const Candidates c(m, bounds, size, progress);
-  return gather_pairs(c, limit, progress);
 }
 
 }  // namespace selfsim

@@ -26,6 +26,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -51,5 +52,16 @@ std::optional<TrianglePair> first_intersection(const Mesh& m, Progress& progress
 // depend on the threads, and the time is at most first_intersection's when there are few). The print check
 // tells crossings from touches by them (kernels/print/self_contact.h).
 std::vector<TrianglePair> intersecting_pairs(const Mesh& m, std::size_t limit, Progress& progress);
+
+// Every pair that meets, sorted into kinds by `kind`: it returns a kind from 0 to kinds - 1, or -1 for a pair
+// to leave out (neither kept nor counted). It is called from several threads at once, so it must only read.
+// Each kind keeps up to `limit` pairs, sorted (as intersecting_pairs picks them), and the search goes on while
+// any kind has fewer: a pair of a rare kind is never hidden behind `limit` of a common one (the print check's
+// crossings behind thousands of touches). Memory is bounded by `limit` pairs a kind (and a batch's); the time
+// is at most a whole search's, O(F) as first_intersection's (with `kind` once a meeting pair).
+// (Both in mesh_contact_pairs.cpp.)
+std::vector<std::vector<TrianglePair>> classified_pairs(const Mesh& m, std::size_t limit, int kinds,
+                                                        const std::function<int(std::uint32_t, std::uint32_t)>& kind,
+                                                        Progress& progress);
 
 }  // namespace selfsim

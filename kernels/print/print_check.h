@@ -64,7 +64,7 @@ struct PrintReport {
   BBox3 box;
   MeshTopology topology;
   bool inward = false;                   // closed, but facing inwards (negative volume)
-  std::optional<TrianglePair> crossing;  // a crossing that counts (contact.crossing)
+  std::optional<TrianglePair> crossing;  // a crossing that counts: contact.crossing, else contact.overlap
   SelfContact contact;                   // crossings, creases and specks (self_contact.h)
   Spot wall, gap;
   double wall_cap = 0, gap_cap = 0;   // walls and gaps at least this wide read as this

@@ -56,13 +56,21 @@ void add_gaps(PrintReport& r) {
 
 void add_contact(PrintReport& r) {
   const SelfContact& c = r.contact;
-  const std::string more = c.capped ? " or more" : "";
-  if (r.crossing)
+  const std::string more = c.capped ? " or more" : "", longer = c.crossings_capped ? " or more" : "";
+  if (c.crossing)
     add_problem(r, Severity::will_fail,
-                "it crosses itself near " + mm_point_text(r.crossing->where) + " (triangles " +
-                    std::to_string(r.crossing->first + 1) + " and " + std::to_string(r.crossing->second + 1) +
-                    ", along " + mm_text(c.crossing_length) + more + ")",
+                "it crosses itself near " + mm_point_text(c.crossing->where) + " (triangles " +
+                    std::to_string(c.crossing->first + 1) + " and " + std::to_string(c.crossing->second + 1) +
+                    ", along " + mm_text(c.crossing_length) + longer + ")",
                 "method = \"grid\" (solid.thicken, solid.tube) merges it, or a smaller thickness or radius");
+  // Separate closed solids overlapping: PrusaSlicer 2.5 slices two overlapping cubes saved as one mesh as
+  // their union, but another slicer may not, and the walls between them are measured as one solid's.
+  if (c.overlap)
+    add_problem(r, Severity::may_fail,
+                count_text(double(c.overlap_solids)) + " solids overlap near " + mm_point_text(c.overlap->where) +
+                    " (triangles " + std::to_string(c.overlap->first + 1) + " and " +
+                    std::to_string(c.overlap->second + 1) + ", along " + mm_text(c.overlap_length) + longer + ")",
+                "solid.union{ ... } makes them one solid");
   if (c.crease)
     add_problem(r, Severity::cosmetic,
                 "a crease where the surface touches itself near " + mm_point_text(*c.crease) + " (" +

@@ -13,7 +13,9 @@ namespace selfsim::print {
 
 void survey_contact(const Mesh& m, PrintReport& r, Progress& progress) {
   r.contact = self_contact(m, r.rules.nozzle, progress);
-  r.crossing = r.contact.crossing;
+  // Any crossing that counts: one through itself (will fail) or between solids (an overlap, may fail). Either
+  // may bury points of one part in another, which the walls' rays then test (print_check.cpp).
+  r.crossing = r.contact.crossing ? r.contact.crossing : r.contact.overlap;
 }
 
 void add_overhang(const Mesh& m, PrintReport& r, Mesh* marked) {

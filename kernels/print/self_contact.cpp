@@ -35,6 +35,31 @@ bool both_sides(const std::array<Vec3, 3>& t, Vec3 p, Vec3 n, double tol, std::a
   return *std::max_element(d.begin(), d.end()) > tol && *std::min_element(d.begin(), d.end()) < -tol;
 }
 
+// Whether each piece is a solid of its own: closed (each edge's reverse is in it too, so it is closed and
+// its faces agree) and facing outwards (a positive volume). Not a cavity, not a loose sheet.
+std::vector<char> solid_pieces(const Mesh& m, const std::vector<std::uint32_t>& piece, std::size_t pieces) {
+  std::vector<char> solid(pieces, 1);
+  std::vector<double> volume(pieces, 0);
+  std::vector<std::uint64_t> edges;
+  edges.reserve(3 * m.faces());
+  const BBox3 b = m.bbox();
+  const Vec3 o = 0.5 * (b.min + b.max);
+  for (std::size_t f = 0; f < m.faces(); ++f) {
+    volume[piece[f]] += volume_term(m, m.triangles[f], o);
+    for (int i = 0; i < 3; ++i) edges.push_back(std::uint64_t{m.triangles[f][i]} << 32 | m.triangles[f][(i + 1) % 3]);
+  }
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t f = 0; f < m.faces(); ++f)
+    for (int i = 0; i < 3; ++i) {
+      // Pieces are joined across edges, so a reverse edge present belongs to the same piece.
+      const std::uint64_t back = std::uint64_t{m.triangles[f][(i + 1) % 3]} << 32 | m.triangles[f][i];
+      if (!std::binary_search(edges.begin(), edges.end(), back)) solid[piece[f]] = 0;
+    }
+  for (std::size_t p = 0; p < pieces; ++p)
+    if (!(volume[p] > 0)) solid[p] = 0;
+  return solid;
+}
+
 }  // namespace
 
 double crossing_length(const std::array<Vec3, 3>& a, const std::array<Vec3, 3>& b) {
@@ -87,32 +112,49 @@ SelfContact self_contact(const Mesh& m, double nozzle, Progress& progress, std::
       }
     }
 
-  const std::vector<TrianglePair> pairs = intersecting_pairs(m, limit, progress);
-  out.capped = pairs.size() >= limit;
-  std::optional<TrianglePair> first_crossing;
+  const std::vector<char> solid = solid_pieces(m, piece, box.size());
   const auto corners = [&](std::uint32_t f) {
     const Triangle& t = m.triangles[f];
     return std::array<Vec3, 3>{m.points[t[0]], m.points[t[1]], m.points[t[2]]};
   };
-  for (const TrianglePair& p : pairs) {
-    if (speck[piece[p.first]] || speck[piece[p.second]]) continue;  // a speck's own contact: said with it
-    const double length = crossing_length(corners(p.first), corners(p.second));
-    if (length > 0) {
-      out.crossing_length += length;
-      ++out.crossing_pairs;
-      if (!first_crossing) first_crossing = p;
-    } else {
-      ++out.crease_pairs;
-      if (!out.crease) out.crease = p.where;
-    }
+  // Sorted as found, each kind capped on its own: thousands of touches never hide a crossing.
+  enum Kind { touch, cross, overlap, kinds };
+  const auto kind = [&](std::uint32_t a, std::uint32_t b) -> int {
+    const std::uint32_t pa = piece[a], pb = piece[b];
+    if (speck[pa] || speck[pb]) return -1;  // a speck's own contact: said with it
+    if (!(crossing_length(corners(a), corners(b)) > 0)) return touch;
+    return pa != pb && solid[pa] && solid[pb] ? overlap : cross;
+  };
+  const std::vector<std::vector<TrianglePair>> pairs = classified_pairs(m, limit, kinds, kind, progress);
+  out.capped = pairs[touch].size() >= limit;
+  out.crossings_capped = pairs[cross].size() >= limit || pairs[overlap].size() >= limit;
+  for (const TrianglePair& p : pairs[touch]) {
+    ++out.crease_pairs;
+    if (!out.crease) out.crease = p.where;
   }
+  const auto length = [&](const TrianglePair& p) { return crossing_length(corners(p.first), corners(p.second)); };
+  for (const TrianglePair& p : pairs[cross]) out.crossing_length += length(p);
+  std::vector<std::uint32_t> joined;
+  for (const TrianglePair& p : pairs[overlap]) {
+    out.overlap_length += length(p);
+    joined.insert(joined.end(), {piece[p.first], piece[p.second]});
+  }
+  std::sort(joined.begin(), joined.end());
   // Passing through over less than the nozzle's width together: a pinch the slicer cannot resolve, a crease.
-  if (out.crossing_length > nozzle) {
-    out.crossing = first_crossing;
-  } else if (first_crossing) {
-    out.crease_pairs += out.crossing_pairs;
-    if (!out.crease) out.crease = first_crossing->where;
-  }
+  const auto count = [&](const std::vector<TrianglePair>& found, double along, std::optional<TrianglePair>& first,
+                         std::size_t& n) {
+    if (found.empty()) return;
+    if (along > nozzle) {
+      first = found.front();
+      n = found.size();
+      return;
+    }
+    out.crease_pairs += found.size();
+    if (!out.crease) out.crease = found.front().where;
+  };
+  count(pairs[cross], out.crossing_length, out.crossing, out.crossing_pairs);
+  count(pairs[overlap], out.overlap_length, out.overlap, out.overlap_pairs);
+  if (out.overlap) out.overlap_solids = std::size_t(std::unique(joined.begin(), joined.end()) - joined.begin());
   return out;
 }
 

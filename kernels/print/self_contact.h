@@ -7,8 +7,12 @@
 //     nozzle's width: a slicer fuses it;
 //   - a sealed speck: a closed piece (face-connected component) smaller than the nozzle's spot, across or in
 //     area, beside a piece that is not: inside or touching another part, or alone, a slicer fuses or drops it.
-// The pairs are those mesh_intersections.h finds, up to `limit` of them (a mesh touching itself everywhere is
-// judged by the first few thousand): O(F).
+// A crossing between two separate closed pieces that face outwards (two solids saved as one mesh, overlapping)
+// is an overlap, not a crossing: a slicer (PrusaSlicer 2.5) slices their union. A crossing within one piece,
+// or with a piece that is open or faces inwards (a cavity), is a crossing.
+// The pairs are those mesh_intersections.h finds, sorted into touches, crossings and overlaps as they are
+// found, up to `limit` of each (a mesh touching itself everywhere is judged by the first few thousand
+// touches, but its crossings are still found): O(F).
 #pragma once
 
 #include <cstddef>
@@ -26,10 +30,15 @@ struct SelfContact {
   std::size_t crossing_pairs = 0;
   std::optional<Vec3> crease;  // where the surface first touches itself (or crosses over less than a nozzle)
   std::size_t crease_pairs = 0;
-  std::size_t specks = 0;   // sealed pieces smaller than the nozzle's spot
-  Vec3 speck_where;         // the largest speck's centre
-  double speck_across = 0;  // mm: the largest speck's longest side
-  bool capped = false;      // `limit` pairs were found: there may be more
+  std::size_t specks = 0;               // sealed pieces smaller than the nozzle's spot
+  Vec3 speck_where;                     // the largest speck's centre
+  double speck_across = 0;              // mm: the largest speck's longest side
+  std::optional<TrianglePair> overlap;  // the first pair where separate closed solids pass through each other
+  double overlap_length = 0;            // mm, summed as crossing_length; they count past the nozzle's width too
+  std::size_t overlap_pairs = 0;
+  std::size_t overlap_solids = 0;  // the solids (closed pieces facing outwards) those pairs join
+  bool capped = false;             // `limit` touching pairs were found: there may be more creases
+  bool crossings_capped = false;   // `limit` crossing or overlapping pairs: their lengths may be longer
 };
 
 SelfContact self_contact(const Mesh& m, double nozzle, Progress& progress, std::size_t limit = 4096);

@@ -93,7 +93,10 @@ TEST(PrintCheck, InwardCrossingBigAndTinyAreFindings) {
   for (Triangle& t : inward.triangles) std::swap(t[1], t[2]);
   EXPECT_TRUE(mentions(check_print(inward, PrintRules{}, PointBudget{}, no_progress()), "face inwards"));
 
-  const Mesh crossing = joined(box_mesh({0, 0, 0}, {10, 10, 10}), box_mesh({5, 5, 5}, {15, 15, 15}));
+  // One closed piece through itself: a cube's top corner pushed through its bottom (two overlapping cubes
+  // are two solids, which a slicer unites: see OverlappingSolidsMayFailAndSayUnion).
+  Mesh crossing = box_mesh({0, 0, 0}, {10, 10, 10});
+  crossing.points[7] = {10, 10, -5};
   const PrintReport c = check_print(crossing, PrintRules{}, PointBudget{}, no_progress());
   EXPECT_TRUE(mentions(c, "crosses itself near")) << c.summary();
 
@@ -265,10 +268,11 @@ TEST(PrintCheck, SpecksAndCreasesAreNotCrossings) {
       << e.summary();
   EXPECT_NE(e.summary().find("a slicer fuses it"), std::string::npos) << e.summary();
 
-  const Mesh through = joined(box_mesh({0, 0, 0}, {10, 10, 10}), box_mesh({5, 5, 5}, {15, 15, 15}));
+  Mesh through = box_mesh({0, 0, 0}, {10, 10, 10});
+  through.points[7] = {10, 10, -5};  // its top corner through its bottom: one piece crossing itself
   const PrintReport c = check_print(through, PrintRules{}, PointBudget{}, no_progress());
   ASSERT_TRUE(c.crossing.has_value()) << c.summary();
-  EXPECT_GT(c.contact.crossing_length, 10);
+  EXPECT_GT(c.contact.crossing_length, 1);
   EXPECT_EQ(c.problems.front().severity, Severity::will_fail);
   EXPECT_NE(c.problems.front().fix.find("method = \"grid\""), std::string::npos) << c.problems.front().fix;
 }
@@ -351,4 +355,49 @@ TEST(PrintCheck, ASolidOnAPointWillFailItsFirstLayer) {
   EXPECT_FALSE(mentions(
       check_print(lathe_fixture::lathe({{0.5, 0}, {0.5, 5}}, 0, 5, 32), PrintRules{}, PointBudget{}, no_progress()),
       "stands on"));
+}
+
+// Two overlapping cubes saved as one mesh are two solids: PrusaSlicer 2.5 slices them as their union, so it
+// may fail (another slicer may not), and the fix is solid.union. A cavity through its solid's wall still
+// crosses itself.
+TEST(PrintCheck, OverlappingSolidsMayFailAndSayUnion) {
+  const Mesh two = joined(box_mesh({0, 0, 0}, {10, 10, 10}), box_mesh({5, 5, 5}, {15, 15, 15}));
+  const PrintReport r = check_print(two, PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_FALSE(mentions(r, "crosses itself")) << r.summary();
+  ASSERT_FALSE(r.problems.empty());
+  EXPECT_EQ(r.problems.front().severity, Severity::may_fail) << r.summary();
+  EXPECT_NE(r.problems.front().what.find("2 solids overlap near (10, 5, 10) mm (triangles 3 and 18, along 30 mm)"),
+            std::string::npos)
+      << r.problems.front().what;
+  EXPECT_EQ(r.problems.front().fix, "solid.union{ ... } makes them one solid");
+  EXPECT_TRUE(r.crossing.has_value());  // the report's `crossing`: the surfaces pass through each other
+  EXPECT_EQ(r.contact.overlap_solids, 2u);
+
+  Mesh cavity = box_mesh({8, 2, 2}, {12, 8, 8});  // faces inwards: a cavity, crossing the cube's wall
+  for (Triangle& t : cavity.triangles) std::swap(t[1], t[2]);
+  const PrintReport h =
+      check_print(joined(box_mesh({0, 0, 0}, {10, 10, 10}), cavity), PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_TRUE(mentions(h, "crosses itself near")) << h.summary();
+  EXPECT_FALSE(mentions(h, "solids overlap")) << h.summary();
+}
+
+// Pairs of triangles are capped at 4,096 (a mesh touching itself everywhere), but touches only: 80 pairs of
+// face-touching cubes (more than 4,096 touching pairs of triangles) before, by triangle index, a cube whose
+// corner is pushed through its own bottom still crosses itself.
+TEST(PrintCheck, ACrossingIsNotHiddenBehindThousandsOfTouches) {
+  Mesh m;
+  for (int i = 0; i < 80; ++i) {
+    const double x = 25.0 * i;
+    m = joined(joined(m, box_mesh({x, 0, 0}, {x + 10, 10, 10})), box_mesh({x + 10, 0, 0}, {x + 20, 10, 10}));
+  }
+  Mesh through = box_mesh({0, 30, 0}, {10, 40, 10});
+  through.points[7] = {10, 40, -5};
+  m = joined(m, through);
+  const PrintReport r = check_print(m, PrintRules{}, PointBudget{}, no_progress());
+  EXPECT_TRUE(r.contact.capped);
+  EXPECT_EQ(r.contact.crease_pairs, 4096u);
+  ASSERT_TRUE(r.crossing.has_value()) << r.summary();
+  EXPECT_GE(r.crossing->first, 80u * 2 * 12);
+  EXPECT_TRUE(mentions(r, "crosses itself near")) << r.summary();
+  EXPECT_FALSE(r.passes());
 }

@@ -38,10 +38,13 @@ TEST(SelfContact, GathersEveryPairUpToTheLimit) {
                 (all[i - 1].first == all[i].first && all[i - 1].second < all[i].second));
   EXPECT_EQ(intersecting_pairs(through, 3, no_progress()).size(), 3u);
   EXPECT_TRUE(intersecting_pairs(box_mesh({0, 0, 0}, {1, 1, 1}), 100, no_progress()).empty());
-  // The crossing: six segments of 5 mm where the faces pass through each other.
+  // Two closed solids overlapping: six segments of 5 mm where their faces pass through each other, an
+  // overlap of 2 solids (a slicer unites them), not a crossing.
   const SelfContact c = self_contact(through, 0.4, no_progress());
-  ASSERT_TRUE(c.crossing.has_value());
-  EXPECT_NEAR(c.crossing_length, 30, 1e-9);
+  EXPECT_FALSE(c.crossing.has_value());
+  ASSERT_TRUE(c.overlap.has_value());
+  EXPECT_NEAR(c.overlap_length, 30, 1e-9);
+  EXPECT_EQ(c.overlap_solids, 2u);
   EXPECT_FALSE(c.capped);
 }
 
@@ -49,9 +52,9 @@ TEST(SelfContact, ASmallCrossingIsACreaseAndASmallPieceASpeck) {
   // Two blocks overlapping by 0.1 mm along one edge: they pass through each other over 10 mm of line, past a
   // 0.4 mm nozzle; with a 50 mm nozzle it is a pinch the slicer cannot resolve.
   const Mesh pinch = joined(box_mesh({0, 0, 0}, {10, 10, 10}), box_mesh({9.9, 9.9, 0.5}, {20, 20, 9.5}));
-  EXPECT_TRUE(self_contact(pinch, 0.4, no_progress()).crossing.has_value());
+  EXPECT_TRUE(self_contact(pinch, 0.4, no_progress()).overlap.has_value());
   const SelfContact wide = self_contact(pinch, 50, no_progress());
-  EXPECT_FALSE(wide.crossing.has_value());
+  EXPECT_FALSE(wide.overlap.has_value());
   EXPECT_TRUE(wide.crease.has_value());
   // A 0.2 mm cube inside a 10 mm one: a speck; alone, it is the solid, no speck.
   const Mesh inside = joined(box_mesh({0, 0, 0}, {10, 10, 10}), box_mesh({3, 3, 3}, {3.2, 3.2, 3.2}));
@@ -60,4 +63,50 @@ TEST(SelfContact, ASmallCrossingIsACreaseAndASmallPieceASpeck) {
   EXPECT_NEAR(s.speck_across, 0.2, 1e-12);
   EXPECT_NEAR(s.speck_where.x, 3.1, 1e-12);
   EXPECT_EQ(self_contact(box_mesh({3, 3, 3}, {3.2, 3.2, 3.2}), 0.4, no_progress()).specks, 0u);
+}
+
+// A piece through itself is a crossing; a cavity (a closed piece facing inwards) through its solid's wall is
+// one too: only separate closed solids facing outwards overlap.
+TEST(SelfContact, OnlySeparateSolidsOverlap) {
+  Mesh self = box_mesh({0, 0, 0}, {10, 10, 10});
+  self.points[7] = {10, 10, -5};  // the top corner pushed through the bottom
+  const SelfContact s = self_contact(self, 0.4, no_progress());
+  ASSERT_TRUE(s.crossing.has_value());
+  EXPECT_FALSE(s.overlap.has_value());
+  EXPECT_GT(s.crossing_length, 1);
+  Mesh cavity = box_mesh({8, 2, 2}, {12, 8, 8});
+  for (Triangle& t : cavity.triangles) std::swap(t[1], t[2]);
+  const SelfContact h = self_contact(joined(box_mesh({0, 0, 0}, {10, 10, 10}), cavity), 0.4, no_progress());
+  EXPECT_TRUE(h.crossing.has_value());
+  EXPECT_FALSE(h.overlap.has_value());
+}
+
+// The cap counts each kind apart: with a limit of 8, many touching pairs first (by triangle index) do not
+// hide a crossing or an overlap after them, and the touches stop at the limit.
+TEST(SelfContact, CrossingsAreNotHiddenBehindTheLimitOfTouches) {
+  Mesh m;
+  for (int i = 0; i < 6; ++i) {
+    const double x = 25.0 * i;
+    m = joined(joined(m, box_mesh({x, 0, 0}, {x + 10, 10, 10})), box_mesh({x + 10, 0, 0}, {x + 20, 10, 10}));
+  }
+  const std::size_t touching = intersecting_pairs(m, 100000, no_progress()).size();
+  ASSERT_GT(touching, 8u);
+  Mesh self = box_mesh({0, 30, 0}, {10, 40, 10});
+  self.points[7] = {10, 40, -5};
+  m = joined(joined(m, self), joined(box_mesh({0, 60, 0}, {10, 70, 10}), box_mesh({5, 65, 5}, {15, 75, 15})));
+  const SelfContact c = self_contact(m, 0.4, no_progress(), 8);
+  EXPECT_TRUE(c.capped);
+  EXPECT_EQ(c.crease_pairs, 8u);
+  EXPECT_FALSE(c.crossings_capped);
+  ASSERT_TRUE(c.crossing.has_value());
+  EXPECT_GE(c.crossing->first, 6u * 2 * 12);
+  ASSERT_TRUE(c.overlap.has_value());
+  EXPECT_NEAR(c.overlap_length, 30, 1e-9);
+  // classified_pairs keeps each kind's least pairs, sorted.
+  const auto kinds = classified_pairs(
+      m, 5, 2, [](std::uint32_t a, std::uint32_t) { return a < 72 ? 0 : 1; }, no_progress());
+  ASSERT_EQ(kinds.size(), 2u);
+  EXPECT_EQ(kinds[0].size(), 5u);
+  EXPECT_EQ(kinds[1].size(), 5u);
+  EXPECT_GE(kinds[1].front().first, 72u);
 }
