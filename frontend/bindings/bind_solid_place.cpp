@@ -94,10 +94,10 @@ std::string orient_text(const print::Orientation& r, const print::OrientOptions&
   if (opt.least_overhang)
     return std::string(r.kept ? "least overhang as it was" : "to the least overhang") + ", " + standing_text(r, opt) +
            ": " + overhang;
-  if (r.kept && !(r.face >= opt.least_first_layer()))
-    return "no flat face of at least " + area_text(opt.least_first_layer()) + ": left as it was, " +
-           standing_text(r, opt) + ": " + overhang;
-  return "on its largest flat face (" + area_text(r.face) + "), " + overhang;
+  // It turns only to stand on more than it did (best_orientation).
+  if (r.kept) return "left as it was, " + standing_text(r, opt) + ": " + overhang;
+  if (r.face >= opt.least_first_layer()) return "on its largest flat face (" + area_text(r.face) + "), " + overhang;
+  return "laid across its thinnest side, " + standing_text(r, opt) + ": " + overhang;
 }
 
 // solid.orient(mesh, { face = "largest" } | { least = "overhang", overhang = 45 } | { rotate = 90, axis = {1,0,0} },
