@@ -210,9 +210,9 @@ void push_print_report(lua_State* L, const print::PrintReport& r) {
     };
     push_reading(r.wall, r.wall_cap, "thinnest_wall", "wall_resolved");
     push_reading(r.gap, r.gap_cap, "narrowest_gap", "gap_resolved");
-    lua_pushinteger(L, static_cast<lua_Integer>(r.wall.under));
+    lua_pushinteger(L, static_cast<lua_Integer>(r.wall.places));
     lua_setfield(L, -2, "thin");
-    lua_pushinteger(L, static_cast<lua_Integer>(r.gap.under));
+    lua_pushinteger(L, static_cast<lua_Integer>(r.gap.places));
     lua_setfield(L, -2, "narrow");
   }
 }

@@ -7,7 +7,8 @@ namespace selfsim::print {
 
 double first_layer_area(const Mesh& m, double layer) {
   // The lowest point a triangle uses: a point no triangle uses is nothing to stand on.
-  const double z = corner_bbox(m).min.z + 0.5 * layer;
+  const BBox3 box = corner_bbox(m);
+  const double z = box.min.z + 0.5 * layer, cx = 0.5 * (box.min.x + box.max.x), cy = 0.5 * (box.min.y + box.max.y);
   double twice_area = 0;
   for (const Triangle& t : m.triangles) {
     // The cut: the points where the plane crosses the triangle's edges (a corner exactly on it counts as
@@ -25,7 +26,8 @@ double first_layer_area(const Mesh& m, double layer) {
     Vec3 p = ends[0], q = ends[1];
     // Inside on the left: the normal, turned a quarter to the left, runs along the segment.
     if ((q.x - p.x) * -normal.y + (q.y - p.y) * normal.x < 0) std::swap(p, q);
-    twice_area += p.x * q.y - q.x * p.y;
+    // About the box's centre: far from the origin (1e9) the terms would cancel to rounding noise.
+    twice_area += (p.x - cx) * (q.y - cy) - (q.x - cx) * (p.y - cy);
   }
   return std::abs(0.5 * twice_area);  // a solid facing inwards has its area negative
 }

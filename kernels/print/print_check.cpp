@@ -281,11 +281,18 @@ PrintReport check_print(const Mesh& m, const PrintRules& rules, const PointBudge
   if (r.topology.boundary_edges > 0)
     throw Error("the mesh is open (" + first_open_edge(m) +
                 "): a print needs a closed solid; thicken the surface first (solid.thicken)");
-  r.inward = enclosed_volume(m) < 0;
+  r.volume = enclosed_volume(m);
+  r.inward = r.volume < 0;
   progress.fraction(0.1);
   ProgressStage crossing(progress, 0.1, 0.3);
   survey_contact(m, r, crossing);  // crossings, creases, specks (print_survey.cpp)
-  measure(m, budget, progress, r, marked);
+  // A mesh that is no 2-manifold (edges of three faces or more: a triangle repeated, solids stacked on one
+  // another) has no inside for a ray to cross (every ray would count each copy) and will fail anyway.
+  if (r.topology.manifold()) {
+    measure(m, budget, progress, r, marked);
+  } else {
+    r.skipped = "walls and gaps not measured: not a 2-manifold";
+  }
   if (marked != nullptr && r.skipped.size() > 0) *marked = m;
   add_overhang(m, r, marked);
   add_findings(r);

@@ -63,6 +63,7 @@ struct PrintReport {
   double area = 0;  // mm², the whole surface's
   BBox3 box;
   MeshTopology topology;
+  double volume = 0;                     // mm³ it encloses (negative facing inwards)
   bool inward = false;                   // closed, but facing inwards (negative volume)
   std::optional<TrianglePair> crossing;  // a crossing that counts: contact.crossing, else contact.overlap
   SelfContact contact;                   // crossings, creases and specks (self_contact.h)

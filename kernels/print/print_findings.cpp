@@ -38,7 +38,8 @@ void add_walls(PrintReport& r) {
   add_problem(r, v < rules.nozzle ? Severity::will_fail : Severity::may_fail,
               "walls thinner than " + mm_text(rules.min_wall) + " at " + places + ", the thinnest " + value + " at " +
                   mm_point_text(r.wall.where),
-              "thicken to " + mm_text(rules.min_wall) + " (thickness = " + length(rules.min_wall) + ")" +
+              "thicken to " + mm_text(rules.min_wall) + " (solid.thicken's thickness = " + length(rules.min_wall) +
+                  ", solid.tube's min_radius = " + length(rules.min_wall / 2) + ")" +
                   scale_up(rules.min_wall / v, r.resolves(r.wall.value), " or scale up "));
 }
 
@@ -115,6 +116,11 @@ void add_findings(PrintReport& r) {
   if (!r.topology.manifold())
     add_problem(r, Severity::will_fail, "not a 2-manifold: " + r.topology.first_problem,
                 "make it on a grid, method = \"grid\" (solid.thicken, solid.tube)");
+  // A closed mesh around nothing: flat (every point in one plane) or collapsed to a point or a line.
+  const Vec3 size = r.box.size();
+  if (!(std::abs(r.volume) > 1e-9 * size.x * size.y * size.z) || !(std::abs(r.volume) > 0))
+    add_problem(r, Severity::will_fail, "it encloses no volume (a flat or collapsed mesh)",
+                "a solid: solid.thicken of a surface, solid.tube of a curve");
   if (r.inward)
     add_problem(r, Severity::will_fail, "its triangles face inwards (a slicer may print it inside out)",
                 "reverse each triangle's corners");
@@ -126,7 +132,6 @@ void add_findings(PrintReport& r) {
                 count_text(double(r.triangles)) + " triangles, over the " + count_text(rules.max_triangles) +
                     " a slicer handles well",
                 "solid.decimate(s, { triangles = " + short_number(rules.max_triangles, 15) + " })");
-  const Vec3 size = r.box.size();
   if (rules.bed != Vec3{}) {
     // Any orientation on the bed: the sorted sides must fit the sorted bed.
     std::array<double, 3> part{size.x, size.y, size.z}, bed{rules.bed.x, rules.bed.y, rules.bed.z};
@@ -159,14 +164,11 @@ void add_findings(PrintReport& r) {
 
 namespace {
 
-// "overhang 3.2 cm² past 45°", or "no overhang past 45°"; over a twentieth of the surface it names the call
-// that turns the solid to need fewer supports (under it, turning gains little and the advice is noise).
+// "overhang 3.2 cm² past 45°", or "no overhang past 45°". No advice to turn it: solid.orient may have
+// turned it already, and a check cannot tell (docs/print.md says what reduces it).
 std::string overhang_fact(const PrintReport& r) {
   const std::string past = " past " + short_number(r.rules.overhang) + "°";
-  if (!(r.overhang > 0)) return "no overhang" + past;
-  const std::string fact = "overhang " + larger_area_text(r.overhang) + past;
-  if (r.overhang < 0.05 * r.area) return fact;
-  return fact + " (fewer supports: solid.orient(s, { least = \"overhang\" }))";
+  return r.overhang > 0 ? "overhang " + larger_area_text(r.overhang) + past : "no overhang" + past;
 }
 
 std::string tagged(const Problem& p) { return std::string(severity_text(p.severity)) + ": " + p.line(); }
