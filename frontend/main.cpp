@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "frontend/cli/commands.h"
+#include "frontend/cli/info_arguments.h"
 #include "frontend/cli/sweep/sweep.h"
 #include "frontend/lua/options_reader.h"
 #include "frontend/lua/parse_text.h"
@@ -66,14 +67,15 @@ usage:
                              surface whether it is a closed manifold; for a .vdb, each grid's name,
                              class, value type, voxel size, active voxels and bounding boxes; for a
                              .pvd or .vtp.series, its steps and then the last one
-  selfsim info --print FILE [--profile fdm|sla] [--voxel MM] [--max-points N]
+  selfsim info --print FILE [--profile fdm|sla] [--voxel MM] [--max-points N] [--timeout S]
                              the print check of a closed solid in millimetres (.stl .3mf .obj .ply
                              .vtp): closed, crossing, thinnest wall, narrowest gap, what it stands
                              on, overhang, triangles, size; each problem with its severity and fix.
                              --voxel: walls and gaps on a distance grid of this voxel (default none:
                              exact rays against the triangles; at most half the profile's least wall
-                             and gap); --max-points: the budget, as for run. Exit 0 passes, 1 with
-                             its findings, 2 error
+                             and gap); --max-points: the budget, --timeout (also for info FILE) as
+                             for run. Exit 0 passes, 1 with its findings or past --timeout, 2 error,
+                             130 interrupted (Ctrl-C: one line, no report)
   selfsim preview FILE... [-o DIR] [-q] [--field NAME] [--up x|y|z] [--steps] [--timeout S]
                              [--max-memory SIZE] [--max-points N] [--as NAME FILE]...
                              a PNG picture of each file (.vtp .vtu .svg .stl .obj .ply .3mf, .vdb as
@@ -177,53 +179,8 @@ int main(int argc, char** argv) {
       return run_command(config);
     }
     if (command == "info") {
-      // --print, --profile P, --voxel MM and --max-points N may come before or after the file, in any order.
-      bool print = false;
-      std::string profile, file, voxel_text, print_flag;
-      selfsim::PointBudget budget;
-      int files = 0;
-      for (std::size_t i = 0; i < rest.size(); ++i) {
-        if (rest[i] == "--print") {
-          print = true;
-        } else if (rest[i] == "--profile") {
-          if (i + 1 == rest.size()) throw UsageError("--profile expects fdm or sla");
-          profile = rest[++i];
-        } else if (rest[i] == "--voxel" || rest[i] == "--max-points") {
-          print_flag = rest[i];
-          if (i + 1 == rest.size())
-            throw UsageError(rest[i] + (rest[i] == "--voxel" ? " expects a size in mm" : " expects a number"));
-          if (rest[i] == "--voxel")
-            voxel_text = rest[++i];
-          else
-            budget.limit = std::floor(number_argument("--max-points", rest[++i], 1, selfsim::highest_max_points));
-        } else {
-          file = rest[i];
-          ++files;
-        }
-      }
-      if (!profile.empty() && !print) throw UsageError("--profile is for info --print FILE");
-      if (!print_flag.empty() && !print) throw UsageError(print_flag + " is for info --print FILE");
-      if (files != 1)
-        throw UsageError(print ? "info --print expects one file (and optionally --profile fdm|sla), got " +
-                                     std::to_string(files)
-                               : "info expects one file, got " + std::to_string(files));
-      if (print) {
-        if (profile.empty()) profile = "fdm";
-        if (profile != "fdm" && profile != "sla")
-          throw UsageError("--profile expects fdm or sla, got '" + profile + "'");
-        selfsim::print::PrintRules rules = selfsim::print::PrintRules::named(profile);
-        // The voxel's range as solid.check's option takes it, named as the flag.
-        if (!voxel_text.empty()) {
-          const double most = std::min(rules.min_wall, rules.min_gap) / 2;
-          const auto v = selfsim::interp::parse_text<double>(voxel_text);
-          if (!v || !(*v >= 1e-3 && *v <= most))
-            throw UsageError("--voxel expects a size in mm from 0.001 to " + selfsim::mm_text(most) + " (half the " +
-                             profile + " profile's least wall or gap), got '" + voxel_text + "'");
-          rules.voxel = *v;
-        }
-        return print_info_command(file, rules, budget);
-      }
-      return info_command(file);
+      if (asks_help(rest)) return 0;
+      return info_command(parse_info_arguments(rest));
     }
     if (command == "preview") {
       if (asks_help(rest)) return 0;

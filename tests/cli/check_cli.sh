@@ -201,6 +201,53 @@ contains "$tmp/err" "--voxel expects a size in mm from 0.001 to 0.2 mm (half the
 expect 2 "info --voxel without --print" -- "$selfsim" info "$tmp/p/tet.3mf" --voxel 0.2
 contains "$tmp/err" "--voxel is for info --print FILE" "info --voxel without --print: message"
 expect 2 "info --print --max-points without a value" -- "$selfsim" info --print "$tmp/p/tet.3mf" --max-points
+# An unknown flag is named with the flags info --print takes (it read as a second and third file).
+expect 2 "info --print unknown flag" -- "$selfsim" info --print "$tmp/p/tet.3mf" --bed 200,200,200
+contains "$tmp/err" "unknown option '--bed' for info --print; it takes --profile fdm|sla, --voxel MM, --max-points N, --timeout S" \
+  "info --print unknown flag: message"
+# Ctrl-C stops info --print as it stops a run: one line, exit 130, no report (it ran on for minutes and printed
+# it). A hollow ball of 716,400 triangles checks for seconds; started in the background, the check inherits
+# SIGINT ignored, so only its own handler stops it. The signal goes once /proc says the handler is in place.
+/usr/bin/python3 - "$tmp/ball.stl" <<'PY'
+import math, struct, sys
+n = 300  # rings; 2n segments
+def p(r, i, j):
+    if i == 0 or i == n: return (0.0, 0.0, r if i == 0 else -r)
+    t, f = math.pi * i / n, math.pi * (j % (2 * n)) / n
+    return (r * math.sin(t) * math.cos(f), r * math.sin(t) * math.sin(f), r * math.cos(t))
+tris = []
+for r, inward in ((50.0, False), (49.7, True)):
+    for i in range(n):
+        for j in range(2 * n):
+            a, b, c, d = p(r, i, j), p(r, i + 1, j), p(r, i + 1, j + 1), p(r, i, j + 1)
+            for t in ((a, b, d) if i > 0 else None, (b, c, d) if i < n - 1 else None):
+                if t: tris.append((t[0], t[2], t[1]) if inward else t)
+with open(sys.argv[1], 'wb') as f:
+    f.write(b'\0' * 80 + struct.pack('<I', len(tris)))
+    for t in tris: f.write(struct.pack('<12fH', 0, 0, 0, *t[0], *t[1], *t[2], 0))
+PY
+"$selfsim" info --print "$tmp/ball.stl" >"$tmp/out" 2>"$tmp/err" &
+info_pid=$!
+for _ in $(seq 1 3000); do
+  caught=$(awk '/^SigCgt:/ {print $2}' "/proc/$info_pid/status" 2>/dev/null) || break
+  [ -n "$caught" ] && (( 16#$caught & 2 )) && break  # bit 1: SIGINT
+  sleep 0.02
+done
+kill -INT "$info_pid" 2>/dev/null
+timeout 60 tail --pid="$info_pid" -f /dev/null
+if kill -0 "$info_pid" 2>/dev/null; then
+  echo "FAIL: info --print ran on after SIGINT"; kill -KILL "$info_pid"; failures=$((failures + 1))
+fi
+wait "$info_pid"
+got=$?
+[ "$got" = 130 ] || { echo "FAIL: info --print after SIGINT: exit $got, expected 130"; failures=$((failures + 1)); }
+[ "$(cat "$tmp/err")" = "selfsim info: interrupted" ] || { echo "FAIL: info --print after SIGINT: '$(cat "$tmp/err")'"; failures=$((failures + 1)); }
+[ -s "$tmp/out" ] && { echo "FAIL: info --print after SIGINT printed a report"; failures=$((failures + 1)); }
+# --timeout as for run: one line, exit 1, no report.
+expect 1 "info --print --timeout" -- "$selfsim" info --print "$tmp/ball.stl" --timeout 0.2
+[ "$(cat "$tmp/err")" = "selfsim info: stopped: --timeout of 0.2 s reached" ] || { echo "FAIL: info --print --timeout: '$(cat "$tmp/err")'"; failures=$((failures + 1)); }
+[ -s "$tmp/out" ] && { echo "FAIL: info --print --timeout printed a report"; failures=$((failures + 1)); }
+rm -f "$tmp/ball.stl"
 # preview's refusal of a .vdb root tile says "raise it with --max-points", which preview takes (a 4096^3
 # tile in 653 bytes, written by OpenVDB's Python module where it is installed).
 if /usr/bin/python3 "$src/tests/robustness/vdb_tiles.py" "$tmp" tiles_root.vdb 2>/dev/null; then
