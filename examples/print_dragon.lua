@@ -5,7 +5,7 @@
 -- segments `segment` mm long, so that two finest sheets keep a printable gap (at 1.9 mm segments and 0.85 mm
 -- walls the smoothed corners of level 10 fuse). `height` 0.5 halves the stack's height (in segment lengths).
 -- Opens in a slicer as dragon.3mf; dragon_checked.vtp carries the check's `wall` and `gap` fields (mm).
---   selfsim run examples/print_dragon.lua                                  -- levels 0..8, about 52 mm
+--   selfsim run examples/print_dragon.lua                                  -- levels 0..8, about 84 mm tall
 --   selfsim run examples/print_dragon.lua --set levels=10                  -- Figure 14's levels, about 103 mm
 local curves = require "selfsim.curves"
 local levels = param("levels", 8)

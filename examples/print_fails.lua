@@ -3,7 +3,7 @@
 -- thin for an fdm printer (walls of two 0.4 mm perimeters, 0.8 mm). solid.thicken warns; solid.check shares
 -- that check (report.reused) and lists each problem with its severity (will fail, may fail, cosmetic) and
 -- the change that fixes it, in the recipe's terms ("thicken to 0.8 mm (thickness = 0.8 ...) or scale up
--- 2.7x (solid.size)"); the overhang (supports, not a failure) is a number and a field. fails_checked.vtp
+-- 2.9x (solid.size)"); the overhang (supports, not a failure) is a number and a field. fails_checked.vtp
 -- carries the `wall`, `gap` (mm) and `overhang` (degrees) fields: in ParaView colour by wall to see the thin
 -- spots. The same surface in its own units (a `size` under 5) reads as "probably still in model units".
 --   selfsim run examples/print_fails.lua

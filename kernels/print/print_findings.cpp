@@ -113,6 +113,13 @@ void add_problem(PrintReport& r, Severity severity, std::string what, std::strin
 
 void add_findings(PrintReport& r) {
   const PrintRules& rules = r.rules;
+  // Under 5 mm is almost always a solid still in its curve's units (a unit box, a radius of 1), not a print:
+  // the cause of what else is found (thin walls, a speck of a first layer), said first.
+  const double longest = std::max({r.box.size().x, r.box.size().y, r.box.size().z});
+  if (longest < 5)
+    add_problem(r, Severity::will_fail,
+                "it is only " + mm_text(longest) + " across: probably still in model units (sizes are mm)",
+                "solid.size(s, 80)");
   if (!r.topology.manifold())
     add_problem(r, Severity::will_fail, "not a 2-manifold: " + r.topology.first_problem,
                 "make it on a grid, method = \"grid\" (solid.thicken, solid.tube)");
@@ -147,18 +154,12 @@ void add_findings(PrintReport& r) {
   // pillars whose first layer was 0.03 to 0.34 mm² (0.4 mm nozzle, 0.2 mm layers; some of 0.22 and 0.28 mm²
   // sliced): under a disc two nozzle widths across (0.5 mm²) the first layer is too small to count on.
   // (Not said of a solid under 5 mm: still in model units, its first layer grows with solid.size.)
-  const double longest = std::max({size.x, size.y, size.z});
   // Resin prints stand on supports (sla): only a printer that lays the first layer on its bed needs one.
   if (r.first_layer < 4 * r.nozzle_spot() && longest >= 5 && r.rules.profile != "sla")
     add_problem(r, Severity::will_fail,
                 "it stands on " + area_text(r.first_layer) +
                     ", under a disc two nozzles across: a slicer prints little or nothing in its first layer",
                 "lay it on a face, solid.orient(s)");
-  // Under 5 mm is almost always a solid still in its curve's units (a unit box, a radius of 1), not a print.
-  if (longest < 5)
-    add_problem(r, Severity::may_fail,
-                "it is only " + mm_text(longest) + " across: probably still in model units (sizes are mm)",
-                "solid.size(s, 80)");
   if (!r.skipped.empty()) add_problem(r, Severity::may_fail, r.skipped, "");
 }
 

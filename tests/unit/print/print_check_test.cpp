@@ -210,10 +210,11 @@ TEST(PrintCheck, FindingsSaySeverityAndFix) {
   EXPECT_EQ(problem(big, "larger than the bed")->fix, "solid.size(s, { fit = {5, 50, 50} })");
   // Will fail comes before may fail, in the summary as in the list.
   EXPECT_EQ(big.problems.front().severity, Severity::will_fail) << big.summary();
-  // The newcomer's 2.47 mm blob: may fail, still in model units.
+  // The newcomer's 2.47 mm blob: will fail, still in model units, said first (the cause of the rest).
   const PrintReport blob = check_print(box_mesh({0, 0, 0}, {2.47, 2, 2}), PrintRules{}, PointBudget{}, no_progress());
   ASSERT_NE(problem(blob, "probably still in model units"), nullptr) << blob.summary();
-  EXPECT_EQ(problem(blob, "model units")->severity, Severity::may_fail);
+  EXPECT_EQ(problem(blob, "model units")->severity, Severity::will_fail);
+  EXPECT_NE(blob.problems.front().what.find("model units"), std::string::npos) << blob.summary();
   EXPECT_EQ(problem(blob, "model units")->fix, "solid.size(s, 80)");
   EXPECT_FALSE(blob.passes());
   // The warning's brief line keeps to its room, the most serious first with its fix, and says there is more.
