@@ -110,8 +110,12 @@ int solid_thicken(lua_State* L) {
   });
 }
 
+// The least radius a tube takes per point (mm): a nanometre, under anything a printer makes.
+constexpr double min_tube_radius = 1e-6;
+
 // The radius at each point of c: `radius`, times the point field `by` (taper absent), or times taper^by;
-// none below `least` (0: no least).
+// none below `least` (0: no least). Throws Error for one below min_tube_radius (after `least`), naming how
+// it came.
 template <class C>
 std::vector<double> tube_radii(const C& c, double radius, const std::string& by, double taper, double least) {
   std::vector<double> r(c.points.size(), std::max(radius, least));
@@ -122,9 +126,24 @@ std::vector<double> tube_radii(const C& c, double radius, const std::string& by,
   for (std::size_t i = 0; i < r.size(); ++i) {
     const double v = f->at(f->uniform ? 0 : i);
     r[i] = std::max(taper > 0 ? radius * std::pow(taper, v) : radius * v, least);
-    if (!(r[i] > 0) || !std::isfinite(r[i]))
+    // Below a nanometre nothing prints, and a grid a quarter of it is past double precision's reach: say the
+    // radius (radius * taper^by underflowed to 1e-300 and the voxel chosen from it was refused, naming neither).
+    const bool tiny = r[i] >= 0 && r[i] < min_tube_radius && (taper > 0 || r[i] > 0);
+    if (!tiny && (!(r[i] > 0) || !std::isfinite(r[i])))
       throw Error("the radius at point " + std::to_string(i + 1) + " is " + number_text(r[i]) + " (from field '" + by +
                   "' = " + number_text(v) + "): it must be positive");
+    if (tiny) {
+      std::string how = "radius * " + by + " = " + number_text(radius) + " * " + number_text(v);
+      if (taper > 0) {
+        // In logarithms: the power itself underflows to 0.
+        const double e = std::log10(radius) + v * std::log10(taper), whole = std::floor(e);
+        how = "radius * taper^" + by + " = " + number_text(radius) + " * " + number_text(taper) + "^" + number_text(v) +
+              " = " + short_number(std::pow(10, e - whole), 2) + "e" + number_text(whole);
+      }
+      throw Error("the radius at point " + std::to_string(i + 1) + " is " + how +
+                  " mm, under a nanometre (1e-6 mm): give a 'taper' nearer 1, a smaller '" + by +
+                  "' or a 'min_radius'");
+    }
   }
   return r;
 }

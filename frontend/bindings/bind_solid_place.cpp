@@ -1,5 +1,6 @@
 // solid.place and solid.orient: a solid put on the printer's bed (issue 40). Thin adapters over
 // kernels/print/orient.h and kernels/geom/mesh_transform.h.
+#include <cmath>
 #include <cstdio>
 
 #include "frontend/bindings/bindings.h"
@@ -12,6 +13,7 @@
 #include "kernels/geom/point_text.h"
 #include "kernels/print/orient.h"
 #include "kernels/print/overhang.h"
+#include "kernels/print/print_size.h"
 
 namespace selfsim::interp {
 
@@ -55,6 +57,16 @@ void push_on_bed(lua_State* L, const Mesh& m, const Affine3* turn, const Spot& s
     shift.x = shift.y = 0;
   for (Vec3& p : placed.points) p += shift;  // a move: no field changes
   if (!placed.finite()) throw Error("option 'at' moves the solid past the largest number");
+  // Far out, double precision rounds the points together: a 10 mm tetrahedron at {1e308, 1e308} was
+  // 0 x 0 x 10 mm, silently. Its box's sides may change by rounding, a billionth of its size, no more.
+  if (!box.empty()) {
+    const Vec3 before = box.size(), after = corner_bbox(placed).size();
+    const double d = std::abs(after.x - before.x) + std::abs(after.y - before.y) + std::abs(after.z - before.z);
+    if (d > 1e-9 * norm(before))
+      throw Error("option 'at' = {" + number_text(spot.at.x) + ", " + number_text(spot.at.y) +
+                  "} is too far for double precision to keep the solid's size (" + print::size_text(before) +
+                  " became " + print::size_text(after) + "): place it nearer the origin");
+  }
   push_geometry(L, std::move(placed));
 }
 

@@ -143,9 +143,10 @@ Choice choose_voxel(const PolylineT<V>& c, std::span<const double> radii, const 
   const auto [thinnest, thickest] = std::minmax_element(radii.begin(), radii.end());
   check_between(opt.adaptivity, 0, 1, "option 'adaptivity'");
   if (opt.voxel != 0) {
-    if (!(opt.voxel > 0) || !std::isfinite(opt.voxel) || opt.voxel > *thickest)
-      throw Error("option 'voxel' must be a positive length no larger than the largest radius " +
-                  number_text(*thickest) + ", got " + number_text(opt.voxel));
+    if (!(opt.voxel > 0) || !std::isfinite(opt.voxel) || opt.voxel > *thinnest / 2)
+      throw Error("option 'voxel' must be a positive length at most half the thinnest radius (" +
+                  voxel_text(*thinnest / 2) + "), got " + number_text(opt.voxel) +
+                  ": a coarser grid makes the tube thinner");
     return {opt.voxel, {}};
   }
   // Coarser while over the budget, down to a quarter of the largest radius: the thickest part still round.
@@ -187,9 +188,10 @@ Mesh tube_on_grid(const PolylineT<V>& c, std::span<const double> radii, const Gr
 void GridTubeOptions::validate() const {
   if (!(radius > 0) || !std::isfinite(radius))
     throw Error("option 'radius' must be a positive length (mm), got " + number_text(radius));
-  if (voxel != 0 && (!(voxel > 0) || !std::isfinite(voxel) || voxel > radius))
-    throw Error("option 'voxel' must be a positive length no larger than the radius " + number_text(radius) + ", got " +
-                number_text(voxel));
+  // Coarser, the mesher cuts the round wall short: radius 1 at voxel 1 came out 0.5 across the axis.
+  if (voxel != 0 && (!(voxel > 0) || !std::isfinite(voxel) || voxel > radius / 2))
+    throw Error("option 'voxel' must be a positive length at most half the radius (" + voxel_text(radius / 2) +
+                "), got " + number_text(voxel) + ": a coarser grid makes the tube thinner");
   check_between(adaptivity, 0, 1, "option 'adaptivity'");
 }
 

@@ -24,7 +24,7 @@ namespace selfsim::print {
 
 struct GridTubeOptions {
   double radius = 0;      // > 0 (mm)
-  double voxel = 0;       // the grid's; 0 for a quarter of the radius (of the thinnest, with radii per point)
+  double voxel = 0;       // the grid's, at most half the (thinnest) radius; 0 for a quarter of it
   double adaptivity = 0;  // in [0, 1], OpenVDB's
   PointBudget budget;
 
@@ -43,7 +43,7 @@ Mesh grid_tube(const Polyline& c, const GridTubeOptions& opt, Progress& progress
 Mesh grid_tube(const Polyline3& c, std::span<const double> radii, const GridTubeOptions& opt, Progress& progress);
 Mesh grid_tube(const Polyline& c, std::span<const double> radii, const GridTubeOptions& opt, Progress& progress);
 
-// The voxel such a tube is built at: opt.voxel when given (positive, at most the largest radius), else a
+// The voxel such a tube is built at: opt.voxel when given (positive, at most half the thinnest radius), else a
 // quarter of the thinnest radius, coarsened by steps of 1.25 while the tube would not fit the budget (down
 // to a quarter of the largest radius; past it the build is refused). Its round cones are counted before any
 // is made: a voxel at which their list alone would not fit is passed over without making it.

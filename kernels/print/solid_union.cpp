@@ -1,10 +1,12 @@
 #include "kernels/print/solid_union.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <memory>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include "kernels/base/check.h"
@@ -116,6 +118,33 @@ std::string grid_reason(Lie lie, const std::string& first, const std::string& se
   return "";
 }
 
+// Why the grid must take the parts, "solid 2 touches itself" (named by `name(i)`), or empty: an exact result
+// keeps each part as it is, crossings and all. Only the parts `tested` says; whole meshes, O(F), with
+// first_intersection's index over one solid at a time (union_work_size counts it).
+template <class Name>
+std::string touching_itself(const std::vector<Mesh>& parts, const std::vector<bool>& tested, Name&& name,
+                            Progress& progress) {
+  for (std::size_t i = 0; i < parts.size(); ++i)
+    if (tested[i] && first_intersection(parts[i], progress)) return name(i) + " touches itself";
+  return "";
+}
+
+// Throws Error when a given voxel is over a quarter of the thinnest side of any solid's box: the grid would
+// lose or move solids that thin (two 10 mm cubes on a 10 mm grid made one).
+void check_voxel(double voxel, std::span<const Mesh* const> solids) {
+  if (voxel == 0) return;
+  double thinnest = std::numeric_limits<double>::infinity();
+  for (const Mesh* m : solids) {
+    const Vec3 s = m->bbox().size();
+    thinnest = std::min({thinnest, s.x, s.y, s.z});
+  }
+  const auto text = [](double v) { return v >= 0.01 ? mm_text(v) : short_number(v, 2) + " mm"; };
+  if (!(voxel > 0) || !std::isfinite(voxel) || voxel > thinnest / 4)
+    throw Error("option 'voxel' must be a positive length at most a quarter of the thinnest side of any solid's box (" +
+                text(thinnest / 4) + " of " + text(thinnest) + "), got " + number_text(voxel) +
+                ": a coarser grid loses or moves solids");
+}
+
 // Budget points a mesh holds (16 bytes each): its points and triangles, as the run counts a mesh value.
 double mesh_points(const Mesh& m) { return static_cast<double>(m.points.size() + m.triangles.size()); }
 
@@ -141,7 +170,17 @@ UnionResult on_grid(Volume::Kind kind, std::vector<Mesh> parts, const UnionOptio
   }
   const Volume all = Volume::combine(kind, std::move(volumes));
   UnionResult r;
-  r.solid = volume_boundary(all, voxel, budget, progress);
+  try {
+    r.solid = volume_boundary(all, voxel, budget, progress);
+  } catch (const BudgetError&) {
+    throw;
+  } catch (const Error& e) {
+    // The voxel is at most a quarter of every solid's thinnest side (check_voxel, union_voxel): an empty
+    // difference is the cuts covering the solid, which no voxel changes.
+    if (kind != Volume::Kind::subtract || std::string_view(e.what()).find("the volume is empty") != 0) throw;
+    throw Error("nothing is left: the cuts cover the whole solid (on a " + mm_text(voxel) +
+                " grid, a quarter of its thinnest side or finer: no smaller voxel changes that)");
+  }
   r.voxel = voxel;
   r.how = "on a " + mm_text(voxel) + " grid (" + why + ")";
   return r;
@@ -172,6 +211,7 @@ UnionResult solid_union(std::span<const Mesh* const> solids, const UnionOptions&
   std::vector<Mesh> parts;
   for (std::size_t i = 0; i < solids.size(); ++i)
     parts.push_back(outward(*solids[i], "solid " + std::to_string(i + 1), progress));
+  check_voxel(opt.voxel, solids);
   std::vector<bool> kept(parts.size(), true);
   for (std::size_t i = 0; i < parts.size(); ++i)
     for (std::size_t j = i + 1; j < parts.size() && kept[i]; ++j) {
@@ -182,6 +222,11 @@ UnionResult solid_union(std::span<const Mesh* const> solids, const UnionOptions&
       if (lie == Lie::first_inside) kept[i] = false;
       if (lie == Lie::second_inside) kept[j] = false;
     }
+  // Every solid, the dropped ones too: whether one lies inside another was told by one point of it.
+  const std::string itself = touching_itself(
+      parts, std::vector<bool>(parts.size(), true), [](std::size_t i) { return "solid " + std::to_string(i + 1); },
+      progress);
+  if (!itself.empty()) return on_grid(Volume::Kind::unite, std::move(parts), opt, itself, progress);
   std::vector<const Mesh*> keep;
   for (std::size_t i = 0; i < parts.size(); ++i)
     if (kept[i]) keep.push_back(&parts[i]);
@@ -200,6 +245,9 @@ UnionResult solid_difference(const Mesh& from, std::span<const Mesh* const> cuts
   std::vector<Mesh> parts{outward(from, "the solid cut from", progress)};
   for (std::size_t i = 0; i < cuts.size(); ++i)
     parts.push_back(outward(*cuts[i], "cut " + std::to_string(i + 1), progress));
+  std::vector<const Mesh*> all{&from};
+  all.insert(all.end(), cuts.begin(), cuts.end());
+  check_voxel(opt.voxel, all);
   // Each cut: apart from the solid (nothing to take), inside it (a cavity), or meeting it (the grid).
   std::vector<std::size_t> cavities;
   for (std::size_t i = 1; i < parts.size(); ++i) {
@@ -223,6 +271,12 @@ UnionResult solid_difference(const Mesh& from, std::span<const Mesh* const> cuts
       if (lie == Lie::first_inside) kept[i] = false;
       if (lie == Lie::second_inside) kept[j] = false;
     }
+  // The solid and its cavities; a cut apart from the solid takes nothing from it.
+  kept[0] = true;
+  const std::string itself = touching_itself(
+      parts, kept, [](std::size_t i) { return i == 0 ? std::string("the solid") : "cut " + std::to_string(i); },
+      progress);
+  if (!itself.empty()) return on_grid(Volume::Kind::subtract, std::move(parts), opt, itself, progress);
   std::vector<const Mesh*> keep{&parts[0]};
   std::size_t sealed = 0;
   for (std::size_t i = 1; i < parts.size(); ++i)

@@ -25,6 +25,20 @@ assert(math.abs(r.size[1] - 30) < 0.5 and math.abs(r.size[3] - 3.7) < 0.3,
 local holed = solid.difference(base, { box(-2, -2, -1, 2, 2, 4), voxel = 0.25 })
 assert(solid.check(holed).closed, "the holed plate is closed")
 
+-- Two overlapping boxes in one mesh cross themselves: the union goes to the grid, not "exact (2 disjoint
+-- solids)" with the crossing kept.
+local a, b = box(0, 0, 0, 10, 10, 10), box(5, 5, 5, 15, 15, 15)
+local points, triangles = {}, {}
+for i = 1, 8 do points[i], points[8 + i] = a:point(i), b:point(i) end
+for _, t in ipairs { { 1, 3, 2 }, { 1, 4, 3 }, { 5, 6, 7 }, { 5, 7, 8 }, { 1, 2, 6 }, { 1, 6, 5 },
+                     { 2, 3, 7 }, { 2, 7, 6 }, { 3, 4, 8 }, { 3, 8, 7 }, { 4, 1, 5 }, { 4, 5, 8 } } do
+  triangles[#triangles + 1] = t
+  triangles[#triangles + 1] = { t[1] + 8, t[2] + 8, t[3] + 8 }
+end
+local crossed = solid.union { mesh { points = points, triangles = triangles }, box(40, 0, 0, 42, 2, 2), voxel = 0.5 }
+local rc = solid.check(crossed)
+assert(rc.closed and not rc.crossing, "the union of a solid crossing itself: " .. rc.summary)
+
 -- An open surface is refused, naming it.
 local sheet = mesh { points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, triangles = { { 1, 2, 3 } } }
 local ok, err = pcall(solid.union, { base, sheet })

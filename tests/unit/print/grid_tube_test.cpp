@@ -139,7 +139,7 @@ TEST(GridTube, ARadiusPerPointTapers) {
   GridTubeOptions tight;
   tight.budget.limit = 2e5;
   EXPECT_GT(grid_tube_voxel(c, radii, tight), 0.125);
-  EXPECT_THROW(grid_tube(c, radii, {.voxel = 3}, no_progress()), Error);  // past the largest radius
+  EXPECT_THROW(grid_tube(c, radii, {.voxel = 3}, no_progress()), Error);  // past half the thinnest radius
   EXPECT_THROW(grid_tube(c, std::vector<double>{2, 0, 1}, {}, no_progress()), Error);
   EXPECT_THROW(grid_tube(c, std::vector<double>{2, 1}, {}, no_progress()), Error);
 }
@@ -214,4 +214,22 @@ TEST(GridTube, RoundConesOverTheBudgetAreRefusedBeforeTheyAreMade) {
   }
   EXPECT_EQ(voxel_text(0.0004883), "0.00049 mm");
   EXPECT_EQ(voxel_text(2.6964609481836), "2.7 mm");
+}
+
+TEST(GridTube, AVoxelOverHalfTheRadiusIsRefused) {
+  // Radius 1 at voxel 1 came out 0.5 across the axis, silently; at half the radius it is within 0.1 of it.
+  const Polyline3 c = Polyline3::single({{0, 0, 0}, {30, 0, 0}});
+  try {
+    grid_tube(c, {.radius = 1, .voxel = 1}, no_progress());
+    ADD_FAILURE() << "not refused";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "option 'voxel' must be a positive length at most half the radius (0.5 mm), got 1: "
+              "a coarser grid makes the tube thinner");
+  }
+  EXPECT_NEAR(grid_tube(c, {.radius = 1, .voxel = 0.5}, no_progress()).bbox().max.y, 1, 0.1);
+  // With a radius per point, half the thinnest.
+  const std::vector<double> radii{2, 0.5};
+  EXPECT_THROW(grid_tube(c, radii, {.voxel = 0.3}, no_progress()), Error);
+  EXPECT_NO_THROW(grid_tube(c, radii, {.voxel = 0.25}, no_progress()));
 }

@@ -177,3 +177,53 @@ TEST(SolidUnion, SaysWhichSolidsMeet) {
   EXPECT_EQ(united({capsule, box}, {.voxel = 0.25}).how, "on a 0.25 mm grid (solid 1 and solid 2 meet)");
   EXPECT_EQ(united({box, capsule}, {.voxel = 0.25}).how, "on a 0.25 mm grid (solid 1 and solid 2 meet)");
 }
+
+TEST(SolidUnion, AVoxelThatWouldLoseASolidIsRefused) {
+  // Two 10 mm cubes overlapping by half on a 10 mm grid made one 10 mm cube, silently: the second lost.
+  const std::vector<Mesh> cubes{box_mesh({-5, -5, -5}, {5, 5, 5}), box_mesh({0, -5, -5}, {10, 5, 5})};
+  for (const double voxel : {10.0, 2.6}) {
+    try {
+      united(cubes, {.voxel = voxel});
+      ADD_FAILURE() << "not refused at voxel " << voxel;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("option 'voxel' must be a positive length at most a quarter of the thinnest "
+                                           "side of any solid's box (2.5 mm of 10 mm)"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  EXPECT_THROW(cut(cubes[0], {box_mesh({4, 4, 4}, {6, 6, 6})}, {.voxel = 1}), Error);  // the cut is 2 mm
+  const BBox3 b = united(cubes, {.voxel = 2.5}).solid.bbox();                          // a quarter: both kept
+  EXPECT_NEAR(b.min.x, -5, 0.3);
+  EXPECT_NEAR(b.max.x, 10, 0.3);
+}
+
+TEST(SolidUnion, ASolidCrossingItselfGoesToTheGrid) {
+  // Two overlapping cubes in one mesh, and a cube apart: the exact union kept the crossing ("exact (2 disjoint
+  // solids)", and the check said it crosses itself). The grid merges it.
+  Mesh cross = box_mesh({0, 0, 0}, {10, 10, 10});
+  const Mesh second = box_mesh({5, 5, 5}, {15, 15, 15});
+  const auto base = static_cast<std::uint32_t>(cross.points.size());
+  cross.points.insert(cross.points.end(), second.points.begin(), second.points.end());
+  for (const Triangle& t : second.triangles) cross.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  const UnionResult r = united({cross, box_mesh({40, 0, 0}, {42, 2, 2})}, {.voxel = 0.5});
+  EXPECT_FALSE(r.exact);
+  EXPECT_EQ(r.how, "on a 0.5 mm grid (solid 1 touches itself)");
+  expect_closed(r.solid);
+  EXPECT_NEAR(enclosed_volume(r.solid), 2 * 1000 - 125 + 8, 20);
+  // Cut from: a cavity inside it would have been sealed in the crossing solid.
+  const UnionResult c = cut(cross, {box_mesh({1, 1, 1}, {3, 3, 3})}, {.voxel = 0.25});
+  EXPECT_EQ(c.how, "on a 0.25 mm grid (the solid touches itself)");
+  expect_closed(c.solid);
+}
+
+TEST(SolidUnion, ASolidLessItselfSaysNothingIsLeft) {
+  // It said "the volume is empty at voxel size 0.2 ... give a smaller 'voxel'", which no voxel helps.
+  const Mesh c = box_mesh({0, 0, 0}, {10, 10, 10});
+  try {
+    cut(c, {c});
+    ADD_FAILURE() << "not refused";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()).find("nothing is left: the cuts cover the whole solid"), 0u) << e.what();
+  }
+}
