@@ -35,6 +35,18 @@ check "print tree runs ($(head -1 "$tmp/run_err"))" test -s "$tmp/print/tree.3mf
 preview "$tmp/print/tree.3mf" -o "$tmp/print"
 check "tree.3mf: exit 0 ($(head -1 "$tmp/err"))" test "$code" = 0
 check "tree.3mf: upright in the front view" pixels upright "$tmp/print/tree.png"
+# The print check's marked mesh (a `wall` field) is a print too: z up, as its .3mf.
+cat >"$tmp/print/marked.lua" <<'LUA'
+local tree = lsystem { axiom = "F[+F][-F]F[+F]F", rules = { F = "F[+F]F" }, angle = 25 }
+local c = solid.size(tree:curve(2), 20)
+local t = solid.tube(c, { method = "grid", radius = 0.5, check = false }):transform { rotate = 90, axis = { 1, 0, 0 } }
+local _, marked = solid.check(solid.place(t))
+save(marked, "marked.vtp")
+LUA
+"$selfsim" run "$tmp/print/marked.lua" -o "$tmp/print" -q 2>"$tmp/run_err"
+preview "$tmp/print/marked.vtp" -o "$tmp/print"
+check "marked.vtp: exit 0 ($(head -1 "$tmp/err"))" test "$code" = 0
+check "marked.vtp: upright in the front view" pixels upright "$tmp/print/marked.png"
 
 # The run's ParaView view agrees: upright, when pvbatch is there to render it.
 if command -v pvbatch >/dev/null 2>&1; then

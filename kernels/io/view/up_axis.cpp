@@ -73,7 +73,8 @@ int up_axis(const Dataset& d) {
 
 int up_axis(const Dataset& d, const std::string& file) {
   const std::string ext = lower_case(std::filesystem::path(file).extension().string());
-  return ext == ".3mf" ? 2 : up_axis(d);
+  const bool checked = d.point_fields.contains("wall") || d.cell_fields.contains("wall");
+  return ext == ".3mf" || ext == ".stl" || checked ? 2 : up_axis(d);
 }
 
 int up_axis(const ValueRef& v) {

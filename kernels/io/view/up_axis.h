@@ -3,8 +3,8 @@
 // field named `level` (the step that made each point or face: a developing surface's stack, a growth) that
 // follows one axis strongly makes that axis up, its positive direction up whichever way the level runs (a
 // surface that develops downwards is drawn hanging, as it is). The previews' front and oblique views (preview_png.h)
-// and the ParaView view stand on it; `selfsim preview --up x|y|z` overrides it. A 3MF file (a print) stands
-// on its build plate, +z up.
+// and the ParaView view stand on it; `selfsim preview --up x|y|z` overrides it. A print (.3mf, .stl, a checked
+// mesh) stands on its build plate, +z up.
 #pragma once
 
 #include <string>
@@ -21,8 +21,9 @@ inline constexpr double up_correlation = 0.7;
 // 0 (x), 1 (y) or 2 (z): the axis `level` follows (|correlation| at least up_correlation, the largest of
 // the three), else 1. A point field `level` is used before a cell field.
 int up_axis(const Dataset& d);
-// The same for a dataset read from `file`: a 3MF file's up is +z, whatever it holds (3MF places parts on a
-// build plate at z = 0: a print stands on it as the slicer shows it), else up_axis(d).
+// The same for a dataset read from `file`: a print's up is +z, whatever it holds, as a slicer shows it on its
+// build plate at z = 0: a .3mf or .stl file (the formats slicers read), or the print check's marked mesh
+// (a `wall` field); else up_axis(d).
 int up_axis(const Dataset& d, const std::string& file);
 // The same for a value about to be saved (the run's ParaView view, paraview_view.h); a 2D curve: 1.
 int up_axis(const ValueRef& v);
