@@ -32,17 +32,12 @@ int studio_command(const RunConfig& config, int port);
 // `selfsim run --watch` (watch_command.cpp).
 int watch_command(const RunConfig& config);
 int diff_command(const std::string& a, const std::string& b, double tol);  // diff_command.cpp
-int info_command(const std::string& file);                                 // info_command.cpp
 // Called inside a catch (command_failure.cpp): prints "selfsim COMMAND: what" whatever was thrown (an Error,
 // std::bad_alloc, a filesystem error), on one line, and returns exit status 2.
 int report_failure(const char* command);
 // `selfsim rerun FILE [-o DIR]`: the run FILE records, again, into DIR (default: a new ./rerun folder); exit 0
 // when FILE comes out byte for byte the same, 1 when it differs or the run fails. Throws UsageError.
 int rerun_command(const std::string& file, const std::string& out);
-// `selfsim info --print FILE [--profile fdm|sla] [--voxel MM] [--max-points N]`: the print check of a solid
-// in millimetres under `rules` (the profile's, with --voxel) and `budget` (--max-points); exit 0 when it
-// passes, 1 with its findings, 2 when the file cannot be read or is not a closed solid.
-int print_info_command(const std::string& file, const print::PrintRules& rules, const PointBudget& budget);
 
 // `selfsim preview FILE... [-o DIR] [-q] [--field NAME] [--up x|y|z] [--steps] [--timeout S] [--max-memory SIZE]
 // [--as NAME FILE]...`.

@@ -175,19 +175,4 @@ int info_command(const InfoArguments& a) {
   }
 }
 
-int info_command(const std::string& file) {
-  InfoArguments a;
-  a.file = file;
-  return info_command(a);
-}
-
-int print_info_command(const std::string& file, const print::PrintRules& rules, const PointBudget& budget) {
-  InfoArguments a;
-  a.file = file;
-  a.print = true;
-  a.rules = rules;
-  a.budget = budget;
-  return info_command(a);
-}
-
 }  // namespace selfsim::interp
