@@ -7,6 +7,7 @@
 #include <numeric>
 #include <vector>
 
+#include "kernels/geom/principal_axes.h"
 #include "kernels/print/first_layer.h"
 #include "kernels/print/footing.h"
 #include "kernels/print/overhang.h"
@@ -136,57 +137,6 @@ std::vector<Candidate> resting_faces(const Mesh& m, const FaceNormals& f, std::v
   return found;
 }
 
-// The six directions along the principal axes of the surface (its triangles' centres, weighted by area):
-// a flat piece with no flat face of its own (a plant's tubes laid in a plane) lies across its thinnest one.
-// The axes are the covariance's eigenvectors, by Jacobi rotations (a 3 x 3 symmetric matrix: a few sweeps).
-std::vector<Vec3> principal_directions(const Mesh& m, const FaceNormals& f) {
-  double total = 0;
-  Vec3 mean{};
-  for (std::size_t i = 0; i < m.faces(); ++i) {
-    const Triangle& t = m.triangles[i];
-    total += f.area[i];
-    mean = mean + f.area[i] / 3 * (m.points[t[0]] + m.points[t[1]] + m.points[t[2]]);
-  }
-  if (!(total > 0)) return {};
-  mean = (1 / total) * mean;
-  double c[3][3] = {};
-  for (std::size_t i = 0; i < m.faces(); ++i) {
-    const Triangle& t = m.triangles[i];
-    const Vec3 d = (1.0 / 3) * (m.points[t[0]] + m.points[t[1]] + m.points[t[2]]) - mean;
-    const double v[3] = {d.x, d.y, d.z};
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b) c[a][b] += f.area[i] * v[a] * v[b];
-  }
-  double e[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};  // columns: the eigenvectors
-  for (int sweep = 0; sweep < 32; ++sweep)
-    for (int p = 0; p < 2; ++p)
-      for (int q = p + 1; q < 3; ++q) {
-        if (!(std::abs(c[p][q]) > 1e-300)) continue;
-        const double theta = 0.5 * std::atan2(2 * c[p][q], c[q][q] - c[p][p]);
-        const double cs = std::cos(theta), sn = std::sin(theta);
-        for (int k = 0; k < 3; ++k) {  // c <- c J
-          const double kp = c[k][p], kq = c[k][q];
-          c[k][p] = cs * kp - sn * kq, c[k][q] = sn * kp + cs * kq;
-        }
-        for (int k = 0; k < 3; ++k) {  // c <- J^T c
-          const double pk = c[p][k], qk = c[q][k];
-          c[p][k] = cs * pk - sn * qk, c[q][k] = sn * pk + cs * qk;
-        }
-        for (int k = 0; k < 3; ++k) {
-          const double kp = e[k][p], kq = e[k][q];
-          e[k][p] = cs * kp - sn * kq, e[k][q] = sn * kp + cs * kq;
-        }
-      }
-  std::vector<Vec3> out;
-  for (int k = 0; k < 3; ++k) {
-    const Vec3 axis{e[0][k], e[1][k], e[2][k]};
-    if (!(norm(axis) > 0.5) || !is_finite(axis)) continue;
-    out.push_back(normalized(axis));
-    out.push_back(-normalized(axis));
-  }
-  return out;
-}
-
 double estimate_overhang(const std::vector<Cell>& cells, Vec3 up, double past) {
   double area = 0;
   for (const Cell& c : cells)
@@ -277,7 +227,7 @@ Orientation best_orientation(const Mesh& m, const OrientOptions& opt, Progress& 
   measure(m, f, opt, layers, as_it_came);
   Candidate best = as_it_came;
   std::vector<Candidate> principal;
-  for (Vec3 up : principal_directions(m, f)) principal.push_back({up});
+  for (Vec3 up : principal_directions(m)) principal.push_back({up});
   if (!opt.least_overhang) {
     // What it stands on, the most of: the largest flat faces of at least the first layer's threshold, the
     // principal directions and the pose as it came, each by its first layer (a tube lying flat stands on more
