@@ -228,9 +228,12 @@ with open(sys.argv[1], 'wb') as f:
 PY
 "$selfsim" info --print "$tmp/ball.stl" >"$tmp/out" 2>"$tmp/err" &
 info_pid=$!
+# Until the exec: the shell's child before it has a SIGINT handler of its own, which would take the signal.
+selfsim_exe=$(readlink -f "$selfsim")
 for _ in $(seq 1 3000); do
   caught=$(awk '/^SigCgt:/ {print $2}' "/proc/$info_pid/status" 2>/dev/null) || break
-  [ -n "$caught" ] && (( 16#$caught & 2 )) && break  # bit 1: SIGINT
+  [ "$(readlink -f "/proc/$info_pid/exe" 2>/dev/null)" = "$selfsim_exe" ] && [ -n "$caught" ] &&
+    (( 16#$caught & 2 )) && break  # bit 1: SIGINT
   sleep 0.02
 done
 kill -INT "$info_pid" 2>/dev/null
